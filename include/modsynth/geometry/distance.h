@@ -1,0 +1,16 @@
+#pragma once
+// Euclidean distances between points, segments, primitives and discs.
+#include <modsynth/geometry/primitive.h>
+
+namespace modsynth::geometry {
+
+/// Parameter t in [0, 1] of the point of segment ab nearest to p.
+double segment_parameter(const Vec2& p, const Vec2& a, const Vec2& b);
+double point_segment(const Vec2& p, const Vec2& a, const Vec2& b);
+double segment_segment(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d);
+double point_primitive(const Vec2& p, const Primitive& prim);
+double segment_primitive(const Vec2& a, const Vec2& b, const Primitive& prim);
+/// Gap between a disc and a segment; 0 when they overlap.
+double disc_segment(const Vec2& center, double radius, const Vec2& a, const Vec2& b);
+
+}  // namespace modsynth::geometry

@@ -1,0 +1,49 @@
+#pragma once
+// The task a user asks modsynth to solve (formats.md, modsynth-task/1), as
+// plain value types. A Task that exists has been validated.
+#include <string>
+#include <vector>
+
+#include <modsynth/geometry/primitive.h>
+
+namespace modsynth::task {
+
+using geometry::Primitive;
+using geometry::Vec2;
+
+struct Obstacle {
+    Vec2 center = Vec2::Zero();
+    double radius = 0.0;
+};
+
+/// Axis-aligned rectangle where the base may stand.
+struct BaseRegion {
+    Vec2 min = Vec2::Zero();
+    Vec2 max = Vec2::Zero();
+    bool contains(const Vec2& p, double tolerance = 0.0) const {
+        return p.x() >= min.x() - tolerance && p.x() <= max.x() + tolerance &&
+               p.y() >= min.y() - tolerance && p.y() <= max.y() + tolerance;
+    }
+};
+
+/// Defaults are those of formats.md.
+struct RobotSpec {
+    std::vector<int> dof{2, 3};  ///< allowed joint counts, fewest preferred
+    double link_diameter = 0.03175;
+    double min_link_length = 0.05;
+    double max_link_length = 1.0;
+};
+
+struct Task {
+    std::string name;
+    std::vector<Primitive> trajectory;
+    std::vector<Obstacle> obstacles;
+    std::vector<BaseRegion> base_regions;  ///< empty: the base may be anywhere
+    RobotSpec robot;
+};
+
+/// Joint counts modsynth can synthesise.
+constexpr int kMinDof = 2;
+constexpr int kMaxDof = 3;
+
+}  // namespace modsynth::task

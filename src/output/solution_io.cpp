@@ -1,0 +1,68 @@
+#include <modsynth/output/solution_io.h>
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace modsynth::synth {
+const char* to_string(Status status) {
+    switch (status) {
+        case Status::Solved: return "solved";
+        case Status::Infeasible: return "infeasible";
+        case Status::Unknown: return "unknown";
+    }
+    return "unknown";
+}
+}  // namespace modsynth::synth
+
+namespace modsynth::output {
+namespace {
+
+// JSON has no infinity: an unconstrained margin is written as null.
+nlohmann::json finite_or_null(double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::json to_json(const synth::Solution& s) {
+    nlohmann::json doc;
+    doc["format"] = "modsynth-solution/1";
+    doc["task"] = s.task_name;
+    doc["status"] = synth::to_string(s.status);
+    if (s.status != synth::Status::Solved) {
+        doc["explanation"] = {{"message", s.explanation.message}, {"core", s.explanation.core}};
+        return doc;
+    }
+    const auto& r = s.robot;
+    doc["robot"] = {{"dof", r.dof()},
+                    {"base", {r.base.x(), r.base.y()}},
+                    {"link_lengths", r.link_lengths},
+                    {"link_diameter", r.link_diameter},
+                    {"elbow", r.elbow}};
+    nlohmann::json samples = nlohmann::json::array();
+    for (const auto& x : s.samples) {
+        samples.push_back({{"t", x.t},
+                           {"phase", x.phase == control::Phase::Trace ? "trace" : "transition"},
+                           {"primitive", x.primitive},
+                           {"q", x.q}});
+    }
+    doc["samples"] = std::move(samples);
+    const auto& c = s.certificate;
+    doc["certificate"] = {{"min_clearance_margin", finite_or_null(c.min_clearance)},
+                          {"min_self_collision_margin", finite_or_null(c.min_self_clearance)},
+                          {"max_ee_deviation", c.max_deviation},
+                          {"max_joint_step", c.max_joint_step}};
+    return doc;
+}
+
+void write_solution(const synth::Solution& solution, const std::string& path) {
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    out << to_json(solution).dump(1) << '\n';
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+}  // namespace modsynth::output

@@ -1,0 +1,317 @@
+#include <modsynth/smt/front_stage.h>
+
+#include <z3++.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <optional>
+
+#include <modsynth/geometry/distance.h>
+
+namespace modsynth::smt {
+namespace {
+
+// Slack that keeps the relaxation sound despite the decimal rounding of
+// task numbers: a constraint is loosened, never tightened.
+constexpr double kSlack = 1e-7;
+
+std::string decimal(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.12f", v);
+    return buf;
+}
+
+double to_double(const z3::expr& e) {
+    std::string s = e.get_decimal_string(12);
+    if (!s.empty() && s.back() == '?') s.pop_back();
+    return std::stod(s);
+}
+
+std::vector<geometry::Vec2> sample_points(const geometry::Primitive& p, int count) {
+    std::vector<geometry::Vec2> out;
+    const double len = geometry::length(p);
+    for (int i = 0; i <= count; ++i) out.push_back(geometry::point_at(p, len * i / count));
+    return out;
+}
+
+}  // namespace
+
+struct FrontStage::Impl {
+    const task::Task& task;
+    int dof;
+    FrontStageOptions options;
+    z3::context ctx;
+    // Two solvers over one encoding. `solver` holds the reach-only
+    // relaxation, which nlsat decides in milliseconds; `fine` adds the
+    // refined families (inner radius, exact critical points), which can take
+    // nlsat seconds even when switched off by a literal, so they live apart
+    // and are given a budget.
+    z3::solver solver;
+    z3::solver fine;
+    z3::expr bx, by;
+    std::vector<z3::expr> r;
+    z3::expr elbow;
+    std::vector<z3::expr> regions;
+    std::vector<std::string> names;  // assumption literals, in creation order
+    std::map<std::string, z3::expr> literal_of;
+    bool unsat_refined = false;  // the last Unsat came from `fine`
+    std::optional<z3::model> model;
+    int blocked = 0;
+
+    Impl(const task::Task& t, int d, const FrontStageOptions& o)
+        : task(t),
+          dof(d),
+          options(o),
+          solver(z3::tactic(ctx, "qfnra-nlsat").mk_solver()),
+          fine(z3::tactic(ctx, "qfnra-nlsat").mk_solver()),
+          bx(ctx.real_const("base_x")),
+          by(ctx.real_const("base_y")),
+          elbow(ctx.bool_const("elbow_positive")) {
+        // Core tracking must be on before the first assertion.
+        set_timeout(solver, options.time_limit);
+        set_timeout(fine, options.refined_time_limit);
+        for (int k = 0; k < dof; ++k) r.push_back(ctx.real_const(("r" + std::to_string(k + 1)).c_str()));
+        encode();
+    }
+
+    void set_timeout(z3::solver& s, double seconds) {
+        z3::params p(ctx);
+        p.set("unsat_core", true);
+        p.set("timeout", static_cast<unsigned>(std::max(1.0, seconds * 1000.0)));
+        s.set(p);
+    }
+
+    // Constraints of the task itself (not guarded): go to both solvers.
+    void add_both(const z3::expr& e) {
+        solver.add(e);
+        fine.add(e);
+    }
+
+    z3::expr num(double v) { return ctx.real_val(decimal(v).c_str()); }
+
+    z3::expr literal(const std::string& name) {
+        auto it = literal_of.find(name);
+        if (it != literal_of.end()) return it->second;
+        z3::expr l = ctx.bool_const(name.c_str());
+        literal_of.emplace(name, l);
+        names.push_back(name);
+        return l;
+    }
+
+    // A constraint family guarded by the literals of the task parts it uses.
+    void require(std::initializer_list<std::string> parts, const z3::expr& e, bool is_refined = false) {
+        z3::expr_vector guards(ctx);
+        for (const auto& part : parts) guards.push_back(literal(part));
+        const z3::expr guarded = z3::implies(z3::mk_and(guards), e);
+        fine.add(guarded);
+        if (!is_refined) solver.add(guarded);
+    }
+
+    z3::expr dist2(const geometry::Vec2& p) {
+        const z3::expr dx = num(p.x()) - bx, dy = num(p.y()) - by;
+        return dx * dx + dy * dy;
+    }
+
+    z3::expr reach() {
+        z3::expr sum = r[0];
+        for (int k = 1; k < dof; ++k) sum = sum + r[k];
+        return sum;
+    }
+
+    void encode() {
+        const auto& rs = task.robot;
+        const std::string diam = "robot.link_diameter";
+        for (int k = 0; k < dof; ++k) {
+            add_both(r[k] > 0);
+            require({"robot.min_link_length"}, r[k] >= num(rs.min_link_length - kSlack));
+            require({"robot.max_link_length"}, r[k] <= num(rs.max_link_length + kSlack));
+        }
+        // The EE must stay a diameter away from the link before the last,
+        // which it cannot do when the last link is shorter than that.
+        require({diam}, r[dof - 1] >= num(rs.link_diameter - kSlack));
+
+        if (!task.base_regions.empty()) {
+            z3::expr_vector any(ctx);
+            for (std::size_t k = 0; k < task.base_regions.size(); ++k) {
+                const task::BaseRegion& b = task.base_regions[k];
+                z3::expr in = ctx.bool_const(("in_region_" + std::to_string(k)).c_str());
+                regions.push_back(in);
+                add_both(z3::implies(in, bx >= num(b.min.x() - kSlack) && bx <= num(b.max.x() + kSlack) &&
+                                               by >= num(b.min.y() - kSlack) && by <= num(b.max.y() + kSlack)));
+                any.push_back(in);
+            }
+            require({"base_regions"}, z3::mk_or(any));
+        }
+
+        for (std::size_t o = 0; o < task.obstacles.size(); ++o) {
+            const task::Obstacle& ob = task.obstacles[o];
+            const std::string name = "obstacles[" + std::to_string(o) + "]";
+            const double need = ob.radius + rs.link_diameter / 2 - kSlack;
+            // Link 1 starts at the base.
+            require({name, diam}, dist2(ob.center) >= num(need * need));
+            // The last link ends on the path.
+            for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
+                if (geometry::point_primitive(ob.center, task.trajectory[j]) < need)
+                    require({"trajectory[" + std::to_string(j) + "]", name, diam}, ctx.bool_val(false));
+            }
+        }
+
+        const z3::expr R = reach();
+        for (std::size_t j = 0; j < task.trajectory.size(); ++j) encode_primitive(static_cast<int>(j), R);
+    }
+
+    void encode_primitive(int j, const z3::expr& R) {
+        const geometry::Primitive& p = task.trajectory[j];
+        const std::string name = "trajectory[" + std::to_string(j) + "]";
+        const std::string diam = "robot.link_diameter";
+        const double d2 = task.robot.link_diameter * task.robot.link_diameter - kSlack;
+        const auto pts = sample_points(p, options.samples_per_primitive);
+        for (const auto& v : pts) {
+            const z3::expr dv = dist2(v);
+            require({name}, dv <= R * R + num(kSlack));
+            if (dof == 2) {
+                require({name}, dv + num(kSlack) >= (r[0] - r[1]) * (r[0] - r[1]), true);
+                require({name, diam}, dv >= num(d2), true);
+            }
+        }
+        if (dof == 3) {
+            // During a primitive the proximal link is static: the distal pair
+            // reaches the whole primitive from one point, so its reach is at
+            // least half the primitive's diameter.
+            double diameter = 0.0;
+            for (const auto& a : pts)
+                for (const auto& b : pts) diameter = std::max(diameter, (a - b).norm());
+            require({name}, r[1] + r[2] >= num(diameter / 2 - kSlack));
+            return;
+        }
+        if (p.kind == geometry::PrimitiveKind::Line) {
+            // Exact critical point of a line: if the foot of the perpendicular
+            // from the base lies inside the segment, it is the closest point.
+            const geometry::Vec2 d = p.end - p.start;
+            const z3::expr t = (bx - num(p.start.x())) * num(d.x()) + (by - num(p.start.y())) * num(d.y());
+            const z3::expr cr = num(d.x()) * (by - num(p.start.y())) - num(d.y()) * (bx - num(p.start.x()));
+            const double l2 = d.squaredNorm();
+            z3::expr interior = ctx.bool_const(("closest_interior_" + std::to_string(j)).c_str());
+            fine.add(z3::implies(interior, t >= 0 && t <= num(l2)));
+            fine.add(z3::implies(!interior, t <= 0 || t >= num(l2)));
+            require({name}, z3::implies(interior, cr * cr + num(kSlack) >= (r[0] - r[1]) * (r[0] - r[1]) * num(l2)),
+                    true);
+            require({name, diam}, z3::implies(interior, cr * cr >= num(d2 * l2)), true);
+        } else if (p.kind == geometry::PrimitiveKind::Circle) {
+            // Exact for a circle: farthest |b - c| + R, closest ||b - c| - R|.
+            z3::expr dc = ctx.real_const(("center_distance_" + std::to_string(j)).c_str());
+            fine.add(dc >= 0 && dc * dc == dist2(p.center));
+            const z3::expr rc = num(p.radius);
+            require({name}, dc + rc <= R + num(kSlack), true);
+            z3::expr inside = ctx.bool_const(("base_inside_" + std::to_string(j)).c_str());
+            fine.add(inside == (dc <= rc));
+            const z3::expr gap = z3::ite(inside, rc - dc, dc - rc) + num(kSlack);
+            require({name}, gap >= r[0] - r[1] && gap >= r[1] - r[0], true);
+            require({name, diam}, gap >= num(task.robot.link_diameter - kSlack), true);
+        }
+    }
+
+    Skeleton skeleton() {
+        const z3::model& m = *model;
+        Skeleton s;
+        s.dof = dof;
+        s.base = geometry::Vec2(to_double(m.eval(bx, true)), to_double(m.eval(by, true)));
+        for (const auto& rk : r) s.link_lengths.push_back(to_double(m.eval(rk, true)));
+        s.elbow = m.eval(elbow, true).is_true() ? 1 : -1;
+        for (std::size_t k = 0; k < regions.size(); ++k) {
+            if (m.eval(regions[k], true).is_true()) {
+                s.base_region = static_cast<int>(k);
+                break;
+            }
+        }
+        for (const auto& prim : task.trajectory) {
+            const auto cp = geometry::critical_points(prim, s.base);
+            s.primitives.push_back({cp.closest_at, cp.farthest_at});
+        }
+        return s;
+    }
+
+    z3::expr_vector assumptions() {
+        z3::expr_vector a(ctx);
+        for (const auto& n : names) a.push_back(literal_of.at(n));
+        return a;
+    }
+
+    FrontStage::Result check() {
+        set_timeout(solver, options.time_limit);
+        const z3::check_result coarse = solver.check(assumptions());
+        if (coarse != z3::sat) {
+            unsat_refined = false;
+            return coarse == z3::unsat ? Result::Unsat : Result::Unknown;
+        }
+        model = solver.get_model();
+        set_timeout(fine, std::min(options.time_limit, options.refined_time_limit));
+        const z3::check_result refined = fine.check(assumptions());
+        if (refined == z3::unsat) {
+            unsat_refined = true;
+            return Result::Unsat;
+        }
+        if (refined == z3::sat) model = fine.get_model();
+        return Result::Sat;  // an undecided refined level leaves the coarse model
+    }
+};
+
+FrontStage::FrontStage(const task::Task& task, int dof, const FrontStageOptions& options)
+    : impl_(std::make_unique<Impl>(task, dof, options)) {}
+
+FrontStage::~FrontStage() = default;
+
+FrontStage::Result FrontStage::check() { return impl_->check(); }
+
+Skeleton FrontStage::skeleton() const { return impl_->skeleton(); }
+
+void FrontStage::block(const Skeleton& s) {
+    Impl& m = *impl_;
+    z3::expr same = s.elbow > 0 ? m.elbow : !m.elbow;
+    if (s.base_region >= 0) same = same && m.regions[s.base_region];
+    m.add_both(!same);
+    ++m.blocked;
+}
+
+bool FrontStage::exhausted_by_blocking() const { return impl_->blocked > 0; }
+
+std::vector<std::string> FrontStage::minimal_core() {
+    Impl& m = *impl_;
+    z3::solver& s = m.unsat_refined ? m.fine : m.solver;
+    z3::expr_vector core = s.unsat_core();
+    std::vector<z3::expr> kept;
+    for (unsigned i = 0; i < core.size(); ++i) kept.push_back(core[i]);
+    // Deletion-based minimisation: drop each literal whose absence keeps the
+    // conflict. Unsat answers of this relaxation are fast.
+    for (std::size_t i = 0; i < kept.size();) {
+        z3::expr_vector trial(m.ctx);
+        for (std::size_t k = 0; k < kept.size(); ++k)
+            if (k != i) trial.push_back(kept[k]);
+        if (s.check(trial) == z3::unsat) {
+            kept.erase(kept.begin() + static_cast<long>(i));
+        } else {
+            ++i;
+        }
+    }
+    std::vector<std::string> out;
+    for (const auto& name : m.names) {
+        const bool in = std::any_of(kept.begin(), kept.end(), [&](const z3::expr& e) {
+            return e.decl().name().str() == name;
+        });
+        if (in) out.push_back(name);
+    }
+    return out;
+}
+
+std::string FrontStage::smtlib() const {
+    std::string s = "; assumption literals: ";
+    for (const auto& n : impl_->names) s += "|" + n + "| ";
+    s += "\n";
+    return s + impl_->fine.to_smt2();
+}
+
+std::string FrontStage::reason_unknown() const { return impl_->solver.reason_unknown(); }
+
+}  // namespace modsynth::smt

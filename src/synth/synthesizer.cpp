@@ -1,0 +1,269 @@
+#include <modsynth/synth/synthesizer.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+#include <modsynth/control/motion.h>
+#include <modsynth/geometry/primitive.h>
+#include <modsynth/nlp/formulation.h>
+#include <modsynth/nlp/solver.h>
+#include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/initial_guess.h>
+#include <modsynth/verify/verifier.h>
+
+namespace modsynth::synth {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, f, a, b, c);
+    return buf;
+}
+
+std::string join(const std::vector<std::string>& v, const char* sep) {
+    std::string s;
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+    return s;
+}
+
+// Points where the refinement constrains the arm: evenly spaced along each
+// primitive, plus the primitive's critical points relative to a base.
+std::vector<nlp::PathPoint> base_points(const task::Task& task, const geometry::Vec2& base) {
+    constexpr double kSpacing = 0.025;
+    std::vector<nlp::PathPoint> pts;
+    for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
+        const auto& prim = task.trajectory[j];
+        const double len = geometry::length(prim);
+        const int n = std::max(4, static_cast<int>(std::ceil(len / kSpacing)));
+        for (int i = 0; i <= n; ++i) pts.push_back({j, len * i / n});
+        const auto cp = geometry::critical_points(prim, base);
+        pts.push_back({j, cp.closest.s});
+        pts.push_back({j, cp.farthest.s});
+    }
+    return pts;
+}
+
+void add_point(std::vector<nlp::PathPoint>& pts, int j, double s) {
+    for (const auto& p : pts)
+        if (p.primitive == j && std::abs(p.s - s) < 1e-4) return;
+    pts.push_back({j, s});
+}
+
+class Search {
+public:
+    Search(const task::Task& task, const SynthesisOptions& options, SynthesisStats& stats)
+        : task_(task), opt_(options), stats_(stats), start_(Clock::now()) {}
+
+    Solution run();
+
+private:
+    double remaining() const { return opt_.time_limit - seconds_since(start_); }
+    void say(const std::string& line) const {
+        if (opt_.progress) opt_.progress(fmt("[%7.3fs] ", seconds_since(start_)) + line);
+    }
+    bool try_skeleton(const smt::Skeleton& skeleton, Solution& out);
+    bool refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
+                nlp::SweptVolume swept, Solution& out);
+    bool finish(const kinematics::Robot& robot, std::vector<nlp::PathPoint>& points, Solution& out);
+
+    const task::Task& task_;
+    const SynthesisOptions& opt_;
+    SynthesisStats& stats_;
+    Clock::time_point start_;
+    std::vector<std::string> tried_;
+};
+
+Solution Search::run() {
+    Solution out;
+    out.task_name = task_.name;
+    std::vector<std::string> core;
+    bool all_unsat = true;
+    for (int dof : task_.robot.dof) {
+        if (remaining() <= 0.0) {
+            all_unsat = false;
+            break;
+        }
+        const auto t0 = Clock::now();
+        smt::FrontStageOptions fo;
+        fo.time_limit = std::min(10.0, std::max(0.1, remaining()));
+        fo.seed = opt_.seed;
+        smt::FrontStage front(task_, dof, fo);
+        auto result = front.check();
+        stats_.front_seconds += seconds_since(t0);
+        if (result == smt::FrontStage::Result::Unsat) {
+            const auto c = front.minimal_core();
+            say(std::to_string(dof) + " joints: proved infeasible, conflict between " + join(c, ", "));
+            for (const auto& part : c)
+                if (std::find(core.begin(), core.end(), part) == core.end()) core.push_back(part);
+            tried_.push_back(std::to_string(dof) + " joints proved infeasible (" + join(c, ", ") + ")");
+            continue;
+        }
+        all_unsat = false;
+        if (result == smt::FrontStage::Result::Unknown) {
+            say(std::to_string(dof) + " joints: front stage gave up (" + front.reason_unknown() + ")");
+            tried_.push_back(std::to_string(dof) + " joints: front stage undecided");
+            continue;
+        }
+        if (dof != 2) {
+            say(std::to_string(dof) + " joints: relaxation satisfiable; synthesis of " +
+                std::to_string(dof) + "-joint robots is not available");
+            tried_.push_back(std::to_string(dof) + " joints not synthesised (only 2-joint synthesis is available)");
+            continue;
+        }
+        int skeletons = 0;
+        while (result == smt::FrontStage::Result::Sat && remaining() > 0.0) {
+            const smt::Skeleton sk = front.skeleton();
+            ++skeletons;
+            ++stats_.skeletons;
+            say(fmt("2 joints: skeleton %.0f (elbow %+.0f, base region %.0f)", skeletons, sk.elbow,
+                    sk.base_region));
+            if (try_skeleton(sk, out)) return out;
+            front.block(sk);
+            const auto t1 = Clock::now();
+            result = front.check();
+            stats_.front_seconds += seconds_since(t1);
+        }
+        tried_.push_back(fmt("2 joints: %.0f skeleton(s) searched without a certified motion", skeletons));
+    }
+    if (all_unsat && !core.empty()) {
+        out.status = Status::Infeasible;
+        out.explanation.core = core;
+        out.explanation.message = "No robot with " + join([&] {
+            std::vector<std::string> d;
+            for (int k : task_.robot.dof) d.push_back(std::to_string(k));
+            return d;
+        }(), " or ") + " joints can do this task: the constraints of " + join(core, ", ") +
+                                  " cannot all be met (proved).";
+        return out;
+    }
+    out.status = Status::Unknown;
+    out.explanation.message = "No certified robot found" +
+                              std::string(remaining() <= 0.0 ? " within the time limit" : "") + ": " +
+                              join(tried_, "; ") + ".";
+    out.explanation.core = core;
+    return out;
+}
+
+bool Search::try_skeleton(const smt::Skeleton& skeleton, Solution& out) {
+    const auto guesses = initial_guesses(task_, skeleton, 4, opt_.seed);
+    for (const auto& g : guesses) {
+        if (remaining() <= 0.0) return false;
+        say(fmt("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(), g.robot.base.y(),
+                g.robot.total_length()) +
+            fmt(", margin %.4f m", g.margin));
+        if (!task_.obstacles.empty() && refine(skeleton, g.robot, nlp::SweptVolume::Over, out)) return true;
+        if (refine(skeleton, g.robot, nlp::SweptVolume::Sampled, out)) return true;
+    }
+    return false;
+}
+
+bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
+                    nlp::SweptVolume swept, Solution& out) {
+    const char* name = swept == nlp::SweptVolume::Over ? "SV-over" : "sampled";
+    nlp::TwoLinkProblem problem;
+    problem.task = &task_;
+    problem.skeleton = skeleton;
+    problem.start = start;
+    problem.swept = swept;
+    problem.points = base_points(task_, start.base);
+    constexpr int kRounds = 12;
+    for (int round = 0; round < kRounds && remaining() > 0.0; ++round) {
+        const auto t0 = Clock::now();
+        const nlp::Formulation f = nlp::formulate_two_link(problem);
+        nlp::SolverOptions so;
+        so.time_limit = std::min(10.0, std::max(0.05, remaining()));
+        const nlp::SolverResult res = nlp::minimize(f.program, so);
+        stats_.refine_seconds += seconds_since(t0);
+        ++stats_.nlp_solves;
+        if (!res.usable()) {
+            say(std::string("    ") + name + ": refinement did not converge (" + res.message + ")");
+            return false;
+        }
+        const kinematics::Robot robot = nlp::robot_from(f, res.x);
+        say(std::string("    ") + name +
+            fmt(": candidate links %.4f + %.4f m", robot.link_lengths[0], robot.link_lengths[1]) +
+            fmt(" with %.0f points, %.0f variables", static_cast<double>(problem.points.size()),
+                f.program.num_variables()));
+        const std::size_t before = problem.points.size();
+        if (finish(robot, problem.points, out)) return true;
+        if (problem.points.size() == before) return false;  // nothing left to learn
+        stats_.counterexamples += static_cast<int>(problem.points.size() - before);
+        problem.start = robot;
+        if (swept == nlp::SweptVolume::Over) problem.swept = nlp::SweptVolume::Sampled;
+        name = "sampled";
+    }
+    return false;
+}
+
+// Plans and certifies the motion. On failure, adds the offending points
+// (counterexamples) to `points` for the next refinement.
+bool Search::finish(const kinematics::Robot& robot, std::vector<nlp::PathPoint>& points, Solution& out) {
+    const auto t0 = Clock::now();
+    std::string where;
+    auto motion = control::plan_motion(task_, robot, opt_.motion, &where);
+    if (!motion) {
+        say("    out of reach at " + where);
+        for (int j = 0; j < static_cast<int>(task_.trajectory.size()); ++j) {
+            const auto cp = geometry::critical_points(task_.trajectory[j], robot.base);
+            add_point(points, j, cp.closest.s);
+            add_point(points, j, cp.farthest.s);
+        }
+        stats_.verify_seconds += seconds_since(t0);
+        return false;
+    }
+    verify::VerifyOptions vo;
+    vo.max_joint_step = opt_.motion.max_joint_step;
+    verify::Certificate cert = verify::certify(task_, robot, *motion, vo);
+    for (int pass = 0; pass < 8 && cert.violations.empty() && !cert.coarse_pairs.empty(); ++pass) {
+        if (!control::refine_motion(task_, robot, *motion, cert.coarse_pairs)) break;
+        cert = verify::certify(task_, robot, *motion, vo);
+    }
+    stats_.verify_seconds += seconds_since(t0);
+    if (cert.ok) {
+        control::assign_times(*motion, opt_.motion);
+        out.status = Status::Solved;
+        out.robot = robot;
+        out.samples = std::move(*motion);
+        out.certificate = std::move(cert);
+        say(fmt("    certified: clearance margin %.4f m, self margin %.4f m, deviation %.2g m",
+                out.certificate.min_clearance, out.certificate.min_self_clearance,
+                out.certificate.max_deviation));
+        return true;
+    }
+    std::set<std::pair<int, long>> seen;
+    int added = 0;
+    for (const auto& v : cert.violations) {
+        if (v.primitive < 0) continue;
+        if (!seen.insert({v.primitive, std::lround(v.s * 1e3)}).second) continue;
+        add_point(points, v.primitive, v.s);
+        if (++added >= 24) break;
+    }
+    if (!cert.violations.empty())
+        say("    verification: " + std::to_string(cert.violations.size()) + " violation(s), first: " +
+            cert.violations.front().message);
+    for (int j = 0; j < static_cast<int>(task_.trajectory.size()); ++j) {
+        const auto cp = geometry::critical_points(task_.trajectory[j], robot.base);
+        add_point(points, j, cp.closest.s);
+        add_point(points, j, cp.farthest.s);
+    }
+    return false;
+}
+
+}  // namespace
+
+Solution synthesize(const task::Task& task, const SynthesisOptions& options, SynthesisStats* stats) {
+    SynthesisStats local;
+    Search search(task, options, stats ? *stats : local);
+    return search.run();
+}
+
+}  // namespace modsynth::synth

@@ -1,0 +1,514 @@
+#include <modsynth/task/task_io.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <modsynth/geometry/distance.h>
+
+namespace modsynth::task {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kFormat = "modsynth-task/1";
+constexpr const char* kDocument = "(document)";
+/// Below this a length is treated as zero: a degenerate primitive.
+constexpr double kDegenerate = 1e-9;
+
+// ---------------------------------------------------------------- messages
+
+std::string fixed(double value, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+    return buf;
+}
+
+/// A length for a message: 3 decimals, or as many as needed to show a tiny
+/// but non-zero value, so that a rejected 2e-6 m gap does not read "0.000 m".
+std::string metres(double value) {
+    if (!std::isfinite(value)) return std::to_string(value);
+    int decimals = 3;
+    while (decimals < 12 && value != 0.0 && std::fabs(value) < 0.5 * std::pow(10.0, -decimals)) {
+        ++decimals;
+    }
+    return fixed(value, decimals);
+}
+
+std::string point_text(const Vec2& p) { return "[" + metres(p.x()) + ", " + metres(p.y()) + "]"; }
+
+/// What the user wrote instead of what was expected, in plain words.
+std::string describe(const json& j) {
+    switch (j.type()) {
+        case json::value_t::null:
+            return "null";
+        case json::value_t::boolean:
+            return j.get<bool>() ? "true" : "false";
+        case json::value_t::string: {
+            std::string s = j.get<std::string>();
+            if (s.size() > 40) s = s.substr(0, 37) + "...";
+            return "the text \"" + s + "\"";
+        }
+        case json::value_t::array:
+            return "a list";
+        case json::value_t::object:
+            return "an object";
+        case json::value_t::number_float: {
+            const double v = j.get<double>();
+            if (std::isnan(v)) return "NaN";
+            if (std::isinf(v)) return v > 0 ? "infinity" : "-infinity";
+            return j.dump();
+        }
+        default:
+            return j.dump();
+    }
+}
+
+std::string member(const std::string& part, const char* key) {
+    return part.empty() ? std::string(key) : part + "." + key;
+}
+
+std::string element(const std::string& part, std::size_t i) {
+    return part + "[" + std::to_string(i) + "]";
+}
+
+// ------------------------------------------------------------ basic values
+
+void require_object(const json& j, const std::string& part, const char* example) {
+    if (!j.is_object()) {
+        throw InputError(
+            part, std::string("expected an object like ") + example + ", got " + describe(j));
+    }
+}
+
+void require_array(const json& j, const std::string& part, const char* what) {
+    if (!j.is_array()) {
+        throw InputError(part, std::string("expected a list of ") + what + ", got " + describe(j));
+    }
+}
+
+/// The value of a key that must be present.
+const json& required(const json& obj, const std::string& part, const char* key, const char* why) {
+    const auto it = obj.find(key);
+    if (it == obj.end()) throw InputError(member(part, key), std::string("missing; ") + why);
+    return *it;
+}
+
+/// The value of an optional key, or nullptr.
+const json* optional(const json& obj, const char* key) {
+    const auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+}
+
+/// A finite number. `what` names the value in the message ("a length").
+double finite_number(const json& j, const std::string& part, const char* what) {
+    if (!j.is_number()) {
+        throw InputError(part, std::string("expected ") + what + " (a number), got " + describe(j));
+    }
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) {
+        throw InputError(
+            part, std::string("expected ") + what + " (a finite number), got " + describe(j));
+    }
+    return v;
+}
+
+double positive_length(const json& j, const std::string& part) {
+    const double v = finite_number(j, part, "a length in metres");
+    if (v <= 0.0) throw InputError(part, "must be greater than 0 m, got " + metres(v) + " m");
+    return v;
+}
+
+double non_negative_length(const json& j, const std::string& part) {
+    const double v = finite_number(j, part, "a length in metres");
+    if (v < 0.0) throw InputError(part, "must not be negative, got " + metres(v) + " m");
+    return v;
+}
+
+Vec2 point(const json& j, const std::string& part) {
+    if (!j.is_array()) throw InputError(part, "expected a point [x, y], got " + describe(j));
+    if (j.size() != 2) {
+        throw InputError(part, "expected a point [x, y] with 2 numbers, got a list of " +
+                                   std::to_string(j.size()));
+    }
+    const char* names[2] = {"x", "y"};
+    Vec2 p;
+    for (int k = 0; k < 2; ++k) {
+        const json& c = j[static_cast<std::size_t>(k)];
+        if (!c.is_number() || !std::isfinite(c.get<double>())) {
+            throw InputError(part, std::string("the ") + names[k] +
+                                       " coordinate must be a finite number, got " + describe(c));
+        }
+        p[k] = c.get<double>();
+    }
+    return p;
+}
+
+std::string text(const json& j, const std::string& part, const char* what) {
+    if (!j.is_string()) {
+        throw InputError(part, std::string("expected ") + what + ", got " + describe(j));
+    }
+    return j.get<std::string>();
+}
+
+// -------------------------------------------------------------- trajectory
+
+bool direction_ccw(const json& prim, const std::string& part, const char* why) {
+    const std::string p = member(part, "direction");
+    const std::string d = text(required(prim, part, "direction", why), p, "\"ccw\" or \"cw\"");
+    if (d == "ccw") return true;
+    if (d == "cw") return false;
+    throw InputError(
+        p, "expected \"ccw\" (counter-clockwise) or \"cw\" (clockwise), got \"" + d + "\"");
+}
+
+Vec2 required_point(const json& prim, const std::string& part, const char* key, const char* why) {
+    return point(required(prim, part, key, why), member(part, key));
+}
+
+Primitive parse_line(const json& prim, const std::string& part) {
+    const char* why = "a line needs \"start\" and \"end\"";
+    const Vec2 start = required_point(prim, part, "start", why);
+    const Vec2 end = required_point(prim, part, "end", why);
+    if ((end - start).norm() < kDegenerate) {
+        throw InputError(
+            part, "line has zero length: start and end are the same point " + point_text(start));
+    }
+    return geometry::make_line(start, end);
+}
+
+void require_radius(const Vec2& start, const Vec2& center, const std::string& part,
+                    const char* kind) {
+    if ((start - center).norm() < kDegenerate) {
+        throw InputError(part, std::string(kind) + " start " + point_text(start) +
+                                   " is its center, so its radius is 0");
+    }
+}
+
+Primitive parse_arc(const json& prim, const std::string& part) {
+    const char* why = "an arc needs \"start\", \"end\", \"center\" and \"direction\"";
+    const Vec2 start = required_point(prim, part, "start", why);
+    Vec2 end = required_point(prim, part, "end", why);
+    const Vec2 center = required_point(prim, part, "center", why);
+    const bool ccw = direction_ccw(prim, part, why);
+    require_radius(start, center, part, "arc");
+    const double gap = (end - center).norm() - (start - center).norm();
+    if (std::fabs(gap) > kJoinTolerance) {
+        throw InputError(part, "arc end is " + metres(std::fabs(gap)) + " m " +
+                                   (gap > 0 ? "farther from" : "closer to") +
+                                   " center than start; both must lie on the same circle");
+    }
+    // A start equal to the end within rounding means a full circle; passing
+    // the exact start lets make_arc recognise it.
+    if ((end - start).norm() < kDegenerate) end = start;
+    return geometry::make_arc(start, end, center, ccw);
+}
+
+Primitive parse_circle(const json& prim, const std::string& part) {
+    const char* why = "a circle needs \"start\", \"center\" and \"direction\"";
+    const Vec2 start = required_point(prim, part, "start", why);
+    const Vec2 center = required_point(prim, part, "center", why);
+    const bool ccw = direction_ccw(prim, part, why);
+    require_radius(start, center, part, "circle");
+    if (const json* r = optional(prim, "radius")) {
+        const std::string rp = member(part, "radius");
+        const double radius = finite_number(*r, rp, "a radius in metres");
+        const double actual = (start - center).norm();
+        if (std::fabs(radius - actual) > kJoinTolerance) {
+            throw InputError(rp, "radius " + metres(radius) + " m disagrees with the distance " +
+                                     metres(actual) + " m from start to center");
+        }
+    }
+    return geometry::make_circle(start, center, ccw);
+}
+
+Primitive parse_primitive(const json& prim, const std::string& part) {
+    require_object(prim, part, "{\"type\": \"line\", \"start\": [x, y], \"end\": [x, y]}");
+    const char* why = "expected \"line\", \"arc\" or \"circle\"";
+    const std::string tp = member(part, "type");
+    const std::string type = text(required(prim, part, "type", why), tp, why);
+    if (type == "line") return parse_line(prim, part);
+    if (type == "arc") return parse_arc(prim, part);
+    if (type == "circle") return parse_circle(prim, part);
+    throw InputError(tp, "unknown primitive type \"" + type + "\"; " + why);
+}
+
+void require_connected(const Primitive& prev, const Primitive& next, std::size_t j) {
+    const double gap = (next.start - prev.end).norm();
+    if (gap > kJoinTolerance) {
+        throw InputError(element("trajectory", j), "starts " + metres(gap) + " m from the end of " +
+                                                       element("trajectory", j - 1) +
+                                                       " (it ends at " + point_text(prev.end) +
+                                                       "); consecutive primitives must connect");
+    }
+}
+
+std::vector<Primitive> parse_trajectory(const json& doc) {
+    const std::string part = "trajectory";
+    const json& list =
+        required(doc, "", "trajectory", "a task needs a list of primitives to follow");
+    require_array(list, part, "primitives");
+    if (list.empty()) throw InputError(part, "is empty; a task needs at least one primitive");
+    std::vector<Primitive> out;
+    out.reserve(list.size());
+    for (std::size_t j = 0; j < list.size(); ++j) {
+        out.push_back(parse_primitive(list[j], element(part, j)));
+        if (j > 0) require_connected(out[j - 1], out[j], j);
+    }
+    return out;
+}
+
+// -------------------------------------------------------------- the others
+
+Obstacle parse_obstacle(const json& j, const std::string& part) {
+    require_object(j, part, "{\"center\": [x, y], \"radius\": r}");
+    const char* why = "an obstacle needs \"center\" and \"radius\"";
+    Obstacle o;
+    o.center = point(required(j, part, "center", why), member(part, "center"));
+    o.radius = positive_length(required(j, part, "radius", why), member(part, "radius"));
+    return o;
+}
+
+BaseRegion parse_base_region(const json& j, const std::string& part) {
+    require_object(j, part, "{\"min\": [x, y], \"max\": [x, y]}");
+    const char* why = "a base region needs \"min\" and \"max\" corners";
+    BaseRegion b;
+    b.min = point(required(j, part, "min", why), member(part, "min"));
+    b.max = point(required(j, part, "max", why), member(part, "max"));
+    for (int k = 0; k < 2; ++k) {
+        if (b.min[k] > b.max[k]) {
+            const char* axis = k == 0 ? "x" : "y";
+            throw InputError(part, std::string("min ") + axis + " " + metres(b.min[k]) +
+                                       " m is larger than max " + axis + " " + metres(b.max[k]) +
+                                       " m");
+        }
+    }
+    return b;
+}
+
+template <class T, class Parse>
+std::vector<T> parse_list(const json& doc, const char* key, const char* what, Parse parse) {
+    std::vector<T> out;
+    const json* list = optional(doc, key);
+    if (!list) return out;
+    require_array(*list, key, what);
+    for (std::size_t i = 0; i < list->size(); ++i) {
+        out.push_back(parse((*list)[i], element(key, i)));
+    }
+    return out;
+}
+
+int joint_count(const json& j, const std::string& part) {
+    const bool integral =
+        j.is_number_integer() || (j.is_number_float() && std::isfinite(j.get<double>()) &&
+                                  j.get<double>() == std::floor(j.get<double>()));
+    if (!integral) throw InputError(part, "expected a whole number of joints, got " + describe(j));
+    const double v = j.get<double>();
+    if (v < kMinDof || v > kMaxDof) {
+        throw InputError(
+            part, describe(j) + " joints is not supported; modsynth builds robots with " +
+                      std::to_string(kMinDof) + " to " + std::to_string(kMaxDof) + " joints");
+    }
+    return static_cast<int>(v);
+}
+
+std::vector<int> parse_dof(const json& j, const std::string& part) {
+    require_array(j, part, "joint counts, e.g. [2, 3]");
+    if (j.empty()) throw InputError(part, "is empty; list at least one joint count, e.g. [2, 3]");
+    std::vector<int> dof;
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        const int n = joint_count(j[i], element(part, i));
+        if (std::find(dof.begin(), dof.end(), n) != dof.end()) {
+            throw InputError(element(part, i), std::to_string(n) + " is listed twice");
+        }
+        dof.push_back(n);
+    }
+    std::sort(dof.begin(), dof.end());
+    return dof;
+}
+
+RobotSpec parse_robot(const json& doc) {
+    RobotSpec r;
+    const json* robot = optional(doc, "robot");
+    if (!robot) return r;
+    const std::string part = "robot";
+    require_object(*robot, part, "{\"dof\": [2, 3], \"max_link_length\": 1.0}");
+    if (const json* v = optional(*robot, "dof")) r.dof = parse_dof(*v, member(part, "dof"));
+    if (const json* v = optional(*robot, "link_diameter")) {
+        r.link_diameter = positive_length(*v, member(part, "link_diameter"));
+    }
+    if (const json* v = optional(*robot, "min_link_length")) {
+        r.min_link_length = non_negative_length(*v, member(part, "min_link_length"));
+    }
+    if (const json* v = optional(*robot, "max_link_length")) {
+        r.max_link_length = positive_length(*v, member(part, "max_link_length"));
+    }
+    if (r.min_link_length > r.max_link_length) {
+        throw InputError(member(part, "min_link_length"),
+                         "minimum link length " + metres(r.min_link_length) +
+                             " m is larger than the maximum link length " +
+                             metres(r.max_link_length) + " m");
+    }
+    return r;
+}
+
+std::string parse_name(const json& doc) {
+    const json* name = optional(doc, "name");
+    return name ? text(*name, "name", "a name (text)") : std::string();
+}
+
+void check_format(const json& doc) {
+    const json& f = required(doc, "", "format",
+                             "a task document must start with \"format\": \"modsynth-task/1\"");
+    if (!f.is_string() || f.get<std::string>() != kFormat) {
+        throw InputError("format", std::string("expected \"") + kFormat + "\", got " + describe(f) +
+                                       "; this is not a task file modsynth can read");
+    }
+}
+
+/// Nothing can trace a path that runs through an obstacle, whatever the robot.
+void check_clearance(const Task& task) {
+    for (std::size_t i = 0; i < task.obstacles.size(); ++i) {
+        const Obstacle& o = task.obstacles[i];
+        for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
+            const double d = geometry::point_primitive(o.center, task.trajectory[j]);
+            if (d <= o.radius) {
+                throw InputError(element("obstacles", i),
+                                 "touches " + element("trajectory", j) + " (the path runs " +
+                                     metres(o.radius - d) +
+                                     " m inside it); the path must stay outside every obstacle");
+            }
+        }
+    }
+}
+
+// ------------------------------------------------------------- JSON errors
+
+/// 1-based line and column of the byte at 1-based position `byte`.
+std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t byte) {
+    const std::size_t pos = std::min(byte == 0 ? 0 : byte - 1, text.size());
+    const std::size_t line = 1 + std::count(text.begin(), text.begin() + pos, '\n');
+    const std::size_t last_nl = text.rfind('\n', pos == 0 ? std::string_view::npos : pos - 1);
+    const std::size_t column =
+        (pos == 0 || last_nl == std::string_view::npos) ? pos + 1 : pos - last_nl;
+    return {line, column};
+}
+
+/// nlohmann's explanation without its exception-id prefix and its position.
+std::string parse_detail(const nlohmann::json::parse_error& e) {
+    const std::string what = e.what();
+    const std::size_t at = what.find("syntax error");
+    if (at != std::string::npos) return what.substr(at);
+    const std::size_t colon = what.find(": ");
+    return colon == std::string::npos ? what : what.substr(colon + 2);
+}
+
+// ------------------------------------------------------------------ output
+
+json point_json(const Vec2& p) { return json::array({p.x(), p.y()}); }
+
+json primitive_json(const Primitive& p) {
+    const char* dir = p.sweep >= 0 ? "ccw" : "cw";
+    switch (p.kind) {
+        case geometry::PrimitiveKind::Line:
+            return {{"type", "line"}, {"start", point_json(p.start)}, {"end", point_json(p.end)}};
+        case geometry::PrimitiveKind::Arc:
+            return {{"type", "arc"},
+                    {"start", point_json(p.start)},
+                    {"end", point_json(p.end)},
+                    {"center", point_json(p.center)},
+                    {"direction", dir}};
+        case geometry::PrimitiveKind::Circle:
+            return {{"type", "circle"},
+                    {"start", point_json(p.start)},
+                    {"center", point_json(p.center)},
+                    {"direction", dir},
+                    {"radius", p.radius}};
+    }
+    return {};
+}
+
+}  // namespace
+
+Task parse_task(const json& doc) {
+    if (!doc.is_object()) {
+        throw InputError(
+            kDocument,
+            "expected a JSON object {\"format\": \"modsynth-task/1\", ...}, got " + describe(doc));
+    }
+    check_format(doc);
+    Task task;
+    task.name = parse_name(doc);
+    task.trajectory = parse_trajectory(doc);
+    task.obstacles = parse_list<Obstacle>(doc, "obstacles", "obstacles", parse_obstacle);
+    task.base_regions =
+        parse_list<BaseRegion>(doc, "base_regions", "base regions", parse_base_region);
+    task.robot = parse_robot(doc);
+    check_clearance(task);
+    return task;
+}
+
+Task parse_task_text(std::string_view text) {
+    json doc;
+    try {
+        doc = json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        const auto [line, column] = line_column(text, e.byte);
+        throw InputError(kDocument, "not valid JSON at line " + std::to_string(line) + ", column " +
+                                        std::to_string(column) + ": " + parse_detail(e));
+    }
+    return parse_task(doc);
+}
+
+Task load_task(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        throw InputError(path, "is a folder, not a task file");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw InputError(path, std::string("cannot open the task file: ") + std::strerror(errno));
+    }
+    std::ostringstream content;
+    content << in.rdbuf();
+    if (in.bad()) throw InputError(path, "cannot read the task file");
+    Task task = parse_task_text(content.str());
+    if (task.name.empty()) task.name = std::filesystem::path(path).stem().string();
+    return task;
+}
+
+json to_json(const Task& task) {
+    json trajectory = json::array();
+    for (const Primitive& p : task.trajectory) trajectory.push_back(primitive_json(p));
+    json obstacles = json::array();
+    for (const Obstacle& o : task.obstacles) {
+        obstacles.push_back({{"center", point_json(o.center)}, {"radius", o.radius}});
+    }
+    json regions = json::array();
+    for (const BaseRegion& b : task.base_regions) {
+        regions.push_back({{"min", point_json(b.min)}, {"max", point_json(b.max)}});
+    }
+    return {{"format", kFormat},
+            {"name", task.name},
+            {"trajectory", trajectory},
+            {"obstacles", obstacles},
+            {"base_regions", regions},
+            {"robot",
+             {{"dof", task.robot.dof},
+              {"link_diameter", task.robot.link_diameter},
+              {"min_link_length", task.robot.min_link_length},
+              {"max_link_length", task.robot.max_link_length}}}};
+}
+
+}  // namespace modsynth::task

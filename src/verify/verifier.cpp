@@ -1,0 +1,290 @@
+#include <modsynth/verify/verifier.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <modsynth/geometry/distance.h>
+#include <modsynth/geometry/polygon.h>
+#include <modsynth/kinematics/kinematics.h>
+
+namespace modsynth::verify {
+namespace {
+
+using control::Phase;
+using control::Sample;
+using geometry::Vec2;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kGeomEps = 1e-9;
+
+std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, fmt, a, b, c);
+    return buf;
+}
+
+double segment_polygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& poly) {
+    if (geometry::point_in_convex_polygon(a, poly) || geometry::point_in_convex_polygon(b, poly))
+        return 0.0;
+    if (poly.size() == 1) return geometry::point_segment(poly[0], a, b);
+    double d = kInf;
+    for (std::size_t i = 0; i < poly.size(); ++i)
+        d = std::min(d, geometry::segment_segment(a, b, poly[i], poly[(i + 1) % poly.size()]));
+    return d;
+}
+
+// Largest distance from the chord of an arc of radius r to the arc, for a
+// chord of length c (the shorter arc).
+double sagitta(double r, double c) {
+    if (r <= 0.0) return 0.0;
+    const double h = 0.5 * c;
+    return h >= r ? r : r - std::sqrt(r * r - h * h);
+}
+
+struct Pose {
+    std::vector<Vec2> joints;  // s_1 .. s_{n+1}
+    std::vector<double> phi;   // absolute link angles
+    Vec2 target;               // where the EE should be
+    double deviation = 0.0;
+};
+
+class Checker {
+public:
+    Checker(const task::Task& task, const kinematics::Robot& robot,
+            const std::vector<Sample>& samples, const VerifyOptions& options)
+        : task_(task), robot_(robot), samples_(samples), opt_(options) {
+        cert_.min_clearance = kInf;
+        cert_.min_self_clearance = kInf;
+    }
+
+    Certificate run() {
+        check_structure();
+        if (!structure_ok_) return finish();
+        check_order();
+        poses_.reserve(samples_.size());
+        for (std::size_t i = 0; i < samples_.size(); ++i) poses_.push_back(pose(static_cast<int>(i)));
+        for (std::size_t i = 0; i < samples_.size(); ++i) check_sample(static_cast<int>(i));
+        for (std::size_t i = 0; i + 1 < samples_.size(); ++i) check_pair(static_cast<int>(i));
+        return finish();
+    }
+
+private:
+    void violation(Violation::Kind kind, int i, double amount, std::string message, int obstacle = -1,
+                   int link = -1) {
+        Violation v;
+        v.kind = kind;
+        v.sample = i;
+        if (i >= 0) {
+            v.primitive = samples_[i].primitive;
+            v.s = samples_[i].s;
+        }
+        v.obstacle = obstacle;
+        v.link = link;
+        v.amount = amount;
+        v.message = std::move(message);
+        cert_.violations.push_back(std::move(v));
+    }
+
+    void check_structure() {
+        const int n = robot_.dof();
+        const auto& allowed = task_.robot.dof;
+        if (std::find(allowed.begin(), allowed.end(), n) == allowed.end())
+            violation(Violation::Kind::Structure, -1, 0.0,
+                      "robot.dof " + std::to_string(n) + " is not allowed by the task");
+        for (int k = 0; k < n; ++k) {
+            const double r = robot_.link_lengths[k];
+            if (!(r >= task_.robot.min_link_length - kGeomEps && r <= task_.robot.max_link_length + kGeomEps))
+                violation(Violation::Kind::Structure, -1, 0.0,
+                          format("link %.0f length %.6f m is outside the allowed range", k + 1.0, r));
+        }
+        if (robot_.link_diameter < task_.robot.link_diameter)
+            violation(Violation::Kind::Structure, -1, 0.0, "link diameter below the task's");
+        if (!task_.base_regions.empty() &&
+            std::none_of(task_.base_regions.begin(), task_.base_regions.end(),
+                         [&](const task::BaseRegion& r) { return r.contains(robot_.base, kGeomEps); }))
+            violation(Violation::Kind::Structure, -1, 0.0,
+                      format("base (%.6f, %.6f) lies in no base region", robot_.base.x(), robot_.base.y()));
+        if (samples_.empty()) violation(Violation::Kind::Structure, -1, 0.0, "no samples");
+        for (std::size_t i = 0; i < samples_.size(); ++i) {
+            if (static_cast<int>(samples_[i].q.size()) != n) {
+                violation(Violation::Kind::Structure, static_cast<int>(i), 0.0,
+                          "sample has the wrong number of joint angles");
+                break;
+            }
+        }
+        structure_ok_ = cert_.violations.empty();
+    }
+
+    // Trace runs of primitives 0..m-1 in order, each from start to end with
+    // non-decreasing progress; transitions only between consecutive runs.
+    void check_order() {
+        const int m = static_cast<int>(task_.trajectory.size());
+        int expected = 0;
+        for (std::size_t i = 0; i < samples_.size(); ++i) {
+            const Sample& a = samples_[i];
+            const bool first = i == 0 || samples_[i - 1].phase != a.phase ||
+                               samples_[i - 1].primitive != a.primitive;
+            if (a.phase == Phase::Trace && first) {
+                if (a.primitive != expected || a.s != 0.0)
+                    violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
+                              "trace of trajectory[" + std::to_string(a.primitive) +
+                                  "] out of order or not from its start");
+                expected = a.primitive + 1;
+            }
+            if (a.phase == Phase::Transition && (a.primitive != expected - 1 || a.primitive + 1 >= m))
+                violation(Violation::Kind::Order, static_cast<int>(i), 0.0, "transition out of place");
+            if (!first && a.phase == Phase::Trace) {
+                const double step = a.s - samples_[i - 1].s;
+                if (step < 0.0 || step > opt_.max_ee_step + 1e-12)
+                    violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
+                              format("progress step %.6f m between samples", step));
+            }
+            const bool last = i + 1 == samples_.size() || samples_[i + 1].phase != a.phase ||
+                              samples_[i + 1].primitive != a.primitive;
+            if (a.phase == Phase::Trace && last &&
+                std::abs(a.s - geometry::length(task_.trajectory[a.primitive])) > 1e-9)
+                violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
+                          "trace of trajectory[" + std::to_string(a.primitive) + "] stops before its end");
+        }
+        if (expected != m)
+            violation(Violation::Kind::Order, -1, 0.0, "the motion does not trace every primitive");
+    }
+
+    Pose pose(int i) const {
+        const Sample& a = samples_[i];
+        Pose p;
+        p.joints = kinematics::forward(robot_.base, robot_.link_lengths, a.q);
+        p.phi = kinematics::absolute_angles(a.q);
+        const geometry::Primitive& prim = task_.trajectory[a.primitive];
+        p.target = a.phase == Phase::Trace ? geometry::point_at(prim, a.s) : prim.end;
+        p.deviation = (p.joints.back() - p.target).norm();
+        return p;
+    }
+
+    void check_sample(int i) {
+        const Pose& p = poses_[i];
+        const int n = robot_.dof();
+        const double diam = robot_.link_diameter;
+        cert_.max_deviation = std::max(cert_.max_deviation, p.deviation);
+        if (p.deviation > opt_.deviation_tolerance)
+            violation(Violation::Kind::Deviation, i, p.deviation - opt_.deviation_tolerance,
+                      format("EE is %.6f m off the path", p.deviation));
+        for (int k = 0; k < n; ++k) {
+            for (std::size_t o = 0; o < task_.obstacles.size(); ++o) {
+                const task::Obstacle& ob = task_.obstacles[o];
+                const double margin =
+                    geometry::point_segment(ob.center, p.joints[k], p.joints[k + 1]) - ob.radius - diam / 2;
+                if (margin < 0.0)
+                    violation(Violation::Kind::Clearance, i, -margin,
+                              format("link %.0f is %.6f m too close to obstacles[%.0f]", k + 1.0, -margin,
+                                     static_cast<double>(o)),
+                              static_cast<int>(o), k);
+            }
+            if (k < n - 1) {
+                const double margin =
+                    geometry::point_segment(p.joints[n], p.joints[k], p.joints[k + 1]) - diam;
+                if (margin < 0.0)
+                    violation(Violation::Kind::SelfCollision, i, -margin,
+                              format("EE is %.6f m too close to link %.0f", -margin, k + 1.0), -1, k);
+            }
+        }
+    }
+
+    void check_pair(int i) {
+        const Sample& sa = samples_[i];
+        const Sample& sb = samples_[i + 1];
+        const Pose& a = poses_[i];
+        const Pose& b = poses_[i + 1];
+        const int n = robot_.dof();
+        const double diam = robot_.link_diameter;
+
+        double step = 0.0;
+        for (int k = 0; k < n; ++k) step = std::max(step, std::abs(sb.q[k] - sa.q[k]));
+        cert_.max_joint_step = std::max(cert_.max_joint_step, step);
+        if (step > opt_.max_joint_step + 1e-12) {
+            violation(Violation::Kind::JointStep, i, step - opt_.max_joint_step,
+                      format("a joint moves %.6f rad to the next sample", step));
+            return;  // the bounds below assume small steps
+        }
+        // E_k: bound on |p''| for any point of link k (certified-verification.md).
+        std::vector<double> e(n);
+        double acc = 0.0;
+        for (int k = 0; k < n; ++k) {
+            const double d = b.phi[k] - a.phi[k];
+            acc += robot_.link_lengths[k] * d * d;
+            e[k] = acc;
+        }
+        const bool refinable = sa.phase == Phase::Trace && sb.phase == Phase::Trace &&
+                               sa.primitive == sb.primitive && sb.s - sa.s > 1e-7;
+        bool coarse = false;
+        auto settle = [&](double bound, bool samples_ok) {
+            if (bound >= 0.0) return;
+            if (samples_ok && refinable) {
+                coarse = true;
+            } else if (samples_ok) {
+                violation(Violation::Kind::Clearance, i, -bound, "motion between samples not certified");
+            }
+        };
+
+        // Guarantee 1/2: the EE stays near the path between the samples.
+        double sag = 0.0;
+        const bool same_trace = sa.phase == Phase::Trace && sb.phase == Phase::Trace &&
+                                sa.primitive == sb.primitive;
+        if (same_trace) {
+            const geometry::Primitive& prim = task_.trajectory[sa.primitive];
+            if (prim.kind != geometry::PrimitiveKind::Line)
+                sag = sagitta(prim.radius, (b.target - a.target).norm());
+        }
+        // Across a boundary both targets are the same transition point (up to
+        // the task's join tolerance, which is added).
+        const double gap = same_trace ? sag : (a.target - b.target).norm();
+        const double dev = std::max(a.deviation, b.deviation) + e[n - 1] / 8.0 + gap;
+        cert_.max_deviation = std::max(cert_.max_deviation, dev);
+        settle(opt_.deviation_tolerance - dev, std::max(a.deviation, b.deviation) <= opt_.deviation_tolerance);
+
+        for (int k = 0; k < n; ++k) {
+            const std::vector<Vec2> hull = geometry::convex_hull(
+                {a.joints[k], a.joints[k + 1], b.joints[k], b.joints[k + 1]});
+            for (const task::Obstacle& ob : task_.obstacles) {
+                const double need = ob.radius + diam / 2;
+                const double bound = geometry::point_convex_polygon(ob.center, hull) - e[k] / 8.0 - need;
+                cert_.min_clearance = std::min(cert_.min_clearance, bound);
+                const bool ok = geometry::point_segment(ob.center, a.joints[k], a.joints[k + 1]) >= need &&
+                                geometry::point_segment(ob.center, b.joints[k], b.joints[k + 1]) >= need;
+                settle(bound, ok);
+            }
+            if (k < n - 1) {
+                const double bound =
+                    segment_polygon(a.joints[n], b.joints[n], hull) - (e[n - 1] + e[k]) / 8.0 - diam;
+                cert_.min_self_clearance = std::min(cert_.min_self_clearance, bound);
+                const bool ok = geometry::point_segment(a.joints[n], a.joints[k], a.joints[k + 1]) >= diam &&
+                                geometry::point_segment(b.joints[n], b.joints[k], b.joints[k + 1]) >= diam;
+                settle(bound, ok);
+            }
+        }
+        if (coarse) cert_.coarse_pairs.push_back(i);
+    }
+
+    Certificate finish() {
+        cert_.ok = cert_.violations.empty() && cert_.coarse_pairs.empty();
+        return std::move(cert_);
+    }
+
+    const task::Task& task_;
+    const kinematics::Robot& robot_;
+    const std::vector<Sample>& samples_;
+    VerifyOptions opt_;
+    Certificate cert_;
+    bool structure_ok_ = false;
+    std::vector<Pose> poses_;
+};
+
+}  // namespace
+
+Certificate certify(const task::Task& task, const kinematics::Robot& robot,
+                    const std::vector<control::Sample>& samples, const VerifyOptions& options) {
+    return Checker(task, robot, samples, options).run();
+}
+
+}  // namespace modsynth::verify

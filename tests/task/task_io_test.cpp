@@ -1,0 +1,259 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include <modsynth/task/task_io.h>
+
+using Catch::Matchers::Contains;
+using modsynth::geometry::kPi;
+using modsynth::geometry::PrimitiveKind;
+using modsynth::task::InputError;
+using modsynth::task::Task;
+using nlohmann::json;
+
+namespace {
+
+const std::string kFixtures = std::string(MODSYNTH_SOURCE_DIR) + "/tests/fixtures/";
+
+json read_json(const std::string& path) {
+    std::ifstream in(path);
+    REQUIRE(in);
+    return json::parse(in);
+}
+
+/// The InputError `f` throws; fails the test if it throws nothing.
+template <class F>
+InputError input_error(F&& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e;
+    }
+    FAIL("no InputError thrown");
+    return InputError("", "");
+}
+
+json minimal_doc() {
+    return json::parse(R"({"format": "modsynth-task/1",
+        "trajectory": [{"type": "line", "start": [0.4, 0.1], "end": [0.55, 0.1]}]})");
+}
+
+}  // namespace
+
+TEST_CASE("every invalid fixture is rejected naming its part", "[task]") {
+    const std::string dir = kFixtures + "invalid/";
+    const json expected = read_json(dir + "expected.json");
+    REQUIRE(expected.size() >= 20);
+    for (const auto& [file, want] : expected.items()) {
+        SECTION(file) {
+            const InputError e = input_error([&] { modsynth::task::load_task(dir + file); });
+            CHECK(e.part() == want.at("part").get<std::string>());
+            CHECK_THAT(e.what(), Contains(want.at("message_contains").get<std::string>()));
+            // what() is "PART: problem" so a user sees where to look.
+            CHECK_THAT(e.what(), Catch::Matchers::StartsWith(e.part() + ": "));
+        }
+    }
+}
+
+TEST_CASE("every invalid fixture is listed in expected.json", "[task]") {
+    const std::string dir = kFixtures + "invalid/";
+    const json expected = read_json(dir + "expected.json");
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        if (name == "expected.json") continue;
+        INFO(name);
+        CHECK(expected.contains(name));
+    }
+}
+
+TEST_CASE("absent optional keys take the documented defaults", "[task]") {
+    const Task t = modsynth::task::load_task(kFixtures + "valid/minimal.json");
+    CHECK(t.name == "minimal");  // the file stem when the document has no name
+    REQUIRE(t.trajectory.size() == 1);
+    CHECK(t.trajectory[0].kind == PrimitiveKind::Line);
+    CHECK(t.obstacles.empty());
+    CHECK(t.base_regions.empty());
+    CHECK(t.robot.dof == std::vector<int>{2, 3});
+    CHECK(t.robot.link_diameter == Approx(0.03175));
+    CHECK(t.robot.min_link_length == Approx(0.05));
+    CHECK(t.robot.max_link_length == Approx(1.0));
+    CHECK(modsynth::task::parse_task(minimal_doc()).name.empty());
+}
+
+TEST_CASE("a task with every key parses with the right geometry", "[task]") {
+    const Task t = modsynth::task::load_task(kFixtures + "valid/full.json");
+    CHECK(t.name == "rose");
+    REQUIRE(t.trajectory.size() == 3);
+    const auto& arc = t.trajectory[1];
+    CHECK(arc.kind == PrimitiveKind::Arc);
+    CHECK(arc.radius == Approx(0.05));
+    CHECK(arc.sweep == Approx(kPi));  // ccw half turn on the right-hand side
+    CHECK(arc.start_angle == Approx(-kPi / 2));
+    const auto& circle = t.trajectory[2];
+    CHECK(circle.kind == PrimitiveKind::Circle);
+    CHECK(circle.sweep == Approx(-2 * kPi));
+    CHECK(circle.radius == Approx(0.05));
+    CHECK((circle.end - circle.start).norm() < 1e-12);
+    REQUIRE(t.obstacles.size() == 1);
+    CHECK(t.obstacles[0].radius == Approx(0.05));
+    REQUIRE(t.base_regions.size() == 2);
+    CHECK(t.base_regions[0].contains({0.0, 0.0}));
+    CHECK(t.robot.dof == std::vector<int>{2, 3});  // stored sorted
+    CHECK(t.robot.link_diameter == Approx(0.02));
+    CHECK(t.robot.min_link_length == Approx(0.1));
+    CHECK(t.robot.max_link_length == Approx(0.6));
+}
+
+TEST_CASE("an arc whose start equals its end is a full circle", "[task]") {
+    const Task t = modsynth::task::load_task(kFixtures + "valid/full-circle-arc.json");
+    REQUIRE(t.trajectory.size() == 2);
+    CHECK(t.trajectory[0].sweep == Approx(-2 * kPi));
+    CHECK(t.trajectory[0].radius == Approx(0.1));
+}
+
+TEST_CASE("clockwise arcs sweep negatively by the angle they cover", "[task]") {
+    const Task t = modsynth::task::load_task(kFixtures + "valid/cw-quarter-arc.json");
+    REQUIRE(t.trajectory.size() == 2);
+    CHECK(t.trajectory[0].sweep == Approx(-kPi / 2));
+    CHECK(t.trajectory[1].sweep == Approx(-3 * kPi / 2));
+}
+
+TEST_CASE("unknown keys are ignored for forward compatibility", "[task]") {
+    const Task t = modsynth::task::load_task(kFixtures + "valid/unknown-keys.json");
+    CHECK(t.trajectory.size() == 1);
+    CHECK(t.robot.dof == std::vector<int>{2});
+}
+
+TEST_CASE("to_json round-trips through parse_task", "[task]") {
+    for (const char* file :
+         {"full.json", "full-circle-arc.json", "cw-quarter-arc.json", "minimal.json"}) {
+        SECTION(file) {
+            const Task a = modsynth::task::load_task(kFixtures + "valid/" + file);
+            const json doc = modsynth::task::to_json(a);
+            CHECK(doc.at("format") == "modsynth-task/1");
+            // Through text too, as another tool would read it.
+            const Task b = modsynth::task::parse_task_text(doc.dump());
+            CHECK(b.name == a.name);
+            REQUIRE(b.trajectory.size() == a.trajectory.size());
+            for (std::size_t j = 0; j < a.trajectory.size(); ++j) {
+                const auto& p = a.trajectory[j];
+                const auto& q = b.trajectory[j];
+                CHECK(p.kind == q.kind);
+                CHECK((p.start - q.start).norm() < 1e-12);
+                CHECK((p.end - q.end).norm() < 1e-12);
+                CHECK((p.center - q.center).norm() < 1e-12);
+                CHECK(p.radius == Approx(q.radius));
+                CHECK(p.sweep == Approx(q.sweep));
+            }
+            REQUIRE(b.obstacles.size() == a.obstacles.size());
+            for (std::size_t i = 0; i < a.obstacles.size(); ++i) {
+                CHECK(b.obstacles[i].center == a.obstacles[i].center);
+                CHECK(b.obstacles[i].radius == a.obstacles[i].radius);
+            }
+            REQUIRE(b.base_regions.size() == a.base_regions.size());
+            for (std::size_t i = 0; i < a.base_regions.size(); ++i) {
+                CHECK(b.base_regions[i].min == a.base_regions[i].min);
+                CHECK(b.base_regions[i].max == a.base_regions[i].max);
+            }
+            CHECK(b.robot.dof == a.robot.dof);
+            CHECK(b.robot.link_diameter == a.robot.link_diameter);
+            CHECK(b.robot.min_link_length == a.robot.min_link_length);
+            CHECK(b.robot.max_link_length == a.robot.max_link_length);
+        }
+    }
+}
+
+TEST_CASE("non-finite numbers built in code are rejected", "[task]") {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    SECTION("a point coordinate") {
+        json doc = minimal_doc();
+        doc["trajectory"][0]["end"][1] = nan;
+        const InputError e = input_error([&] { modsynth::task::parse_task(doc); });
+        CHECK(e.part() == "trajectory[0].end");
+        CHECK_THAT(e.what(), Contains("NaN"));
+    }
+    SECTION("an obstacle radius") {
+        json doc = minimal_doc();
+        doc["obstacles"] = json::array({{{"center", {0.0, 0.5}}, {"radius", inf}}});
+        const InputError e = input_error([&] { modsynth::task::parse_task(doc); });
+        CHECK(e.part() == "obstacles[0].radius");
+        CHECK_THAT(e.what(), Contains("finite"));
+    }
+    SECTION("a robot length") {
+        json doc = minimal_doc();
+        doc["robot"] = {{"max_link_length", -inf}};
+        const InputError e = input_error([&] { modsynth::task::parse_task(doc); });
+        CHECK(e.part() == "robot.max_link_length");
+    }
+    SECTION("a circle radius") {
+        json doc = minimal_doc();
+        doc["trajectory"].push_back({{"type", "circle"},
+                                     {"start", {0.55, 0.1}},
+                                     {"center", {0.55, 0.2}},
+                                     {"direction", "ccw"},
+                                     {"radius", nan}});
+        const InputError e = input_error([&] { modsynth::task::parse_task(doc); });
+        CHECK(e.part() == "trajectory[1].radius");
+    }
+}
+
+TEST_CASE("syntax errors name the line and column", "[task]") {
+    SECTION("a missing comma") {
+        const std::string text = "{\n  \"format\": \"modsynth-task/1\"\n  \"trajectory\": []\n}";
+        const InputError e = input_error([&] { modsynth::task::parse_task_text(text); });
+        CHECK_THAT(e.what(), Contains("line 3, column 14"));
+    }
+    SECTION("a bad literal on the first line") {
+        const InputError e = input_error([&] { modsynth::task::parse_task_text("{\"a\": tru}"); });
+        CHECK_THAT(e.what(), Contains("line 1, column"));
+    }
+    SECTION("truncated text") {
+        const InputError e =
+            input_error([&] { modsynth::task::parse_task_text("{\n\"format\": "); });
+        CHECK_THAT(e.what(), Contains("line 2"));
+    }
+    SECTION("empty text") {
+        const InputError e = input_error([&] { modsynth::task::parse_task_text(""); });
+        CHECK_THAT(e.what(), Contains("line 1, column 1"));
+    }
+}
+
+TEST_CASE("a tiny but rejected gap is not printed as zero", "[task]") {
+    json doc = minimal_doc();
+    doc["trajectory"].push_back(
+        {{"type", "line"}, {"start", {0.55, 0.100002}}, {"end", {0.6, 0.1}}});
+    const InputError e = input_error([&] { modsynth::task::parse_task(doc); });
+    CHECK(e.part() == "trajectory[1]");
+    CHECK_THAT(e.what(), Contains("starts 0.000002 m from the end of trajectory[0]"));
+}
+
+TEST_CASE("gaps within the join tolerance are accepted", "[task]") {
+    json doc = minimal_doc();
+    doc["trajectory"].push_back(
+        {{"type", "line"}, {"start", {0.55, 0.1000005}}, {"end", {0.6, 0.1}}});
+    CHECK(modsynth::task::parse_task(doc).trajectory.size() == 2);
+}
+
+TEST_CASE("dof accepts whole numbers written as decimals", "[task]") {
+    json doc = minimal_doc();
+    doc["robot"] = {{"dof", {3.0}}};
+    CHECK(modsynth::task::parse_task(doc).robot.dof == std::vector<int>{3});
+    doc["robot"] = {{"dof", {true}}};
+    CHECK(input_error([&] { modsynth::task::parse_task(doc); }).part() == "robot.dof[0]");
+}
+
+TEST_CASE("an unreadable task file names the path", "[task]") {
+    const std::string path = kFixtures + "valid/does-not-exist.json";
+    const InputError e = input_error([&] { modsynth::task::load_task(path); });
+    CHECK(e.part() == path);
+    CHECK_THAT(e.what(), Contains("cannot open"));
+    const InputError d = input_error([&] { modsynth::task::load_task(kFixtures + "valid"); });
+    CHECK_THAT(d.what(), Contains("folder"));
+}
