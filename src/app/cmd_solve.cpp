@@ -1,0 +1,90 @@
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <modsynth/output/solution_io.h>
+#include <modsynth/synth/synthesizer.h>
+#include <modsynth/task/task_io.h>
+
+#include "command.h"
+
+namespace modsynth::app {
+namespace {
+
+struct SolveArgs {
+    std::string task, output;
+    double time_limit = 60.0;
+    unsigned seed = 0;
+    double ee_speed = 0.05, joint_speed = 1.0;
+    bool quiet = false;
+};
+
+void print_summary(const task::Task& task, const synth::Solution& solution, double seconds,
+                   const synth::SynthesisStats& stats, const std::string& output) {
+    std::printf("%s: %s in %.3f s (front stage %.3f s, refinement %.3f s, verification %.3f s)\n",
+                task.name.c_str(), synth::to_string(solution.status), seconds, stats.front_seconds,
+                stats.refine_seconds, stats.verify_seconds);
+    if (solution.status != synth::Status::Solved) {
+        std::printf("  %s\n", solution.explanation.message.c_str());
+        if (!solution.explanation.core.empty()) {
+            std::printf("  core:");
+            for (const auto& c : solution.explanation.core) std::printf(" %s", c.c_str());
+            std::printf("\n");
+        }
+        return;
+    }
+    const auto& r = solution.robot;
+    std::printf("  robot: %d joints, base (%.4f, %.4f), links", r.dof(), r.base.x(), r.base.y());
+    for (double l : r.link_lengths) std::printf(" %.4f", l);
+    std::printf(" m (total %.4f m), elbow %+d\n", r.total_length(), r.elbow);
+    const auto& c = solution.certificate;
+    std::printf("  certified over the whole motion: clearance margin %.4f m, self-collision margin "
+                "%.4f m, EE deviation <= %.2e m\n",
+                c.min_clearance, c.min_self_clearance, c.max_deviation);
+    std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
+                solution.samples.back().t, output.c_str());
+}
+
+int run_solve(const SolveArgs& a) {
+    const task::Task task = task::load_task(a.task);
+    synth::SynthesisOptions options;
+    options.time_limit = a.time_limit;
+    options.seed = a.seed;
+    options.motion.ee_speed = a.ee_speed;
+    options.motion.joint_speed = a.joint_speed;
+    if (!a.quiet) options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
+    synth::SynthesisStats stats;
+    const auto t0 = std::chrono::steady_clock::now();
+    const synth::Solution solution = synth::synthesize(task, options, &stats);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    output::write_solution(solution, a.output);
+    print_summary(task, solution, seconds, stats, a.output);
+    switch (solution.status) {
+        case synth::Status::Solved: return kOk;
+        case synth::Status::Infeasible: return kInfeasible;
+        case synth::Status::Unknown: return kUnknown;
+    }
+    return kInternal;
+}
+
+}  // namespace
+
+Command add_solve(CLI::App& parent) {
+    auto a = std::make_shared<SolveArgs>();
+    CLI::App* sub = parent.add_subcommand("solve", "Synthesise a robot and its control for a task");
+    sub->add_option("TASK", a->task, "modsynth-task/1 JSON file")->required();
+    sub->add_option("-o,--output", a->output, "where to write the modsynth-solution/1 JSON")->required();
+    sub->add_option("--time-limit", a->time_limit, "seconds for the whole run (default 60)")
+        ->check(CLI::PositiveNumber);
+    sub->add_option("--seed", a->seed, "varies initial guesses; same seed, same output (default 0)");
+    sub->add_option("--ee-speed", a->ee_speed, "end-effector speed along the path, m/s (default 0.05)")
+        ->check(CLI::PositiveNumber);
+    sub->add_option("--joint-speed", a->joint_speed, "joint speed limit, rad/s (default 1)")
+        ->check(CLI::PositiveNumber);
+    sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");
+    return {sub, [a] { return run_solve(*a); }};
+}
+
+}  // namespace modsynth::app

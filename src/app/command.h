@@ -1,0 +1,21 @@
+#pragma once
+// One subcommand of the modsynth CLI: its options live in `app`, `run`
+// executes it and returns the exit code. Exceptions escape to main, the one
+// place that maps them to exit codes.
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace modsynth::app {
+
+enum Exit { kOk = 0, kInternal = 1, kInvalid = 2, kInfeasible = 3, kUnknown = 4 };
+
+struct Command {
+    CLI::App* app = nullptr;
+    std::function<int()> run;
+};
+
+Command add_validate(CLI::App& parent);
+Command add_solve(CLI::App& parent);
+
+}  // namespace modsynth::app
