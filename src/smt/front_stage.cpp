@@ -72,7 +72,11 @@ struct FrontStage::Impl {
         // Core tracking must be on before the first assertion.
         set_timeout(solver, options.time_limit);
         set_timeout(fine, options.refined_time_limit);
-        for (int k = 0; k < dof; ++k) r.push_back(ctx.real_const(("r" + std::to_string(k + 1)).c_str()));
+        for (int k = 0; k < dof; ++k) {
+            std::string name = "r";
+            name += std::to_string(k + 1);  // (GCC 12 warns falsely on "r" + string)
+            r.push_back(ctx.real_const(name.c_str()));
+        }
         encode();
     }
 
@@ -114,10 +118,15 @@ struct FrontStage::Impl {
         return dx * dx + dy * dy;
     }
 
+    // The reach r_1 + ... + r_n as a variable of its own: the reach atoms
+    // then involve three variables (base and reach) instead of dof + 2,
+    // which keeps nlsat's cell decomposition small.
     z3::expr reach() {
         z3::expr sum = r[0];
         for (int k = 1; k < dof; ++k) sum = sum + r[k];
-        return sum;
+        z3::expr R = ctx.real_const("reach");
+        add_both(R == sum);
+        return R;
     }
 
     void encode() {
@@ -160,6 +169,31 @@ struct FrontStage::Impl {
 
         const z3::expr R = reach();
         for (std::size_t j = 0; j < task.trajectory.size(); ++j) encode_primitive(static_cast<int>(j), R);
+        encode_spans(R);
+    }
+
+    // Two points of the path are never farther apart than twice the reach.
+    // Implied by the reach atoms (triangle inequality), so the relaxation is
+    // unchanged, but linear in the reach: without a base region nlsat finds
+    // such conflicts at once instead of decomposing the whole plane.
+    void encode_spans(const z3::expr& R) {
+        const int m = static_cast<int>(task.trajectory.size());
+        std::vector<std::vector<geometry::Vec2>> pts;
+        for (const auto& p : task.trajectory) pts.push_back(sample_points(p, options.samples_per_primitive));
+        for (int j = 0; j < m; ++j) {
+            for (int k = j; k < m; ++k) {
+                double span = 0.0;
+                for (const auto& a : pts[j])
+                    for (const auto& b : pts[k]) span = std::max(span, (a - b).norm());
+                const std::string pj = "trajectory[" + std::to_string(j) + "]";
+                const std::string pk = "trajectory[" + std::to_string(k) + "]";
+                if (j == k) {
+                    require({pj}, 2 * R >= num(span - kSlack));
+                } else {
+                    require({pj, pk}, 2 * R >= num(span - kSlack));
+                }
+            }
+        }
     }
 
     void encode_primitive(int j, const z3::expr& R) {
@@ -176,16 +210,11 @@ struct FrontStage::Impl {
                 require({name, diam}, dv >= num(d2), true);
             }
         }
-        if (dof == 3) {
-            // During a primitive the proximal link is static: the distal pair
-            // reaches the whole primitive from one point, so its reach is at
-            // least half the primitive's diameter.
-            double diameter = 0.0;
-            for (const auto& a : pts)
-                for (const auto& b : pts) diameter = std::max(diameter, (a - b).norm());
-            require({name}, r[1] + r[2] >= num(diameter / 2 - kSlack));
-            return;
-        }
+        // Only necessary conditions for *any* robot of this joint count may
+        // enter: an unsat answer is reported as a proof. (With three joints
+        // modsynth keeps the proximal link still during a primitive, but a
+        // general arm need not, so that restriction stays out of here.)
+        if (dof != 2) return;
         if (p.kind == geometry::PrimitiveKind::Line) {
             // Exact critical point of a line: if the foot of the perpendicular
             // from the base lies inside the segment, it is the closest point.

@@ -1,0 +1,124 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+
+#include <modsynth/smt/front_stage.h>
+#include <modsynth/task/task_io.h>
+
+#include "../support/fixtures.h"
+
+using namespace modsynth;
+using smt::FrontStage;
+
+namespace {
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+    return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+}  // namespace
+
+TEST_CASE("front stage finds a skeleton whose coarse point meets the relaxation", "[smt]") {
+    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    FrontStage fs(t, 2);
+    REQUIRE(fs.check() == FrontStage::Result::Sat);
+    const smt::Skeleton s = fs.skeleton();
+    CHECK(s.dof == 2);
+    REQUIRE(s.base_region == 0);
+    CHECK(t.base_regions[0].contains(s.base, 1e-6));
+    REQUIRE(s.link_lengths.size() == 2);
+    const double reach = s.link_lengths[0] + s.link_lengths[1];
+    for (double r : s.link_lengths) {
+        CHECK(r >= t.robot.min_link_length - 1e-6);
+        CHECK(r <= t.robot.max_link_length + 1e-6);
+    }
+    for (const auto& p : t.trajectory) {
+        // The front stage constrains sampled points: the ends at least.
+        CHECK((p.start - s.base).norm() <= reach + 1e-5);
+        CHECK((p.end - s.base).norm() <= reach + 1e-5);
+    }
+    CHECK(s.primitives.size() == t.trajectory.size());
+}
+
+TEST_CASE("front stage proves an out-of-reach task infeasible with a minimal core", "[smt]") {
+    const std::string dir = testing::source_path("tests/fixtures/planted");
+    int checked = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("ir-", 0) != 0 || name.find(".task.json") == std::string::npos) continue;
+        const std::string stem = entry.path().string().substr(0, entry.path().string().size() - 10);
+        const auto expect = testing::read_json(stem + ".expect.json");
+        const task::Task t = task::load_task(entry.path().string());
+        for (int dof : {2, 3}) {
+            FrontStage fs(t, dof);
+            REQUIRE(fs.check() == FrontStage::Result::Unsat);
+            const auto core = fs.minimal_core();
+            INFO(name << " dof " << dof);
+            CHECK(contains(core, "robot.max_link_length"));
+            bool names_unreachable = false;
+            for (const auto& part : expect["core_should_include_one_of"])
+                names_unreachable = names_unreachable || contains(core, part.get<std::string>());
+            CHECK(names_unreachable);
+            // Minimal: without any one part the rest is satisfiable.
+            for (const auto& drop : core) {
+                task::Task relaxed = t;
+                if (drop == "robot.max_link_length") relaxed.robot.max_link_length = 100.0;
+                if (drop == "base_regions") relaxed.base_regions.clear();
+                if (drop.rfind("trajectory[", 0) == 0) continue;  // cannot delete a primitive
+                FrontStage again(relaxed, dof);
+                CHECK(again.check() != FrontStage::Result::Unsat);
+            }
+        }
+        ++checked;
+    }
+    CHECK(checked >= 3);
+}
+
+TEST_CASE("front stage answers sat on every planted feasible task", "[smt]") {
+    // Soundness: the relaxation only states necessary conditions.
+    const std::string dir = testing::source_path("tests/fixtures/planted");
+    int checked = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("p2-", 0) != 0 || name.find(".task.json") == std::string::npos) continue;
+        FrontStage fs(task::load_task(entry.path().string()), 2);
+        INFO(name);
+        CHECK(fs.check() == FrontStage::Result::Sat);
+        ++checked;
+    }
+    CHECK(checked >= 3);
+}
+
+TEST_CASE("an obstacle covering the whole base region is a conflict of three parts", "[smt]") {
+    task::Task t = testing::line_task();
+    t.obstacles.push_back({{0.0, 0.0}, 0.09});  // covers the region, clear of the line
+    FrontStage fs(t, 2);
+    REQUIRE(fs.check() == FrontStage::Result::Unsat);
+    const auto core = fs.minimal_core();
+    CHECK(contains(core, "obstacles[0]"));
+    CHECK(contains(core, "base_regions"));
+    CHECK_FALSE(contains(core, "trajectory[0]"));
+}
+
+TEST_CASE("blocking every skeleton exhausts the search without claiming infeasibility", "[smt]") {
+    const task::Task t = testing::line_task();
+    FrontStage fs(t, 2);
+    int found = 0;
+    while (fs.check() == FrontStage::Result::Sat) {
+        fs.block(fs.skeleton());
+        ++found;
+        REQUIRE(found <= 4);
+    }
+    CHECK(found == 2);  // one region, two elbow signs
+    CHECK(fs.exhausted_by_blocking());
+}
+
+TEST_CASE("the encoding dumps as SMT-LIB2 with its task-part literals", "[smt]") {
+    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    FrontStage fs(t, 2);
+    const std::string smt2 = fs.smtlib();
+    CHECK(smt2.find("declare-fun") != std::string::npos);
+    CHECK(smt2.find("|trajectory[6]|") != std::string::npos);
+    CHECK(smt2.find("base_regions") != std::string::npos);
+}

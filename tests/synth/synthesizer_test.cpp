@@ -1,0 +1,120 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+
+#include <modsynth/synth/synthesizer.h>
+#include <modsynth/task/task_io.h>
+#include <modsynth/verify/verifier.h>
+
+#include "../support/fixtures.h"
+
+using namespace modsynth;
+
+namespace {
+
+std::vector<std::string> planted(const std::string& prefix) {
+    std::vector<std::string> out;
+    for (const auto& e : std::filesystem::directory_iterator(testing::source_path("tests/fixtures/planted"))) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind(prefix, 0) == 0 && name.find(".task.json") != std::string::npos)
+            out.push_back(e.path().string());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::string stem_of(const std::string& task_path) {
+    return task_path.substr(0, task_path.size() - std::string(".task.json").size());
+}
+
+}  // namespace
+
+TEST_CASE("planted 2-joint tasks are solved and the motion re-certifies", "[synth]") {
+    const auto tasks = planted("p2-");
+    REQUIRE(tasks.size() >= 5);
+    for (const auto& path : tasks) {
+        INFO(path);
+        const task::Task t = task::load_task(path);
+        synth::SynthesisOptions options;
+        options.time_limit = 30.0;
+        const synth::Solution s = synth::synthesize(t, options);
+        REQUIRE(s.status == synth::Status::Solved);
+        CHECK(s.robot.dof() == 2);
+        // An independent pass over the returned samples, as a user would run it.
+        const verify::Certificate again = verify::certify(t, s.robot, s.samples);
+        CHECK(again.ok);
+        CHECK(again.min_clearance >= 0.0);
+        CHECK(again.max_deviation <= 1e-3);
+        CHECK(t.base_regions[0].contains(s.robot.base, 1e-9));
+        // Time is monotone and the control starts at t = 0.
+        CHECK(s.samples.front().t == 0.0);
+        for (std::size_t i = 1; i < s.samples.size(); ++i) REQUIRE(s.samples[i].t >= s.samples[i - 1].t);
+        // Not wildly longer than the planted robot (which need not be the shortest).
+        const auto expect = testing::read_json(stem_of(path) + ".expect.json");
+        CHECK(s.robot.total_length() <= 1.5 * expect["planted_sum_link_lengths"].get<double>());
+    }
+}
+
+TEST_CASE("out-of-reach tasks are proved infeasible with a core naming the unreachable part", "[synth]") {
+    for (const auto& path : planted("ir-")) {
+        INFO(path);
+        const task::Task t = task::load_task(path);
+        const synth::Solution s = synth::synthesize(t, {});
+        REQUIRE(s.status == synth::Status::Infeasible);
+        const auto expect = testing::read_json(stem_of(path) + ".expect.json");
+        const auto& core = s.explanation.core;
+        bool names_one = false;
+        for (const auto& part : expect["core_should_include_one_of"])
+            names_one = names_one || std::find(core.begin(), core.end(), part.get<std::string>()) != core.end();
+        CHECK(names_one);
+        CHECK(std::find(core.begin(), core.end(), "robot.max_link_length") != core.end());
+        CHECK_FALSE(s.explanation.message.empty());
+    }
+}
+
+TEST_CASE("the rose is solved with two joints", "[synth]") {
+    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    const synth::Solution s = synth::synthesize(t, {});
+    REQUIRE(s.status == synth::Status::Solved);
+    CHECK(s.robot.dof() == 2);
+    CHECK(s.certificate.ok);
+    CHECK(s.certificate.min_clearance >= 0.0);
+}
+
+TEST_CASE("same task and seed give the same solution", "[synth]") {
+    const task::Task t = task::load_task(planted("p2-").front());
+    const synth::Solution a = synth::synthesize(t, {});
+    const synth::Solution b = synth::synthesize(t, {});
+    REQUIRE(a.status == synth::Status::Solved);
+    REQUIRE(a.samples.size() == b.samples.size());
+    CHECK(a.robot.base == b.robot.base);
+    CHECK(a.robot.link_lengths == b.robot.link_lengths);
+    for (std::size_t i = 0; i < a.samples.size(); ++i) REQUIRE(a.samples[i].q == b.samples[i].q);
+}
+
+TEST_CASE("the time limit is honoured and a run out of time answers unknown", "[synth]") {
+    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    synth::SynthesisOptions options;
+    options.time_limit = 0.02;
+    const auto t0 = std::chrono::steady_clock::now();
+    const synth::Solution s = synth::synthesize(t, options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    CHECK(seconds < 1.0);
+    if (s.status != synth::Status::Solved) {
+        CHECK(s.status == synth::Status::Unknown);
+        CHECK(s.explanation.message.find("time limit") != std::string::npos);
+    }
+}
+
+TEST_CASE("progress is reported stage by stage", "[synth]") {
+    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    std::vector<std::string> lines;
+    synth::SynthesisOptions options;
+    options.progress = [&](const std::string& l) { lines.push_back(l); };
+    synth::synthesize(t, options);
+    REQUIRE(lines.size() >= 3);
+    CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) { return l.find("skeleton") != std::string::npos; }));
+    CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) { return l.find("certified") != std::string::npos; }));
+}
