@@ -15,6 +15,30 @@ double largest_change(const std::vector<double>& a, const std::vector<double>& b
     return m;
 }
 
+// q for the distal pair from `origin` reaching p, after a proximal angle q1
+// (three joints) or alone (two joints), unwrapped next to `previous`.
+std::optional<std::vector<double>> arm_configuration(const kinematics::Robot& robot,
+                                                     const geometry::Vec2& origin, double q1,
+                                                     const geometry::Vec2& p,
+                                                     const std::vector<double>* previous) {
+    const int n = robot.dof();
+    const auto ik = kinematics::inverse_two_link(origin, robot.link_lengths[n - 2], robot.link_lengths[n - 1],
+                                                 p, robot.elbow);
+    if (!ik) return std::nullopt;
+    std::vector<double> q = n == 2 ? std::vector<double>{ik->phi1, ik->q2}
+                                   : std::vector<double>{q1, ik->phi1 - q1, ik->q2};
+    if (previous) {
+        for (std::size_t k = 0; k < q.size(); ++k) q[k] = kinematics::unwrap_near(q[k], (*previous)[k]);
+    }
+    return q;
+}
+
+std::string transition_name(int j) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "the transition after trajectory[%d]", j);
+    return buf;
+}
+
 std::string point_name(int j, double s) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "trajectory[%d] at %.4f m from its start", j, s);
@@ -28,54 +52,91 @@ std::optional<std::vector<double>> configuration_at(const task::Task& task,
                                                     double s,
                                                     const std::vector<double>* previous) {
     const geometry::Vec2 p = geometry::point_at(task.trajectory[j], s);
-    if (robot.dof() != 2) return std::nullopt;
-    const auto ik = kinematics::inverse_two_link(robot.base, robot.link_lengths[0],
-                                                 robot.link_lengths[1], p, robot.elbow);
-    if (!ik) return std::nullopt;
-    std::vector<double> q{ik->phi1, ik->q2};
-    if (previous) {
-        for (std::size_t k = 0; k < q.size(); ++k) q[k] = kinematics::unwrap_near(q[k], (*previous)[k]);
-    }
-    return q;
+    if (robot.dof() == 2) return arm_configuration(robot, robot.base, 0.0, p, previous);
+    if (robot.dof() != 3 || static_cast<int>(robot.proximal_angles.size()) <= j) return std::nullopt;
+    const double q1 = robot.proximal_angles[j];
+    return arm_configuration(robot, robot.base + robot.link_lengths[0] * geometry::unit(q1), q1, p, previous);
 }
+
+std::optional<std::vector<double>> transition_configuration(const task::Task& task,
+                                                            const kinematics::Robot& robot, int j,
+                                                            double q1,
+                                                            const std::vector<double>* previous) {
+    if (robot.dof() != 3) return std::nullopt;
+    const geometry::Vec2 origin = robot.base + robot.link_lengths[0] * geometry::unit(q1);
+    return arm_configuration(robot, origin, q1, task.trajectory[j].end, previous);
+}
+
+namespace {
+
+// Walks a parameter from `from` to `to`, each step as long as the joints
+// allow, appending a sample per step (the first one excluded).
+template <typename ConfigAt>
+bool walk(double from, double to, double first_step, double max_joint_step, Phase phase, int j,
+          std::vector<Sample>& out, ConfigAt config_at) {
+    const double dir = to >= from ? 1.0 : -1.0;
+    double u = from, du = first_step;
+    while (dir * (to - u) > 1e-12) {
+        du = std::min(2.0 * du, first_step);
+        std::optional<std::vector<double>> next;
+        double candidate = u;
+        for (int attempt = 0; attempt < 60; ++attempt) {
+            candidate = dir * (to - u) <= du ? to : u + dir * du;
+            next = config_at(candidate, &out.back().q);
+            if (!next) break;
+            const double change = largest_change(out.back().q, *next);
+            if (change <= max_joint_step) break;
+            du *= std::max(0.1, 0.9 * max_joint_step / change);
+            next.reset();
+            if (du < 1e-10) break;
+        }
+        if (!next) return false;
+        u = candidate;
+        out.push_back({0.0, phase, j, u, *next});
+    }
+    return true;
+}
+
+}  // namespace
 
 std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                                                const kinematics::Robot& robot,
                                                const MotionOptions& options, std::string* where) {
     std::vector<Sample> out;
-    const std::vector<double>* prev = nullptr;
-    for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
-        const double length = geometry::length(task.trajectory[j]);
+    const int m = static_cast<int>(task.trajectory.size());
+    for (int j = 0; j < m; ++j) {
+        if (j > 0 && robot.dof() == 3) {
+            // The EE holds the transition point while the first joint sweeps
+            // the short way round to its angle for the next primitive.
+            const double from = out.back().q[0];
+            const double to = from + std::remainder(robot.proximal_angles[j] - from, geometry::kTau);
+            const std::size_t before = out.size();
+            const bool ok = walk(from, to, options.max_joint_step, options.max_joint_step, Phase::Transition,
+                                 j - 1, out, [&](double q1, const std::vector<double>* prev) {
+                                     return transition_configuration(task, robot, j - 1, q1, prev);
+                                 });
+            if (!ok) {
+                if (where) *where = transition_name(j - 1);
+                return std::nullopt;
+            }
+            if (out.size() > before) out.pop_back();  // the last pose is the next trace's first
+        }
+        const std::vector<double>* prev = out.empty() ? nullptr : &out.back().q;
         auto q = configuration_at(task, robot, j, 0.0, prev);
         if (!q) {
             if (where) *where = point_name(j, 0.0);
             return std::nullopt;
         }
         out.push_back({0.0, Phase::Trace, j, 0.0, *q});
-        double s = 0.0;
-        double ds = options.max_ee_step;
-        while (s < length) {
-            // Shrink the step until no joint moves more than allowed; grow it
-            // back afterwards so easy stretches are not over-sampled.
-            ds = std::min({options.max_ee_step, 2.0 * ds, length - s});
-            std::optional<std::vector<double>> next;
-            for (int attempt = 0; attempt < 60; ++attempt) {
-                next = configuration_at(task, robot, j, s + ds, &out.back().q);
-                if (!next) break;
-                const double change = largest_change(out.back().q, *next);
-                if (change <= options.max_joint_step) break;
-                ds *= std::max(0.1, 0.9 * options.max_joint_step / change);
-                next.reset();
-                if (ds < 1e-9) break;
-            }
-            if (!next) {
-                if (where) *where = point_name(j, s + ds);
-                return std::nullopt;
-            }
-            s = (length - s - ds <= 1e-12) ? length : s + ds;
-            out.push_back({0.0, Phase::Trace, j, s, *next});
+        const double length = geometry::length(task.trajectory[j]);
+        const bool ok = walk(0.0, length, options.max_ee_step, options.max_joint_step, Phase::Trace, j, out,
+                             [&](double s, const std::vector<double>* p) {
+                                 return configuration_at(task, robot, j, s, p);
+                             });
+        if (!ok) {
+            if (where) *where = point_name(j, out.back().s);
+            return std::nullopt;
         }
-        prev = &out.back().q;
     }
     return out;
 }
@@ -87,13 +148,19 @@ bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
     for (int i : sorted) {
         const Sample& a = samples[i];
         const Sample& b = samples[i + 1];
-        if (a.phase != Phase::Trace || b.phase != Phase::Trace || a.primitive != b.primitive)
-            return false;
-        const double s = 0.5 * (a.s + b.s);
-        auto q = configuration_at(task, robot, a.primitive, s, &a.q);
-        if (!q) return false;
-        Sample mid{a.t, Phase::Trace, a.primitive, s, *q};
-        samples.insert(samples.begin() + i + 1, mid);
+        std::optional<Sample> mid;
+        if (a.phase == Phase::Trace && b.phase == Phase::Trace && a.primitive == b.primitive) {
+            const double s = 0.5 * (a.s + b.s);
+            if (auto q = configuration_at(task, robot, a.primitive, s, &a.q))
+                mid = Sample{a.t, Phase::Trace, a.primitive, s, *q};
+        } else if (robot.dof() == 3 && (a.phase == Phase::Transition || b.phase == Phase::Transition)) {
+            const int j = a.phase == Phase::Transition ? a.primitive : b.primitive;
+            const double q1 = 0.5 * (a.q[0] + b.q[0]);
+            if (auto q = transition_configuration(task, robot, j, q1, &a.q))
+                mid = Sample{a.t, Phase::Transition, j, q1, *q};
+        }
+        if (!mid) return false;
+        samples.insert(samples.begin() + i + 1, *mid);
     }
     return true;
 }

@@ -12,44 +12,64 @@ namespace {
 
 using geometry::Vec2;
 
-std::string at(const PathPoint& p) {
-    return "trajectory[" + std::to_string(p.primitive) + "]@" + std::to_string(p.s);
+// c + sum a_i x_i: a coordinate of a point that is a variable, a constant,
+// or a difference of those.
+struct Affine {
+    double c = 0.0;
+    std::vector<std::pair<int, double>> terms;
+};
+
+Affine operator-(Affine a, const Affine& b) {
+    a.c -= b.c;
+    for (const auto& [i, w] : b.terms) a.terms.push_back({i, -w});
+    return a;
 }
 
-// Elbow position that the start robot would use for target: the IK on the
-// chosen branch, or for an unreachable target the elbow pointing at it.
-Vec2 initial_elbow(const kinematics::Robot& robot, const Vec2& target, int elbow) {
-    const double r1 = robot.link_lengths[0], r2 = robot.link_lengths[1];
-    if (auto ik = kinematics::inverse_two_link(robot.base, r1, r2, target, elbow))
-        return robot.base + r1 * geometry::unit(ik->phi1);
-    const Vec2 d = target - robot.base;
-    const double n = d.norm();
-    const Vec2 dir = n > 1e-12 ? Vec2(d / n) : Vec2(1.0, 0.0);
-    // Bend towards the requested side so the elbow constraint starts close.
-    const Vec2 side = -elbow * geometry::perp(dir);
-    return robot.base + r1 * (0.8 * dir + 0.6 * side).normalized();
+Affine operator+(Affine a, const Affine& b) {
+    a.c += b.c;
+    a.terms.insert(a.terms.end(), b.terms.begin(), b.terms.end());
+    return a;
 }
 
-// Quadratic of n . (a - c) where a = (ax, ay) are variables (or constants
-// when the index is -1, with value a_const) and n = (nx, ny) are variables.
-Quadratic separation(int nx, int ny, int ax, int ay, const Vec2& a_const, const Vec2& c) {
-    Quadratic g;
-    if (ax >= 0) {
-        g.add(nx, ax, 1.0).add(ny, ay, 1.0);
-    } else {
-        g.add(nx, a_const.x()).add(ny, a_const.y());
-    }
-    g.add(nx, -c.x()).add(ny, -c.y());
-    return g;
+// Adds k * a * b to q.
+void add_product(Quadratic& q, const Affine& a, const Affine& b, double k = 1.0) {
+    q.add(k * a.c * b.c);
+    for (const auto& [i, w] : b.terms) q.add(i, k * a.c * w);
+    for (const auto& [i, w] : a.terms) q.add(i, k * b.c * w);
+    for (const auto& [i, wi] : a.terms)
+        for (const auto& [j, wj] : b.terms) q.add(i, j, k * wi * wj);
 }
 
-Quadratic unit_ball(int nx, int ny) {
-    Quadratic g;
-    g.add(nx, nx, 1.0).add(ny, ny, 1.0);
-    return g;
+void add_affine(Quadratic& q, const Affine& a, double k = 1.0) {
+    q.add(k * a.c);
+    for (const auto& [i, w] : a.terms) q.add(i, k * w);
 }
 
-// Unit direction from c towards the nearest point of segment ab.
+// A point of the model with its value in the initial guess.
+struct Point {
+    Affine x, y;
+    Vec2 value;
+};
+
+Point constant(const Vec2& v) { return {{v.x(), {}}, {v.y(), {}}, v}; }
+Point variable(int ix, int iy, const Vec2& v) { return {{0.0, {{ix, 1.0}}}, {0.0, {{iy, 1.0}}}, v}; }
+
+Quadratic squared_distance(const Point& a, const Point& b) {
+    Quadratic q;
+    const Affine dx = a.x - b.x, dy = a.y - b.y;
+    add_product(q, dx, dx);
+    add_product(q, dy, dy);
+    return q;
+}
+
+// cross(e - o, p - o).
+Quadratic cross(const Point& o, const Point& e, const Point& p) {
+    Quadratic q;
+    add_product(q, e.x - o.x, p.y - o.y);
+    add_product(q, e.y - o.y, p.x - o.x, -1.0);
+    return q;
+}
+
 Vec2 away_from(const Vec2& c, const Vec2& a, const Vec2& b) {
     const double t = geometry::segment_parameter(c, a, b);
     const Vec2 d = a + t * (b - a) - c;
@@ -57,131 +77,239 @@ Vec2 away_from(const Vec2& c, const Vec2& a, const Vec2& b) {
     return n > 1e-12 ? Vec2(d / n) : Vec2(1.0, 0.0);
 }
 
-}  // namespace
+std::string part(const char* what, int i) { return std::string(what) + "[" + std::to_string(i) + "]"; }
 
-Formulation formulate_two_link(const TwoLinkProblem& problem) {
-    const task::Task& task = *problem.task;
-    const kinematics::Robot& start = problem.start;
-    Formulation f;
-    f.elbow = problem.skeleton.elbow;
-    f.link_diameter = task.robot.link_diameter;
-    QuadraticProgram& qp = f.program;
+class Builder {
+public:
+    Builder(const ArmProblem& problem, Formulation& f)
+        : p_(problem), t_(*problem.task), f_(f), qp_(f.program) {}
 
-    double bx_lo = -kInfinity, bx_hi = kInfinity, by_lo = -kInfinity, by_hi = kInfinity;
-    if (problem.skeleton.base_region >= 0) {
-        const task::BaseRegion& r = task.base_regions[problem.skeleton.base_region];
-        bx_lo = r.min.x(), bx_hi = r.max.x(), by_lo = r.min.y(), by_hi = r.max.y();
+    void build() {
+        const kinematics::Robot& start = p_.start;
+        f_.dof = p_.skeleton.dof;
+        f_.elbow = p_.skeleton.elbow;
+        f_.link_diameter = t_.robot.link_diameter;
+
+        double bx_lo = -kInfinity, bx_hi = kInfinity, by_lo = -kInfinity, by_hi = kInfinity;
+        if (p_.skeleton.base_region >= 0) {
+            const task::BaseRegion& r = t_.base_regions[p_.skeleton.base_region];
+            bx_lo = r.min.x(), bx_hi = r.max.x(), by_lo = r.min.y(), by_hi = r.max.y();
+        }
+        f_.base_x = qp_.add_variable(bx_lo, bx_hi, start.base.x(), "base.x");
+        f_.base_y = qp_.add_variable(by_lo, by_hi, start.base.y(), "base.y");
+        base_ = variable(f_.base_x, f_.base_y, start.base);
+        Quadratic objective;
+        for (int k = 0; k < f_.dof; ++k) {
+            f_.r.push_back(qp_.add_variable(t_.robot.min_link_length, t_.robot.max_link_length,
+                                            start.link_lengths[k], "r" + std::to_string(k + 1)));
+            objective.add(f_.r.back(), 1.0);
+        }
+        qp_.set_objective(objective);
+
+        if (f_.dof == 3) add_proximal_poses();
+        for (const PathPoint& pt : p_.points) add_trace_point(pt);
+        if (f_.dof == 3) {
+            for (int j = 0; j + 1 < static_cast<int>(t_.trajectory.size()); ++j) add_transition(j);
+        }
+        if (p_.swept == SweptVolume::Over && f_.dof == 2) add_swept_over();
+        qp_.finalize();
     }
-    f.base_x = qp.add_variable(bx_lo, bx_hi, start.base.x(), "base.x");
-    f.base_y = qp.add_variable(by_lo, by_hi, start.base.y(), "base.y");
-    const double lo = task.robot.min_link_length, hi = task.robot.max_link_length;
-    f.r1 = qp.add_variable(lo, hi, start.link_lengths[0], "r1");
-    f.r2 = qp.add_variable(lo, hi, start.link_lengths[1], "r2");
-    qp.set_objective(Quadratic{}.add(f.r1, 1.0).add(f.r2, 1.0));
 
-    const int sigma = f.elbow;
-    const double k_self = task.robot.link_diameter + problem.margins.self;
-    const double half = task.robot.link_diameter / 2.0 + problem.margins.clearance;
-    const int bx = f.base_x, by = f.base_y;
+private:
+    // The point the distal pair turns about while primitive j is traced.
+    const Point& origin(int j) const { return f_.dof == 2 ? base_ : proximal_[j]; }
 
-    for (const PathPoint& pt : problem.points) {
-        const Vec2 p = geometry::point_at(task.trajectory[pt.primitive], pt.s);
-        const Vec2 e0 = initial_elbow(start, p, sigma);
-        const std::string where = at(pt);
-        const int ex = qp.add_variable(-kInfinity, kInfinity, e0.x(), "elbow.x " + where);
-        const int ey = qp.add_variable(-kInfinity, kInfinity, e0.y(), "elbow.y " + where);
+    double need_for(const task::Obstacle& ob) const {
+        return ob.radius + t_.robot.link_diameter / 2.0 + p_.margins.clearance;
+    }
 
-        // eq. (11): |e - b| = r1 and |p - e| = r2.
-        Quadratic link1;
-        link1.add(ex, ex, 1.0).add(ey, ey, 1.0).add(bx, bx, 1.0).add(by, by, 1.0);
-        link1.add(ex, bx, -2.0).add(ey, by, -2.0).add(f.r1, f.r1, -1.0);
-        qp.add_constraint(link1, 0.0, 0.0, "link 1 length " + where);
-        Quadratic link2;
-        link2.add(ex, ex, 1.0).add(ey, ey, 1.0).add(ex, -2.0 * p.x()).add(ey, -2.0 * p.y());
-        link2.add(p.squaredNorm()).add(f.r2, f.r2, -1.0);
-        qp.add_constraint(link2, 0.0, 0.0, "link 2 length " + where);
+    Point new_point(const std::string& name, const Vec2& v) {
+        const int ix = qp_.add_variable(-kInfinity, kInfinity, v.x(), name + ".x");
+        const int iy = qp_.add_variable(-kInfinity, kInfinity, v.y(), name + ".y");
+        return variable(ix, iy, v);
+    }
 
-        // eqs. (5) and (8) in one: sigma * cross(e - b, p - b) >= k * r1.
-        // The cross product is r1 * (height of p above link 1), so this
-        // keeps the elbow on its branch, away from the singular straight and
-        // folded poses, and the EE at least k from the line of link 1 (a
-        // bound on its distance from the link segment).
+    // |a - b| = r (eq. 11).
+    void link(const Point& a, const Point& b, int r, const std::string& tag) {
+        Quadratic q = squared_distance(a, b);
+        q.add(r, r, -1.0);
+        qp_.add_constraint(q, 0.0, 0.0, "link length " + tag);
+    }
+
+    // Some unit n with n . (a - c) >= need and n . (b - c) >= need keeps the
+    // segment ab at least `need` from c (the line through c along n's normal
+    // separates them).
+    void keep_apart(const Point& a, const Point& b, const Point& c, double need, const std::string& tag) {
+        if (geometry::point_segment(c.value, a.value, b.value) - need > p_.horizon) return;
+        const Vec2 n0 = away_from(c.value, a.value, b.value);
+        const int nx = qp_.add_variable(-1.0, 1.0, n0.x(), "normal.x " + tag);
+        const int ny = qp_.add_variable(-1.0, 1.0, n0.y(), "normal.y " + tag);
+        const Point n = variable(nx, ny, n0);
+        for (const Point* end : {&a, &b}) {
+            Quadratic q;
+            add_product(q, n.x, end->x - c.x);
+            add_product(q, n.y, end->y - c.y);
+            qp_.add_constraint(q, need, kInfinity, "clearance " + tag);
+        }
+        qp_.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0, "unit " + tag);
+    }
+
+    void keep_links_from_obstacles(const Point& a, const Point& b, int link, const std::string& where) {
+        for (int o = 0; o < static_cast<int>(t_.obstacles.size()); ++o)
+            keep_apart(a, b, constant(t_.obstacles[o].center), need_for(t_.obstacles[o]),
+                       part("obstacles", o) + " link " + std::to_string(link) + " " + where);
+    }
+
+    // The distal pair from `o` with its EE at p: elbow variable, both link
+    // lengths, the elbow side, and clearance of both distal links.
+    void distal_pair(const Point& o, const Vec2& p, const std::string& where) {
+        const int r_a = f_.r[f_.dof - 2], r_b = f_.r[f_.dof - 1];
+        const double a0 = p_.start.link_lengths[f_.dof - 2], b0 = p_.start.link_lengths[f_.dof - 1];
+        Vec2 e0;
+        if (auto ik = kinematics::inverse_two_link(o.value, a0, b0, p, f_.elbow)) {
+            e0 = o.value + a0 * geometry::unit(ik->phi1);
+        } else {
+            const Vec2 d = p - o.value;
+            const Vec2 dir = d.norm() > 1e-12 ? Vec2(d.normalized()) : Vec2(1.0, 0.0);
+            e0 = o.value + a0 * (0.8 * dir - 0.6 * f_.elbow * geometry::perp(dir)).normalized();
+        }
+        const Point e = new_point("elbow " + where, e0);
+        const Point target = constant(p);
+        link(o, e, r_a, "distal 1 " + where);
+        link(e, target, r_b, "distal 2 " + where);
+        // eqs. (5) and (8) in one: sigma * cross(e - o, p - o) >= k * r_a.
+        // The cross product is r_a times the height of p above the line of
+        // the first distal link: this keeps the elbow on its branch, away
+        // from the singular straight and folded poses, and the EE at least k
+        // from that link (a lower bound on its distance from the segment).
         Quadratic side;
-        side.add(ex, sigma * p.y()).add(ey, -sigma * p.x());
-        side.add(bx, -sigma * p.y()).add(by, sigma * p.x());
-        side.add(ex, by, -sigma).add(ey, bx, sigma);
-        side.add(f.r1, -k_self);
-        qp.add_constraint(side, 0.0, kInfinity, "elbow side " + where);
-
-        if (problem.swept != SweptVolume::Sampled) continue;
-        for (std::size_t o = 0; o < task.obstacles.size(); ++o) {
-            const task::Obstacle& ob = task.obstacles[o];
-            const double need = ob.radius + half;
-            struct Link {
-                int ax, ay, bx, by;
-                Vec2 a0, b0, a_const, b_const;
-            };
-            const Link links[2] = {
-                {bx, by, ex, ey, start.base, e0, Vec2::Zero(), Vec2::Zero()},
-                {ex, ey, -1, -1, e0, p, Vec2::Zero(), p},
-            };
-            for (int k = 0; k < 2; ++k) {
-                const Link& l = links[k];
-                if (geometry::point_segment(ob.center, l.a0, l.b0) - need > problem.obstacle_horizon)
-                    continue;
-                const Vec2 n0 = away_from(ob.center, l.a0, l.b0);
-                const std::string tag = "obstacles[" + std::to_string(o) + "] link " +
-                                        std::to_string(k + 1) + " " + where;
-                const int nx = qp.add_variable(-1.0, 1.0, n0.x(), "normal.x " + tag);
-                const int ny = qp.add_variable(-1.0, 1.0, n0.y(), "normal.y " + tag);
-                qp.add_constraint(separation(nx, ny, l.ax, l.ay, l.a_const, ob.center), need,
-                                  kInfinity, "clearance " + tag);
-                qp.add_constraint(separation(nx, ny, l.bx, l.by, l.b_const, ob.center), need,
-                                  kInfinity, "clearance " + tag);
-                qp.add_constraint(unit_ball(nx, ny), -kInfinity, 1.0, "unit normal " + tag);
-            }
+        const Quadratic c = cross(o, e, target);
+        for (const auto& [i, w] : c.linear) side.add(i, f_.elbow * w);
+        for (const auto& q : c.quadratic) side.add(q.i, q.j, f_.elbow * q.w);
+        side.add(f_.elbow * c.constant);
+        side.add(r_a, -(t_.robot.link_diameter + p_.margins.self));
+        qp_.add_constraint(side, 0.0, kInfinity, "elbow side " + where);
+        keep_links_from_obstacles(o, e, f_.dof - 1, where);
+        keep_links_from_obstacles(e, target, f_.dof, where);
+        if (f_.dof == 3) {
+            // eq. (9): the EE keeps a diameter away from the proximal link.
+            keep_apart(base_, o, target, t_.robot.link_diameter + p_.margins.self, "EE to link 1 " + where);
         }
     }
 
-    if (problem.swept == SweptVolume::Over) {
-        // conv(disc(b, r1) and primitive j) holds the whole arm during j.
-        for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
-            const geometry::Primitive& prim = task.trajectory[j];
-            for (std::size_t o = 0; o < task.obstacles.size(); ++o) {
-                const task::Obstacle& ob = task.obstacles[o];
-                const double need = ob.radius + half;
-                const std::string tag =
-                    "obstacles[" + std::to_string(o) + "] trajectory[" + std::to_string(j) + "]";
+    void add_trace_point(const PathPoint& pt) {
+        const Vec2 p = geometry::point_at(t_.trajectory[pt.primitive], pt.s);
+        distal_pair(origin(pt.primitive), p, part("trajectory", pt.primitive) + "@" + std::to_string(pt.s));
+    }
+
+    void add_proximal_poses() {
+        const double r1 = p_.start.link_lengths[0];
+        for (int j = 0; j < static_cast<int>(t_.trajectory.size()); ++j) {
+            const double angle = p_.start.proximal_angles.at(j);
+            proximal_.push_back(new_point("proximal " + part("trajectory", j), p_.start.base + r1 * geometry::unit(angle)));
+            f_.proximal.push_back({proximal_.back().x.terms[0].first, proximal_.back().y.terms[0].first});
+            link(base_, proximal_.back(), f_.r[0], "proximal " + part("trajectory", j));
+            keep_links_from_obstacles(base_, proximal_.back(), 1, part("trajectory", j));
+        }
+    }
+
+    // Proximal poses inside the transition after primitive j, by repeated
+    // bisection of the swept angle: t - b = lambda (a - b + c - b) with
+    // |t - b| = r1 puts t on the bisector of a and c (for sweeps under pi),
+    // and keeps every constraint bilinear.
+    void add_transition(int j) {
+        const Vec2 p = t_.trajectory[j].end;
+        const double r1 = p_.start.link_lengths[0];
+        const double a0 = p_.start.proximal_angles[j];
+        const double c0 = a0 + std::remainder(p_.start.proximal_angles[j + 1] - a0, geometry::kTau);
+        bisect(proximal_[j], a0, proximal_[j + 1], c0, p_.transition_depth, p, r1, j);
+    }
+
+    void bisect(const Point& a, double angle_a, const Point& c, double angle_c, int depth, const Vec2& p,
+                double r1, int j) {
+        if (depth <= 0) return;
+        const double mid = 0.5 * (angle_a + angle_c);
+        const Vec2 t0 = p_.start.base + r1 * geometry::unit(mid);
+        const std::string where = "transition after " + part("trajectory", j) + " at " + std::to_string(mid);
+        const Point t = new_point("proximal " + where, t0);
+        const Affine sum = (a.x - base_.x) + (c.x - base_.x);
+        const Affine sum_y = (a.y - base_.y) + (c.y - base_.y);
+        const double len0 = ((a.value - p_.start.base) + (c.value - p_.start.base)).norm();
+        const int lambda = qp_.add_variable(0.0, 1e3, len0 > 1e-9 ? r1 / len0 : 1.0, "lambda " + where);
+        const Affine lam{0.0, {{lambda, 1.0}}};
+        for (const auto& [coord, s] : {std::pair{&t.x, &sum}, std::pair{&t.y, &sum_y}}) {
+            Quadratic q;
+            add_affine(q, *coord - (coord == &t.x ? base_.x : base_.y));
+            add_product(q, lam, *s, -1.0);
+            qp_.add_constraint(q, 0.0, 0.0, "bisector " + where);
+        }
+        link(base_, t, f_.r[0], "proximal " + where);
+        keep_links_from_obstacles(base_, t, 1, where);
+        distal_pair(t, p, where);
+        bisect(a, angle_a, t, mid, depth - 1, p, r1, j);
+        bisect(t, mid, c, angle_c, depth - 1, p, r1, j);
+    }
+
+    // SV^over: conv(disc(b, r1) and primitive j) holds the whole 2-link arm
+    // during j.
+    void add_swept_over() {
+        for (int j = 0; j < static_cast<int>(t_.trajectory.size()); ++j) {
+            const geometry::Primitive& prim = t_.trajectory[j];
+            for (int o = 0; o < static_cast<int>(t_.obstacles.size()); ++o) {
+                const task::Obstacle& ob = t_.obstacles[o];
+                const double need = need_for(ob);
+                const std::string tag = part("obstacles", o) + " " + part("trajectory", j);
                 const Vec2 mid = geometry::point_at(prim, geometry::length(prim) / 2);
-                const Vec2 n0 = away_from(ob.center, start.base, mid);
-                const int nx = qp.add_variable(-1.0, 1.0, n0.x(), "sv normal.x " + tag);
-                const int ny = qp.add_variable(-1.0, 1.0, n0.y(), "sv normal.y " + tag);
-                qp.add_constraint(separation(nx, ny, bx, by, Vec2::Zero(), ob.center).add(f.r1, -1.0),
-                                  need, kInfinity, "SV disc " + tag);
+                const Vec2 n0 = away_from(ob.center, p_.start.base, mid);
+                const int nx = qp_.add_variable(-1.0, 1.0, n0.x(), "sv normal.x " + tag);
+                const int ny = qp_.add_variable(-1.0, 1.0, n0.y(), "sv normal.y " + tag);
+                const Point n = variable(nx, ny, n0);
+                const Point c = constant(ob.center);
+                auto support = [&](const Point& v) {
+                    Quadratic q;
+                    add_product(q, n.x, v.x - c.x);
+                    add_product(q, n.y, v.y - c.y);
+                    return q;
+                };
+                qp_.add_constraint(support(base_).add(f_.r[0], -1.0), need, kInfinity, "SV disc " + tag);
                 if (prim.kind == geometry::PrimitiveKind::Line) {
                     for (const Vec2& v : {prim.start, prim.end})
-                        qp.add_constraint(separation(nx, ny, -1, -1, v, ob.center), need, kInfinity,
-                                          "SV primitive " + tag);
+                        qp_.add_constraint(support(constant(v)), need, kInfinity, "SV primitive " + tag);
                 } else {
                     // The arc lies in its circle's disc: a sound, simpler bound.
-                    qp.add_constraint(
-                        separation(nx, ny, -1, -1, prim.center, ob.center).add(-prim.radius), need,
-                        kInfinity, "SV primitive " + tag);
+                    qp_.add_constraint(support(constant(prim.center)).add(-prim.radius), need, kInfinity,
+                                       "SV primitive " + tag);
                 }
-                qp.add_constraint(unit_ball(nx, ny), -kInfinity, 1.0, "SV unit normal " + tag);
+                qp_.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0,
+                                   "SV unit " + tag);
             }
         }
     }
-    qp.finalize();
+
+    const ArmProblem& p_;
+    const task::Task& t_;
+    Formulation& f_;
+    QuadraticProgram& qp_;
+    Point base_;
+    std::vector<Point> proximal_;
+};
+
+}  // namespace
+
+Formulation formulate(const ArmProblem& problem) {
+    Formulation f;
+    Builder(problem, f).build();
     return f;
 }
 
 kinematics::Robot robot_from(const Formulation& f, const std::vector<double>& x) {
     kinematics::Robot robot;
     robot.base = Vec2(x[f.base_x], x[f.base_y]);
-    robot.link_lengths = {x[f.r1], x[f.r2]};
+    for (int r : f.r) robot.link_lengths.push_back(x[r]);
     robot.link_diameter = f.link_diameter;
     robot.elbow = f.elbow;
+    for (const auto& [ix, iy] : f.proximal)
+        robot.proximal_angles.push_back(std::atan2(x[iy] - robot.base.y(), x[ix] - robot.base.x()));
     return robot;
 }
 

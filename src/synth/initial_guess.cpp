@@ -23,33 +23,91 @@ std::vector<Vec2> path_points(const task::Task& task, double spacing) {
     return pts;
 }
 
-double margin_at(const task::Task& task, const kinematics::Robot& robot, const std::vector<Vec2>& pts) {
-    const double r1 = robot.link_lengths[0], r2 = robot.link_lengths[1];
+// Worst margin of the distal pair (lengths a, c) turning about `origin`
+// with the EE at p: reach, the refinement's smooth self-collision bound
+// (height of p above the line of the first distal link) and obstacle
+// clearance of both distal links; with three joints also the static link 1
+// (base to origin) against the obstacles and the EE.
+double pose_margin(const task::Task& task, const Vec2& base, const Vec2& origin, double a, double c,
+                   int elbow, bool proximal, const Vec2& p) {
     const double diam = task.robot.link_diameter;
-    double worst = std::numeric_limits<double>::infinity();
-    for (const Vec2& p : pts) {
-        const double d = (p - robot.base).norm();
-        const double reach = std::min(r1 + r2 - d, d - std::abs(r1 - r2));
-        if (reach <= 0.0) {
-            worst = std::min(worst, reach);
-            continue;
-        }
-        const auto ik = kinematics::inverse_two_link(robot.base, r1, r2, p, robot.elbow);
-        if (!ik) {
-            worst = std::min(worst, 0.0);
-            continue;
-        }
-        const Vec2 e = robot.base + r1 * geometry::unit(ik->phi1);
-        // The smooth self-collision bound the refinement uses: height of p
-        // above the line of link 1.
-        worst = std::min(worst, std::abs(geometry::cross(e - robot.base, p - robot.base)) / r1 - diam);
-        for (const auto& ob : task.obstacles) {
-            const double need = ob.radius + diam / 2;
-            worst = std::min({worst, geometry::point_segment(ob.center, robot.base, e) - need,
-                              geometry::point_segment(ob.center, e, p) - need});
-        }
+    const double d = (p - origin).norm();
+    const double reach = std::min(a + c - d, d - std::abs(a - c));
+    if (reach <= 0.0) return reach;
+    const auto ik = kinematics::inverse_two_link(origin, a, c, p, elbow);
+    if (!ik) return 0.0;
+    const Vec2 e = origin + a * geometry::unit(ik->phi1);
+    double worst = std::abs(geometry::cross(e - origin, p - origin)) / a - diam;
+    if (proximal) worst = std::min(worst, geometry::point_segment(p, base, origin) - diam);
+    for (const auto& ob : task.obstacles) {
+        const double need = ob.radius + diam / 2;
+        worst = std::min({worst, geometry::point_segment(ob.center, origin, e) - need,
+                          geometry::point_segment(ob.center, e, p) - need});
+        if (proximal) worst = std::min(worst, geometry::point_segment(ob.center, base, origin) - need);
     }
     return worst;
+}
+
+double margin_at(const task::Task& task, const kinematics::Robot& robot, const std::vector<Vec2>& pts) {
+    double worst = std::numeric_limits<double>::infinity();
+    for (const Vec2& p : pts)
+        worst = std::min(worst, pose_margin(task, robot.base, robot.base, robot.link_lengths[0],
+                                            robot.link_lengths[1], robot.elbow, false, p));
+    return worst;
+}
+
+// Three joints: chooses the proximal angle of each primitive (from `angles`
+// candidates) to maximise the worst margin over the traces and the sweeps
+// between them (a Viterbi pass). Returns the margin; fills proximal_angles.
+double choose_proximal_angles(const task::Task& task, kinematics::Robot& robot,
+                              const std::vector<std::vector<Vec2>>& per_primitive, int angles) {
+    const int m = static_cast<int>(task.trajectory.size());
+    const double r1 = robot.link_lengths[0], a = robot.link_lengths[1], c = robot.link_lengths[2];
+    constexpr double kNone = -std::numeric_limits<double>::infinity();
+    auto theta = [&](int k) { return geometry::kTau * k / angles; };
+    auto origin = [&](double q1) { return Vec2(robot.base + r1 * geometry::unit(q1)); };
+    std::vector<std::vector<double>> trace(m, std::vector<double>(angles, kNone));
+    for (int j = 0; j < m; ++j) {
+        for (int k = 0; k < angles; ++k) {
+            double w = std::numeric_limits<double>::infinity();
+            for (const Vec2& p : per_primitive[j]) {
+                w = std::min(w, pose_margin(task, robot.base, origin(theta(k)), a, c, robot.elbow, true, p));
+                if (w < -0.05) break;  // hopeless: stop early
+            }
+            trace[j][k] = w;
+        }
+    }
+    auto sweep = [&](int j, int ka, int kb) {
+        const double from = theta(ka), delta = std::remainder(theta(kb) - from, geometry::kTau);
+        const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(delta) / 0.2)));
+        double w = std::numeric_limits<double>::infinity();
+        for (int i = 1; i < steps; ++i)
+            w = std::min(w, pose_margin(task, robot.base, origin(from + delta * i / steps), a, c, robot.elbow,
+                                        true, task.trajectory[j].end));
+        return w;
+    };
+    std::vector<std::vector<double>> best(m, std::vector<double>(angles, kNone));
+    std::vector<std::vector<int>> from(m, std::vector<int>(angles, -1));
+    best[0] = trace[0];
+    for (int j = 1; j < m; ++j) {
+        for (int kb = 0; kb < angles; ++kb) {
+            if (trace[j][kb] < -0.05) continue;
+            for (int ka = 0; ka < angles; ++ka) {
+                const double bound = std::min(best[j - 1][ka], trace[j][kb]);
+                if (bound <= best[j][kb]) continue;
+                const double v = std::min(bound, sweep(j - 1, ka, kb));
+                if (v > best[j][kb]) best[j][kb] = v, from[j][kb] = ka;
+            }
+        }
+    }
+    int k = static_cast<int>(std::max_element(best[m - 1].begin(), best[m - 1].end()) - best[m - 1].begin());
+    const double margin = best[m - 1][k];
+    robot.proximal_angles.assign(m, 0.0);
+    for (int j = m - 1; j >= 0; --j) {
+        robot.proximal_angles[j] = theta(std::max(k, 0));
+        if (j > 0) k = from[j][std::max(k, 0)];
+    }
+    return margin;
 }
 
 }  // namespace
@@ -58,21 +116,102 @@ double path_margin(const task::Task& task, const kinematics::Robot& robot, doubl
     return margin_at(task, robot, path_points(task, spacing));
 }
 
+namespace {
+
+Vec2 uniform_in(std::mt19937& rng, const Vec2& lo, const Vec2& hi) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    return {lo.x() + u(rng) * (hi.x() - lo.x()), lo.y() + u(rng) * (hi.y() - lo.y())};
+}
+
+void search_region(const task::Task& task, const smt::Skeleton& skeleton, const std::vector<Vec2>& pts,
+                   Vec2& lo, Vec2& hi) {
+    if (skeleton.base_region >= 0) {
+        lo = task.base_regions[skeleton.base_region].min;
+        hi = task.base_regions[skeleton.base_region].max;
+        return;
+    }
+    // No region: around the path, as far as the longest arm reaches.
+    lo = hi = pts.front();
+    for (const Vec2& p : pts) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const double reach = skeleton.dof * task.robot.max_link_length;
+    lo -= Vec2::Constant(reach);
+    hi += Vec2::Constant(reach);
+}
+
+bool sort_and_keep_distinct(std::vector<ScoredRobot>& all, int count) {
+    std::stable_sort(all.begin(), all.end(), [](const ScoredRobot& a, const ScoredRobot& b) {
+        const bool ca = a.margin >= 0.0, cb = b.margin >= 0.0;
+        if (ca != cb) return ca;
+        if (ca) return a.robot.total_length() < b.robot.total_length();
+        return a.margin > b.margin;
+    });
+    // A second start near the first adds little.
+    std::vector<ScoredRobot> out;
+    for (const auto& c : all) {
+        const bool distinct = std::none_of(out.begin(), out.end(), [&](const ScoredRobot& o) {
+            if ((o.robot.base - c.robot.base).norm() >= 0.02) return false;
+            for (std::size_t k = 0; k < c.robot.link_lengths.size(); ++k)
+                if (std::abs(o.robot.link_lengths[k] - c.robot.link_lengths[k]) >= 0.02) return false;
+            return true;
+        });
+        if (distinct) out.push_back(c);
+        if (static_cast<int>(out.size()) >= count) break;
+    }
+    all = std::move(out);
+    return !all.empty();
+}
+
+std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::Skeleton& skeleton, int count,
+                                            unsigned seed) {
+    const auto pts = path_points(task, 0.02);
+    std::vector<std::vector<Vec2>> per_primitive;
+    double span = 0.0;
+    for (const auto& prim : task.trajectory) {
+        const double len = geometry::length(prim);
+        const int n = std::max(4, static_cast<int>(std::ceil(len / 0.03)));
+        per_primitive.emplace_back();
+        for (int i = 0; i <= n; ++i) per_primitive.back().push_back(geometry::point_at(prim, len * i / n));
+        for (const Vec2& a : per_primitive.back())
+            for (const Vec2& b : per_primitive.back()) span = std::max(span, (a - b).norm());
+    }
+    Vec2 lo, hi;
+    search_region(task, skeleton, pts, lo, hi);
+    const double lmin = task.robot.min_link_length, lmax = task.robot.max_link_length;
+    std::mt19937 rng(seed * 7919u + static_cast<unsigned>(skeleton.elbow + 2) * 131u +
+                     static_cast<unsigned>(skeleton.base_region + 1));
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<ScoredRobot> all;
+    constexpr int kCandidates = 120;
+    for (int i = 0; i < kCandidates; ++i) {
+        kinematics::Robot robot;
+        robot.base = uniform_in(rng, lo, hi);
+        robot.link_diameter = task.robot.link_diameter;
+        robot.elbow = skeleton.elbow;
+        double far = 0.0;
+        for (const Vec2& p : pts) far = std::max(far, (p - robot.base).norm());
+        // The distal pair must cover each primitive from one point; the whole
+        // arm must reach the farthest point.
+        const double distal = std::max(span / 2.0 * (1.1 + 0.6 * u(rng)), 0.6 * far * u(rng)) + 0.02;
+        const double a = std::clamp(distal * (0.35 + 0.3 * u(rng)), lmin, lmax);
+        const double c = std::clamp(distal - a, lmin, lmax);
+        const double r1 = std::clamp((far - (a + c) * (0.5 + 0.4 * u(rng))) , lmin, lmax);
+        robot.link_lengths = {r1, a, c};
+        const double margin = choose_proximal_angles(task, robot, per_primitive, 16);
+        all.push_back({robot, margin});
+    }
+    sort_and_keep_distinct(all, count);
+    return all;
+}
+
+}  // namespace
+
 std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skeleton& skeleton,
                                          int count, unsigned seed) {
+    if (skeleton.dof == 3) return three_link_guesses(task, skeleton, count, seed);
     const auto pts = path_points(task, 0.02);
     const double lo = task.robot.min_link_length, hi = task.robot.max_link_length;
     Vec2 bmin, bmax;
-    if (skeleton.base_region >= 0) {
-        bmin = task.base_regions[skeleton.base_region].min;
-        bmax = task.base_regions[skeleton.base_region].max;
-    } else {
-        // No region: around the path, as far as the longest arm reaches.
-        bmin = bmax = pts.front();
-        for (const Vec2& p : pts) bmin = bmin.cwiseMin(p), bmax = bmax.cwiseMax(p);
-        bmin -= Vec2::Constant(hi);
-        bmax += Vec2::Constant(hi);
-    }
+    search_region(task, skeleton, pts, bmin, bmax);
     std::mt19937 rng(seed * 7919u + static_cast<unsigned>(skeleton.elbow + 2) * 31u +
                      static_cast<unsigned>(skeleton.base_region + 1));
     std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -104,24 +243,8 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
         const double diff = (2.0 * u(rng) - 1.0) * std::max(0.0, near - 0.01);
         consider(base, 0.5 * (sum + diff), 0.5 * (sum - diff));
     }
-    std::stable_sort(all.begin(), all.end(), [](const ScoredRobot& a, const ScoredRobot& b) {
-        const bool ca = a.margin >= 0.0, cb = b.margin >= 0.0;
-        if (ca != cb) return ca;
-        if (ca) return a.robot.total_length() < b.robot.total_length();
-        return a.margin > b.margin;
-    });
-    // Keep candidates that differ: a second start near the first adds little.
-    std::vector<ScoredRobot> out;
-    for (const auto& c : all) {
-        const bool distinct = std::none_of(out.begin(), out.end(), [&](const ScoredRobot& o) {
-            return (o.robot.base - c.robot.base).norm() < 0.02 &&
-                   std::abs(o.robot.link_lengths[0] - c.robot.link_lengths[0]) < 0.02 &&
-                   std::abs(o.robot.link_lengths[1] - c.robot.link_lengths[1]) < 0.02;
-        });
-        if (distinct) out.push_back(c);
-        if (static_cast<int>(out.size()) >= count) break;
-    }
-    return out;
+    sort_and_keep_distinct(all, count);
+    return all;
 }
 
 }  // namespace modsynth::synth

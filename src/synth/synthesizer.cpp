@@ -73,7 +73,7 @@ private:
     bool try_skeleton(const smt::Skeleton& skeleton, Solution& out);
     bool refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
                 nlp::SweptVolume swept, Solution& out);
-    bool finish(const kinematics::Robot& robot, std::vector<nlp::PathPoint>& points, Solution& out);
+    bool finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, Solution& out);
 
     const task::Task& task_;
     const SynthesisOptions& opt_;
@@ -113,26 +113,20 @@ Solution Search::run() {
             tried_.push_back(std::to_string(dof) + " joints: front stage undecided");
             continue;
         }
-        if (dof != 2) {
-            say(std::to_string(dof) + " joints: relaxation satisfiable; synthesis of " +
-                std::to_string(dof) + "-joint robots is not available");
-            tried_.push_back(std::to_string(dof) + " joints not synthesised (only 2-joint synthesis is available)");
-            continue;
-        }
         int skeletons = 0;
         while (result == smt::FrontStage::Result::Sat && remaining() > 0.0) {
             const smt::Skeleton sk = front.skeleton();
             ++skeletons;
             ++stats_.skeletons;
-            say(fmt("2 joints: skeleton %.0f (elbow %+.0f, base region %.0f)", skeletons, sk.elbow,
-                    sk.base_region));
+            say(fmt("%.0f joints: skeleton %.0f (elbow %+.0f,", dof, skeletons, sk.elbow) +
+                fmt(" base region %.0f)", sk.base_region));
             if (try_skeleton(sk, out)) return out;
             front.block(sk);
             const auto t1 = Clock::now();
             result = front.check();
             stats_.front_seconds += seconds_since(t1);
         }
-        tried_.push_back(fmt("2 joints: %.0f skeleton(s) searched without a certified motion", skeletons));
+        tried_.push_back(fmt("%.0f joints: %.0f skeleton(s) searched without a certified motion", dof, skeletons));
     }
     if (all_unsat && !core.empty()) {
         out.status = Status::Infeasible;
@@ -160,7 +154,11 @@ bool Search::try_skeleton(const smt::Skeleton& skeleton, Solution& out) {
         say(fmt("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(), g.robot.base.y(),
                 g.robot.total_length()) +
             fmt(", margin %.4f m", g.margin));
-        if (!task_.obstacles.empty() && refine(skeleton, g.robot, nlp::SweptVolume::Over, out)) return true;
+        // SV^over bounds a 2-link arm; with three joints the proximal link
+        // moves between primitives and the sampled model is used directly.
+        if (skeleton.dof == 2 && !task_.obstacles.empty() &&
+            refine(skeleton, g.robot, nlp::SweptVolume::Over, out))
+            return true;
         if (refine(skeleton, g.robot, nlp::SweptVolume::Sampled, out)) return true;
     }
     return false;
@@ -169,7 +167,8 @@ bool Search::try_skeleton(const smt::Skeleton& skeleton, Solution& out) {
 bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
                     nlp::SweptVolume swept, Solution& out) {
     const char* name = swept == nlp::SweptVolume::Over ? "SV-over" : "sampled";
-    nlp::TwoLinkProblem problem;
+    nlp::ArmProblem problem;
+    problem.transition_depth = 3;
     problem.task = &task_;
     problem.skeleton = skeleton;
     problem.start = start;
@@ -178,9 +177,12 @@ bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& star
     constexpr int kRounds = 12;
     for (int round = 0; round < kRounds && remaining() > 0.0; ++round) {
         const auto t0 = Clock::now();
-        const nlp::Formulation f = nlp::formulate_two_link(problem);
+        const nlp::Formulation f = nlp::formulate(problem);
         nlp::SolverOptions so;
-        so.time_limit = std::min(10.0, std::max(0.05, remaining()));
+        // A refinement that needs more than this is better restarted from
+        // another initial guess than waited for.
+        so.time_limit = std::min(3.0, std::max(0.05, remaining()));
+        so.max_iterations = 200;
         const nlp::SolverResult res = nlp::minimize(f.program, so);
         stats_.refine_seconds += seconds_since(t0);
         ++stats_.nlp_solves;
@@ -189,13 +191,16 @@ bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& star
             return false;
         }
         const kinematics::Robot robot = nlp::robot_from(f, res.x);
-        say(std::string("    ") + name +
-            fmt(": candidate links %.4f + %.4f m", robot.link_lengths[0], robot.link_lengths[1]) +
-            fmt(" with %.0f points, %.0f variables", static_cast<double>(problem.points.size()),
+        std::string links;
+        for (double r : robot.link_lengths) links += fmt(links.empty() ? "%.4f" : " + %.4f", r);
+        say(std::string("    ") + name + ": candidate links " + links +
+            fmt(" m with %.0f points, %.0f variables", static_cast<double>(problem.points.size()),
                 f.program.num_variables()));
         const std::size_t before = problem.points.size();
-        if (finish(robot, problem.points, out)) return true;
-        if (problem.points.size() == before) return false;  // nothing left to learn
+        const int depth_before = problem.transition_depth;
+        if (finish(robot, problem, out)) return true;
+        if (problem.points.size() == before && problem.transition_depth == depth_before)
+            return false;  // nothing left to learn
         stats_.counterexamples += static_cast<int>(problem.points.size() - before);
         problem.start = robot;
         if (swept == nlp::SweptVolume::Over) problem.swept = nlp::SweptVolume::Sampled;
@@ -204,14 +209,19 @@ bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& star
     return false;
 }
 
-// Plans and certifies the motion. On failure, adds the offending points
-// (counterexamples) to `points` for the next refinement.
-bool Search::finish(const kinematics::Robot& robot, std::vector<nlp::PathPoint>& points, Solution& out) {
+// Plans and certifies the motion. On failure, adds what went wrong to the
+// problem for the next refinement (counterexample-guided): the offending
+// points of a trace, or finer transitions.
+bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, Solution& out) {
+    constexpr int kMaxTransitionDepth = 4;
+    std::vector<nlp::PathPoint>& points = problem.points;
     const auto t0 = Clock::now();
     std::string where;
     auto motion = control::plan_motion(task_, robot, opt_.motion, &where);
     if (!motion) {
         say("    out of reach at " + where);
+        if (where.find("transition") != std::string::npos)
+            problem.transition_depth = std::min(kMaxTransitionDepth, problem.transition_depth + 1);
         for (int j = 0; j < static_cast<int>(task_.trajectory.size()); ++j) {
             const auto cp = geometry::critical_points(task_.trajectory[j], robot.base);
             add_point(points, j, cp.closest.s);
@@ -243,6 +253,10 @@ bool Search::finish(const kinematics::Robot& robot, std::vector<nlp::PathPoint>&
     int added = 0;
     for (const auto& v : cert.violations) {
         if (v.primitive < 0) continue;
+        if (v.transition) {
+            problem.transition_depth = std::min(kMaxTransitionDepth, problem.transition_depth + 1);
+            continue;
+        }
         if (!seen.insert({v.primitive, std::lround(v.s * 1e3)}).second) continue;
         add_point(points, v.primitive, v.s);
         if (++added >= 24) break;

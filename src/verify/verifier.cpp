@@ -77,6 +77,7 @@ private:
         v.sample = i;
         if (i >= 0) {
             v.primitive = samples_[i].primitive;
+            v.transition = samples_[i].phase == Phase::Transition;
             v.s = samples_[i].s;
         }
         v.obstacle = obstacle;
@@ -215,8 +216,10 @@ private:
             acc += robot_.link_lengths[k] * d * d;
             e[k] = acc;
         }
-        const bool refinable = sa.phase == Phase::Trace && sb.phase == Phase::Trace &&
-                               sa.primitive == sb.primitive && sb.s - sa.s > 1e-7;
+        const bool in_transition = sa.phase == Phase::Transition || sb.phase == Phase::Transition;
+        const bool refinable = (sa.phase == Phase::Trace && sb.phase == Phase::Trace &&
+                                sa.primitive == sb.primitive && sb.s - sa.s > 1e-7) ||
+                               (in_transition && std::abs(sb.q[0] - sa.q[0]) > 1e-7);
         bool coarse = false;
         auto settle = [&](double bound, bool samples_ok) {
             if (bound >= 0.0) return;

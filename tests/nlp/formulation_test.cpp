@@ -13,10 +13,11 @@ using namespace modsynth;
 
 namespace {
 
-nlp::TwoLinkProblem rose_problem(nlp::SweptVolume swept) {
+nlp::ArmProblem rose_problem(nlp::SweptVolume swept) {
     static const task::Task rose = task::load_task(testing::source_path("tasks/rose.json"));
-    nlp::TwoLinkProblem p;
+    nlp::ArmProblem p;
     p.task = &rose;
+    p.skeleton.dof = 2;
     p.skeleton.elbow = -1;
     p.skeleton.base_region = 0;
     p.start.base = {0.0, 0.05};
@@ -24,7 +25,7 @@ nlp::TwoLinkProblem rose_problem(nlp::SweptVolume swept) {
     p.start.link_diameter = rose.robot.link_diameter;
     p.start.elbow = -1;
     p.swept = swept;
-    p.obstacle_horizon = 1.0;  // every obstacle at every point: all constraint kinds present
+    p.horizon = 1.0;  // every obstacle at every point: all constraint kinds present
     for (int j = 0; j < static_cast<int>(rose.trajectory.size()); ++j)
         for (double s : {0.0, 0.03, 0.07}) p.points.push_back({j, s});
     return p;
@@ -93,7 +94,7 @@ void check_derivatives(const nlp::QuadraticProgram& qp, unsigned seed) {
 
 TEST_CASE("refinement derivatives agree with finite differences", "[nlp]") {
     for (auto swept : {nlp::SweptVolume::Sampled, nlp::SweptVolume::Over}) {
-        const nlp::Formulation f = nlp::formulate_two_link(rose_problem(swept));
+        const nlp::Formulation f = nlp::formulate(rose_problem(swept));
         INFO((swept == nlp::SweptVolume::Over ? "SV-over" : "sampled"));
         REQUIRE(f.program.num_variables() > 4 + 2 * 21);
         REQUIRE(f.program.num_constraints() > 3 * 21);
@@ -103,9 +104,9 @@ TEST_CASE("refinement derivatives agree with finite differences", "[nlp]") {
 }
 
 TEST_CASE("the start point of a reachable robot satisfies link and elbow constraints", "[nlp]") {
-    nlp::TwoLinkProblem p = rose_problem(nlp::SweptVolume::Sampled);
-    p.obstacle_horizon = -1.0;  // leave obstacles out
-    const nlp::Formulation f = nlp::formulate_two_link(p);
+    nlp::ArmProblem p = rose_problem(nlp::SweptVolume::Sampled);
+    p.horizon = -1.0;  // leave obstacles out
+    const nlp::Formulation f = nlp::formulate(p);
     CHECK(f.program.infeasibility(f.program.start().data()) < 1e-9);
 }
 
@@ -136,11 +137,11 @@ TEST_CASE("an infeasible program is reported, not returned as a solution", "[nlp
 }
 
 TEST_CASE("refinement of the rose finds a shorter robot that keeps its constraints", "[nlp]") {
-    nlp::TwoLinkProblem p = rose_problem(nlp::SweptVolume::Sampled);
-    p.obstacle_horizon = 0.10;
+    nlp::ArmProblem p = rose_problem(nlp::SweptVolume::Sampled);
+    p.horizon = 0.10;
     p.start.base = {-0.02, 0.007};  // a start clear of the obstacles
     p.start.link_lengths = {0.56, 0.47};
-    const nlp::Formulation f = nlp::formulate_two_link(p);
+    const nlp::Formulation f = nlp::formulate(p);
     const nlp::SolverResult r = nlp::minimize(f.program, {});
     REQUIRE(r.usable());
     CHECK(f.program.infeasibility(r.x.data()) < 1e-6);

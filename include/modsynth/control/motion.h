@@ -16,7 +16,9 @@ struct Sample {
     double t = 0.0;
     Phase phase = Phase::Trace;
     int primitive = 0;
-    double s = 0.0;  ///< arc length along the primitive (trace samples)
+    /// Where along the motion: arc length along the primitive for trace
+    /// samples, the first joint's angle for transition samples.
+    double s = 0.0;
     std::vector<double> q;
 };
 
@@ -35,18 +37,28 @@ std::optional<std::vector<double>> configuration_at(const task::Task& task,
                                                     double s,
                                                     const std::vector<double>* previous);
 
-/// Samples the whole motion of a 2-joint robot: every primitive traced from
-/// its start to its end with no joint moving more than max_joint_step and
-/// the EE no more than max_ee_step between samples. Times are not set.
+/// Three joints: the configuration at the transition point after primitive
+/// j with the first joint at q1 (the distal pair on the robot's branch).
+std::optional<std::vector<double>> transition_configuration(const task::Task& task,
+                                                            const kinematics::Robot& robot, int j,
+                                                            double q1,
+                                                            const std::vector<double>* previous);
+
+/// Samples the whole motion: every primitive traced from its start to its
+/// end, and with three joints a transition between primitives in which the
+/// first joint sweeps while the EE holds the transition point; no joint moves
+/// more than max_joint_step and the EE no more than max_ee_step between
+/// samples. Times are not set.
 /// std::nullopt (with `where` naming the point) when some point is out of reach.
 std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                                                const kinematics::Robot& robot,
                                                const MotionOptions& options,
                                                std::string* where = nullptr);
 
-/// Inserts a sample midway (by arc length) between samples i and i + 1 of
-/// the same trace, for each i in `pairs`. Returns false when a midpoint is
-/// out of reach.
+/// Inserts a sample midway between samples i and i + 1 for each i in
+/// `pairs`: by arc length within a trace, by the first joint's angle in a
+/// transition. Returns false when a midpoint is out of reach or the pair
+/// cannot be split.
 bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
                    std::vector<Sample>& samples, const std::vector<int>& pairs);
 

@@ -15,6 +15,10 @@ struct Robot {
     /// whole motion: with two joints the arm cannot change branch at a
     /// transition point (paper III-F-2a).
     int elbow = 1;
+    /// Three joints only: q_1 while each primitive is traced. The proximal
+    /// link stays still during a primitive (paper III-A) and sweeps between
+    /// these angles, the short way round, at the transition points.
+    std::vector<double> proximal_angles;
 
     int dof() const { return static_cast<int>(link_lengths.size()); }
     double total_length() const {

@@ -1,8 +1,10 @@
 #pragma once
-// The refinement problem (paper eq. 1) for a 2-joint robot with the
-// skeleton fixed: variables are the base, the link lengths, the elbow
-// position at every chosen point of the path and, per obstacle constraint, a
-// separating direction; the objective is the total link length.
+// The refinement problem (paper eq. 1) with the skeleton fixed. Variables:
+// the base, the link lengths, for three joints the end of the proximal link
+// during each primitive and at poses inside each transition, the elbow of
+// the distal pair at every chosen point and, per clearance constraint, a
+// separating direction. Objective: the total link length. Every constraint
+// is bilinear, so derivatives are exact.
 #include <vector>
 
 #include <modsynth/kinematics/robot.h>
@@ -14,10 +16,10 @@ namespace modsynth::nlp {
 
 /// How obstacles enter the problem.
 enum class SweptVolume {
-    /// SV^over (paper III-B): during primitive j the whole arm stays inside
-    /// conv(disc(base, r_1) and primitive j); one separating line per
-    /// obstacle and primitive keeps every obstacle out. Sound without any
-    /// sampling, but conservative.
+    /// SV^over (paper III-B), two joints: during primitive j the whole arm
+    /// stays inside conv(disc(base, r_1) and primitive j); one separating
+    /// line per obstacle and primitive keeps every obstacle out. Sound
+    /// without any sampling, but conservative.
     Over,
     /// The arm itself at each chosen point: one separating line per link,
     /// point and nearby obstacle. Exact at those points; the certified
@@ -32,32 +34,36 @@ struct PathPoint {
 
 struct Margins {
     double clearance = 0.003;  ///< m beyond radius + diameter/2
-    double self = 0.002;       ///< m beyond the diameter (EE to link 1)
+    double self = 0.002;       ///< m beyond the diameter (EE to lower links)
 };
 
-struct TwoLinkProblem {
+struct ArmProblem {
     const task::Task* task = nullptr;
-    smt::Skeleton skeleton;     ///< elbow sign and base region are fixed
-    kinematics::Robot start;    ///< initial guess
+    smt::Skeleton skeleton;   ///< joint count, elbow sign and base region are fixed
+    kinematics::Robot start;  ///< initial guess (with proximal angles for 3 joints)
     std::vector<PathPoint> points;
     SweptVolume swept = SweptVolume::Sampled;
     Margins margins;
-    /// Sampled: obstacles farther than this from a link in the initial guess
-    /// are left out at that point (the verification adds them back if needed).
-    double obstacle_horizon = 0.10;
+    /// Clearance constraints whose parts are farther apart than this in the
+    /// initial guess are left out (the verification adds them back if needed).
+    double horizon = 0.10;
+    /// Three joints: 2^depth - 1 proximal poses inside each transition.
+    int transition_depth = 2;
 };
 
 struct Formulation {
     QuadraticProgram program;
+    int dof = 2;
     int base_x = -1, base_y = -1;
-    int r1 = -1, r2 = -1;
+    std::vector<int> r;                          ///< link length variables
+    std::vector<std::pair<int, int>> proximal;  ///< 3 joints: end of link 1 per primitive
     int elbow = 1;
     double link_diameter = 0.0;
 };
 
 /// Builds the problem; the initial point comes from the start robot's IK
-/// (points it cannot reach get the nearest feasible elbow).
-Formulation formulate_two_link(const TwoLinkProblem& problem);
+/// (points it cannot reach get a nearby elbow on the requested side).
+Formulation formulate(const ArmProblem& problem);
 
 kinematics::Robot robot_from(const Formulation& f, const std::vector<double>& x);
 

@@ -13,8 +13,9 @@ struct Violation {
     enum class Kind { Structure, Deviation, Clearance, SelfCollision, JointStep, Order };
     Kind kind = Kind::Structure;
     int sample = -1;     ///< first sample of the offending pair, -1 for the robot itself
-    int primitive = -1;  ///< primitive traced there, -1 if none
-    double s = 0.0;      ///< arc length along it
+    int primitive = -1;  ///< primitive traced there (or left, in a transition), -1 if none
+    bool transition = false;  ///< in the transition after `primitive`
+    double s = 0.0;      ///< arc length along it (first joint's angle in a transition)
     int obstacle = -1;   ///< for Clearance
     int link = -1;       ///< 0-based link index, for Clearance and SelfCollision
     double amount = 0.0; ///< how far past the limit, m or rad
