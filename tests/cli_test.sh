@@ -59,6 +59,48 @@ for t in "$root"/tasks/infeasible/*.task.json; do
     grep -q '"status": "infeasible"' "$tmp/inf.json" || fail "$t: status is not infeasible"
 done
 
+# Outputs people use: report, URDF, CSV and build sheet, from solve and
+# again from the saved solution with export.
+outputs() {  # prefix
+    echo --report "$tmp/$1.html" --urdf "$tmp/$1.urdf" --csv "$tmp/$1.csv" --build-sheet "$tmp/$1.md"
+}
+expect_exit 0 "solve rose with outputs" "$bin" solve "$root/tasks/rose.json" -o "$tmp/s.json" --quiet $(outputs s)
+for f in s.html s.urdf s.csv s.md; do
+    [ -s "$tmp/$f" ] || fail "solve rose did not write $f"
+done
+head -1 "$tmp/s.csv" | grep -qE '^t,q1,q2(,q3)?,phase,primitive$' || fail "CSV header: $(head -1 "$tmp/s.csv")"
+[ "$(($(wc -l <"$tmp/s.csv") - 1))" -eq "$(grep -c '"phase"' "$tmp/s.json")" ] ||
+    fail "CSV rows do not match the solution's samples"
+grep -q '<svg id="plot"' "$tmp/s.html" || fail "report has no plot"
+if command -v check_urdf >/dev/null 2>&1; then
+    check_urdf "$tmp/s.urdf" >"$tmp/check_urdf" 2>&1 || fail "check_urdf rejects the rose URDF: $(tail -3 "$tmp/check_urdf")"
+fi
+expect_exit 0 "export rose" "$bin" export "$root/tasks/rose.json" "$tmp/s.json" $(outputs e)
+for ext in urdf csv md; do
+    cmp -s "$tmp/s.$ext" "$tmp/e.$ext" || fail "export gives a different .$ext than solve"
+done
+# The reports differ only in the stage timings, which a saved solution does not record.
+cmp -s <(grep -v 'id="stage-times"' "$tmp/s.html") <(grep -v 'id="stage-times"' "$tmp/e.html") ||
+    fail "export gives a different report than solve"
+grep 'id="stage-times"' "$tmp/e.html" | grep -q 'n/a' || fail "export report claims stage timings"
+
+# Export rejects bad solutions with exit 2 and names the part.
+printf '{"format": "modsynth-solution/1", "task": "rose", "status": "solved"}' >"$tmp/bad.json"
+expect_exit 2 "export a solution without robot" "$bin" export "$root/tasks/rose.json" "$tmp/bad.json" --csv "$tmp/bad.csv"
+grep -q "robot" "$tmp/err" || fail "export of a bad solution does not name the robot: $(cat "$tmp/err")"
+python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1])); d["samples"][3]["q"] = [0.1]
+json.dump(d, open(sys.argv[2], "w"))' "$tmp/s.json" "$tmp/bad_q.json"
+expect_exit 2 "export a solution with a short q" "$bin" export "$root/tasks/rose.json" "$tmp/bad_q.json" --urdf "$tmp/bad.urdf"
+grep -qF "samples[3].q" "$tmp/err" || fail "export does not name samples[3].q: $(cat "$tmp/err")"
+expect_exit 2 "export with no output" "$bin" export "$root/tasks/rose.json" "$tmp/s.json"
+expect_exit 2 "export a missing solution" "$bin" export "$root/tasks/rose.json" "$tmp/none.json" --csv "$tmp/x.csv"
+if [ -f "$tmp/inf.json" ]; then
+    expect_exit 2 "export a URDF of an infeasible solution" "$bin" export "$(ls "$root"/tasks/infeasible/*.task.json | tail -1)" "$tmp/inf.json" --urdf "$tmp/inf.urdf"
+fi
+expect_exit 1 "export to an unwritable file" "$bin" export "$root/tasks/rose.json" "$tmp/s.json" --csv "$tmp/no/such/dir/x.csv"
+
 # Unwritable output is an internal error, reported, not a crash.
 expect_exit 1 "unwritable output" "$bin" solve "$root/tasks/rose.json" -o "$tmp/no/such/dir/x.json" --quiet
 

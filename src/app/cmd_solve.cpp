@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include <modsynth/output/exports.h>
 #include <modsynth/output/solution_io.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/task/task_io.h>
@@ -19,6 +20,7 @@ struct SolveArgs {
     unsigned seed = 0;
     double ee_speed = 0.05, joint_speed = 1.0;
     bool quiet = false;
+    output::ExportPaths exports;
 };
 
 void print_summary(const task::Task& task, const synth::Solution& solution, double seconds,
@@ -60,6 +62,11 @@ int run_solve(const SolveArgs& a) {
     const synth::Solution solution = synth::synthesize(task, options, &stats);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     output::write_solution(solution, a.output);
+    for (const auto& note : output::write_exports(
+             task, solution, a.exports,
+             {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}})) {
+        std::fprintf(stderr, "note: %s\n", note.c_str());
+    }
     print_summary(task, solution, seconds, stats, a.output);
     switch (solution.status) {
         case synth::Status::Solved: return kOk;
@@ -84,6 +91,7 @@ Command add_solve(CLI::App& parent) {
     sub->add_option("--joint-speed", a->joint_speed, "joint speed limit, rad/s (default 1)")
         ->check(CLI::PositiveNumber);
     sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");
+    add_export_options(*sub, a->exports);
     return {sub, [a] { return run_solve(*a); }};
 }
 

@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <modsynth/output/exports.h>
+
 namespace modsynth::app {
 
 enum Exit { kOk = 0, kInternal = 1, kInvalid = 2, kInfeasible = 3, kUnknown = 4 };
@@ -17,5 +19,11 @@ struct Command {
 
 Command add_validate(CLI::App& parent);
 Command add_solve(CLI::App& parent);
+Command add_batch(CLI::App& parent);
+Command add_regress(CLI::App& parent);
+Command add_export(CLI::App& parent);
+
+/// --report, --urdf, --csv, --build-sheet: shared by solve and export.
+void add_export_options(CLI::App& sub, output::ExportPaths& paths);
 
 }  // namespace modsynth::app

@@ -334,11 +334,28 @@ std::vector<std::string> FrontStage::minimal_core() {
     return out;
 }
 
+bool FrontStage::conflicts(const std::vector<std::string>& parts) {
+    Impl& m = *impl_;
+    z3::expr_vector a(m.ctx);
+    for (const auto& part : parts) {
+        auto it = m.literal_of.find(part);
+        if (it != m.literal_of.end()) a.push_back(it->second);
+    }
+    m.set_timeout(m.solver, m.options.time_limit);
+    if (m.solver.check(a) == z3::unsat) return true;
+    m.set_timeout(m.fine, std::min(m.options.time_limit, m.options.refined_time_limit));
+    return m.fine.check(a) == z3::unsat;
+}
+
 std::string FrontStage::smtlib() const {
-    std::string s = "; assumption literals: ";
-    for (const auto& n : impl_->names) s += "|" + n + "| ";
-    s += "\n";
-    return s + impl_->fine.to_smt2();
+    // Ends with check-sat-assuming over every task part, so that running the
+    // file alone (z3 FILE) answers as the front stage does.
+    std::string s = impl_->fine.to_smt2();
+    const auto pos = s.rfind("(check-sat)");
+    if (pos != std::string::npos) s.erase(pos);
+    s += "(check-sat-assuming (";
+    for (std::size_t i = 0; i < impl_->names.size(); ++i) s += (i ? " |" : "|") + impl_->names[i] + "|";
+    return s + "))\n";
 }
 
 std::string FrontStage::reason_unknown() const { return impl_->solver.reason_unknown(); }

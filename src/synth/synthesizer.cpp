@@ -7,10 +7,12 @@
 #include <set>
 
 #include <modsynth/control/motion.h>
+#include <modsynth/geometry/polygon.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/verify/verifier.h>
 
@@ -52,6 +54,23 @@ std::vector<nlp::PathPoint> base_points(const task::Task& task, const geometry::
     return pts;
 }
 
+// Whether SV^over could hold near this robot: no obstacle centre inside
+// conv(disc(base, r1) and primitive) for any primitive. When one is, the
+// over-approximation cannot be met nearby and the attempt would only cost time.
+bool swept_over_plausible(const task::Task& task, const kinematics::Robot& robot) {
+    for (const auto& prim : task.trajectory) {
+        std::vector<geometry::Vec2> pts;
+        const double len = geometry::length(prim);
+        for (int i = 0; i <= 16; ++i) pts.push_back(geometry::point_at(prim, len * i / 16));
+        for (int i = 0; i < 32; ++i)
+            pts.push_back(robot.base + robot.link_lengths[0] * geometry::unit(geometry::kTau * i / 32));
+        const auto hull = geometry::convex_hull(pts);
+        for (const auto& ob : task.obstacles)
+            if (geometry::point_in_convex_polygon(ob.center, hull)) return false;
+    }
+    return true;
+}
+
 void add_point(std::vector<nlp::PathPoint>& pts, int j, double s) {
     for (const auto& p : pts)
         if (p.primitive == j && std::abs(p.s - s) < 1e-4) return;
@@ -85,7 +104,7 @@ private:
 Solution Search::run() {
     Solution out;
     out.task_name = task_.name;
-    std::vector<std::string> core;
+    std::vector<std::vector<std::string>> cores;
     bool all_unsat = true;
     for (int dof : task_.robot.dof) {
         if (remaining() <= 0.0) {
@@ -100,11 +119,9 @@ Solution Search::run() {
         auto result = front.check();
         stats_.front_seconds += seconds_since(t0);
         if (result == smt::FrontStage::Result::Unsat) {
-            const auto c = front.minimal_core();
-            say(std::to_string(dof) + " joints: proved infeasible, conflict between " + join(c, ", "));
-            for (const auto& part : c)
-                if (std::find(core.begin(), core.end(), part) == core.end()) core.push_back(part);
-            tried_.push_back(std::to_string(dof) + " joints proved infeasible (" + join(c, ", ") + ")");
+            cores.push_back(front.minimal_core());
+            say(std::to_string(dof) + " joints: proved infeasible, conflict between " + join(cores.back(), ", "));
+            tried_.push_back(std::to_string(dof) + " joints proved infeasible (" + join(cores.back(), ", ") + ")");
             continue;
         }
         all_unsat = false;
@@ -126,24 +143,27 @@ Solution Search::run() {
             result = front.check();
             stats_.front_seconds += seconds_since(t1);
         }
-        tried_.push_back(fmt("%.0f joints: %.0f skeleton(s) searched without a certified motion", dof, skeletons));
+        const bool exhausted = result != smt::FrontStage::Result::Sat;
+        tried_.push_back(fmt("%.0f joints: %.0f skeleton(s) searched", dof, skeletons) +
+                         (exhausted ? " (all of them) without a certified motion" : ""));
+        if (exhausted) say(std::to_string(dof) + " joints: search exhausted");
     }
-    if (all_unsat && !core.empty()) {
+    if (all_unsat && !cores.empty()) {
+        const auto t0 = Clock::now();
         out.status = Status::Infeasible;
-        out.explanation.core = core;
-        out.explanation.message = "No robot with " + join([&] {
-            std::vector<std::string> d;
-            for (int k : task_.robot.dof) d.push_back(std::to_string(k));
-            return d;
-        }(), " or ") + " joints can do this task: the constraints of " + join(core, ", ") +
-                                  " cannot all be met (proved).";
+        out.explanation.core = common_core(task_, cores, std::max(0.1, std::min(5.0, remaining())));
+        out.explanation.message = "Proved infeasible: " + describe_conflict(task_, out.explanation.core);
+        stats_.front_seconds += seconds_since(t0);
         return out;
     }
     out.status = Status::Unknown;
     out.explanation.message = "No certified robot found" +
                               std::string(remaining() <= 0.0 ? " within the time limit" : "") + ": " +
                               join(tried_, "; ") + ".";
-    out.explanation.core = core;
+    for (const auto& c : cores)
+        for (const auto& part : c)
+            if (std::find(out.explanation.core.begin(), out.explanation.core.end(), part) == out.explanation.core.end())
+                out.explanation.core.push_back(part);
     return out;
 }
 
@@ -156,7 +176,7 @@ bool Search::try_skeleton(const smt::Skeleton& skeleton, Solution& out) {
             fmt(", margin %.4f m", g.margin));
         // SV^over bounds a 2-link arm; with three joints the proximal link
         // moves between primitives and the sampled model is used directly.
-        if (skeleton.dof == 2 && !task_.obstacles.empty() &&
+        if (skeleton.dof == 2 && !task_.obstacles.empty() && swept_over_plausible(task_, g.robot) &&
             refine(skeleton, g.robot, nlp::SweptVolume::Over, out))
             return true;
         if (refine(skeleton, g.robot, nlp::SweptVolume::Sampled, out)) return true;

@@ -338,6 +338,18 @@ std::vector<int> parse_dof(const json& j, const std::string& part) {
     return dof;
 }
 
+/// Optional module and tube sizes; only the build sheet and URDF use them.
+void parse_hardware(const json& robot, const std::string& part, RobotSpec& r) {
+    const std::pair<const char*, double*> keys[] = {{"module_length", &r.module_length},
+                                                    {"module_width", &r.module_width},
+                                                    {"module_height", &r.module_height},
+                                                    {"adapter_length", &r.adapter_length},
+                                                    {"ee_rod_diameter", &r.ee_rod_diameter}};
+    for (const auto& [key, value] : keys) {
+        if (const json* v = optional(robot, key)) *value = positive_length(*v, member(part, key));
+    }
+}
+
 RobotSpec parse_robot(const json& doc) {
     RobotSpec r;
     const json* robot = optional(doc, "robot");
@@ -354,6 +366,7 @@ RobotSpec parse_robot(const json& doc) {
     if (const json* v = optional(*robot, "max_link_length")) {
         r.max_link_length = positive_length(*v, member(part, "max_link_length"));
     }
+    parse_hardware(*robot, part, r);
     if (r.min_link_length > r.max_link_length) {
         throw InputError(member(part, "min_link_length"),
                          "minimum link length " + metres(r.min_link_length) +
@@ -508,7 +521,12 @@ json to_json(const Task& task) {
              {{"dof", task.robot.dof},
               {"link_diameter", task.robot.link_diameter},
               {"min_link_length", task.robot.min_link_length},
-              {"max_link_length", task.robot.max_link_length}}}};
+              {"max_link_length", task.robot.max_link_length},
+              {"module_length", task.robot.module_length},
+              {"module_width", task.robot.module_width},
+              {"module_height", task.robot.module_height},
+              {"adapter_length", task.robot.adapter_length},
+              {"ee_rod_diameter", task.robot.ee_rod_diameter}}}};
 }
 
 }  // namespace modsynth::task

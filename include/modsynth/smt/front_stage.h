@@ -44,6 +44,9 @@ public:
     /// After Unsat (before any block): the task parts whose constraints
     /// conflict, as named in formats.md, shrunk to a minimal set by deletion.
     std::vector<std::string> minimal_core();
+    /// True when these task parts alone are proved to conflict (unsat with
+    /// only their literals assumed); false when satisfiable or undecided.
+    bool conflicts(const std::vector<std::string>& parts);
     /// The encoding as an SMT-LIB2 script (assumption literals as named
     /// Booleans), for regression suites.
     std::string smtlib() const;

@@ -32,6 +32,18 @@ struct RobotSpec {
     double link_diameter = 0.03175;
     double min_link_length = 0.05;
     double max_link_length = 1.0;
+    /// The hardware the arm is built from (optional keys, used by the build
+    /// sheet and the URDF only): actuator modules as boxes with the joint
+    /// axis at the centre of the output end, module_width / 2 from that end;
+    /// defaults are a HEBI X8 (110 x 73 x 45 mm, the height along the axis).
+    double module_length = 0.110;
+    double module_width = 0.073;
+    double module_height = 0.045;
+    /// How far a tube adapter reaches beyond the module's outline before the
+    /// tube begins, at each end of a tube.
+    double adapter_length = 0.020;
+    /// The rod that carries the end-effector down to the task plane.
+    double ee_rod_diameter = 0.0095;
 };
 
 struct Task {

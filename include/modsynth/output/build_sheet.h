@@ -1,0 +1,15 @@
+#pragma once
+// A build sheet in Markdown for the person assembling the robot: the parts
+// to get, the tube cut lengths (output/hardware.h), the heights of the
+// stack, where the base goes and the joint angles of the start pose.
+#include <string>
+
+#include <modsynth/synth/solution.h>
+#include <modsynth/task/task.h>
+
+namespace modsynth::output {
+
+/// The sheet for a solved solution; module sizes come from task.robot.
+std::string build_sheet(const task::Task& task, const synth::Solution& solution);
+
+}  // namespace modsynth::output

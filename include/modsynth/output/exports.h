@@ -1,0 +1,35 @@
+#pragma once
+// The outputs people use besides the solution file, written together by
+// `solve` and by `export`: report (HTML), URDF, trajectory CSV, build sheet.
+#include <string>
+#include <vector>
+
+#include <modsynth/output/report.h>
+#include <modsynth/synth/solution.h>
+#include <modsynth/task/task.h>
+
+namespace modsynth::output {
+
+/// Where to write each output; an empty path means "not wanted".
+struct ExportPaths {
+    std::string report;
+    std::string urdf;
+    std::string csv;
+    std::string build_sheet;
+
+    bool any() const {
+        return !report.empty() || !urdf.empty() || !csv.empty() || !build_sheet.empty();
+    }
+};
+
+/// Writes every wanted output. The report is always possible; the URDF, CSV
+/// and build sheet need a robot, so for an unsolved solution they are not
+/// written and the returned list says so, one line each (empty: all written).
+/// Throws std::runtime_error naming the path when a file cannot be written.
+std::vector<std::string> write_exports(const task::Task& task, const synth::Solution& solution,
+                                       const ExportPaths& paths, const ReportFigures& figures);
+
+/// Writes text to a file; throws std::runtime_error naming the path on failure.
+void write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace modsynth::output

@@ -1,0 +1,250 @@
+// `modsynth batch`: many tasks solved in parallel processes, one JSON line
+// of figures per task. Exit 0 when every task got an answer (solved,
+// infeasible or unknown), 1 when any run failed, 2 on bad usage.
+#include <modsynth/task/input_error.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "command.h"
+#include "process_pool.h"
+#include "solve_runner.h"
+#include "task_files.h"
+#include "temp_dir.h"
+
+namespace modsynth::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct BatchArgs {
+    std::string input, out, solutions, shard = "1/1";
+    SolveRunOptions run;
+};
+
+std::vector<std::string> all_tasks(const std::string& input) {
+    if (fs::is_directory(input)) return find_task_files(input);
+    if (fs::is_regular_file(input)) return read_task_list(input);
+    throw task::InputError(input, "no such folder or task list");
+}
+
+// Failures of any kind share one column: a user first wants to know how many
+// runs need a look, the results file says why.
+std::string column_of(const std::string& status) { return is_answer(status) ? status : "failed"; }
+
+// Dividing by the power of ten gives the double nearest the decimal, which
+// JSON then prints without a tail of noise.
+double round_to(double v, int decimals) {
+    const double scale = std::pow(10.0, decimals);
+    return std::round(v * scale) / scale;
+}
+
+nlohmann::json optional_json(const std::optional<double>& v, int decimals) {
+    return v ? nlohmann::json(round_to(*v, decimals)) : nlohmann::json(nullptr);
+}
+
+nlohmann::ordered_json result_line(const std::string& path, const SolveOutcome& o,
+                                   const std::string& kept_solution) {
+    nlohmann::ordered_json line;
+    line["task"] = path;
+    line["name"] = o.name;
+    line["status"] = o.status;
+    line["exit_code"] = o.exit_code;
+    line["seconds"] = round_to(o.seconds, 3);
+    line["dof"] = o.dof ? nlohmann::json(*o.dof) : nlohmann::json(nullptr);
+    line["total_link_length"] = optional_json(o.total_link_length, 9);
+    line["clearance_margin"] = optional_json(o.clearance_margin, 9);
+    if (!o.core.empty()) line["core"] = o.core;
+    if (!o.message.empty() && o.status != "solved") line["message"] = o.message;
+    if (o.signal != 0) line["signal"] = o.signal;
+    line["solution"] = kept_solution.empty() || !is_answer(o.status)
+                           ? nlohmann::json(nullptr)
+                           : nlohmann::json(kept_solution);
+    return line;
+}
+
+class Progress {
+public:
+    explicit Progress(std::size_t total) : total_(total), tty_(isatty(STDERR_FILENO) != 0) {}
+
+    void finished(const SolveOutcome& o) {
+        ++done_;
+        ++counts_[column_of(o.status)];
+        if (tty_) {
+            draw("");
+        } else {
+            char buf[128];
+            std::snprintf(buf, sizeof buf, "  %s: %s %.2f s", o.name.c_str(), o.status.c_str(),
+                          o.seconds);
+            draw(buf);
+        }
+    }
+    void tick() {
+        if (tty_) draw("");
+    }
+    void close() {
+        if (tty_ && total_ > 0) std::fputc('\n', stderr);
+    }
+    double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+private:
+    void draw(const std::string& tail) {
+        const int width = static_cast<int>(std::to_string(total_).size());
+        std::fprintf(
+            stderr, "%s[%*zu/%zu] solved %d, infeasible %d, unknown %d, failed %d, %.1f s%s%s",
+            tty_ ? "\r" : "", width, done_, total_, counts_["solved"], counts_["infeasible"],
+            counts_["unknown"], counts_["failed"], elapsed(), tail.c_str(), tty_ ? "\033[K" : "\n");
+        std::fflush(stderr);
+    }
+
+    std::size_t total_, done_ = 0;
+    bool tty_;
+    std::map<std::string, int> counts_;
+    Clock::time_point start_ = Clock::now();
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+void print_row(const char* label, const std::vector<double>& seconds) {
+    if (seconds.empty()) {
+        std::printf("  %-11s %6d %10s %9s\n", label, 0, "-", "-");
+        return;
+    }
+    std::printf("  %-11s %6zu %10.2f %9.2f\n", label, seconds.size(), median(seconds),
+                *std::max_element(seconds.begin(), seconds.end()));
+}
+
+void print_summary(const BatchArgs& a, const Shard& shard, const std::vector<std::string>& paths,
+                   const std::vector<SolveOutcome>& outcomes, double wall) {
+    std::printf("batch: %zu tasks (shard %d/%d) in %.1f s with %d jobs\n", outcomes.size(),
+                shard.index, shard.count, wall, a.run.jobs);
+    std::printf("  %-11s %6s %10s %9s\n", "status", "tasks", "median s", "max s");
+    std::map<std::string, std::vector<double>> by_column;
+    std::vector<double> all;
+    for (const auto& o : outcomes) {
+        by_column[column_of(o.status)].push_back(o.seconds);
+        all.push_back(o.seconds);
+    }
+    for (const char* c : {"solved", "infeasible", "unknown", "failed"}) print_row(c, by_column[c]);
+    print_row("all", all);
+    for (std::size_t i = 0; i < outcomes.size(); ++i)
+        if (!is_answer(outcomes[i].status))
+            std::printf("  failed: %s: %s: %s\n", paths[i].c_str(), outcomes[i].status.c_str(),
+                        outcomes[i].message.c_str());
+    std::printf("results: %s\n", a.out.c_str());
+}
+
+// Lines go out in task order as soon as every earlier task is done, so the
+// file is the same whatever order the runs end in, and a killed batch still
+// leaves a usable prefix.
+class OrderedWriter {
+public:
+    OrderedWriter(const std::string& path, std::size_t count) : out_(path), lines_(count) {
+        if (!out_) throw std::runtime_error(path + ": cannot open for writing");
+    }
+    void put(std::size_t i, const std::string& line) {
+        lines_[i] = line;
+        while (next_ < lines_.size() && lines_[next_]) out_ << *lines_[next_++] << '\n';
+        out_.flush();
+        if (!out_) throw std::runtime_error("results file: write failed");
+    }
+
+private:
+    std::ofstream out_;
+    std::vector<std::optional<std::string>> lines_;
+    std::size_t next_ = 0;
+};
+
+int run_batch(const BatchArgs& a) {
+    const Shard shard = parse_shard(a.shard);
+    const std::vector<std::string> all = all_tasks(a.input);
+    const std::vector<std::string> stems = unique_stems(all);
+    std::optional<TempDir> scratch;
+    std::string dir = a.solutions;
+    if (dir.empty()) {
+        scratch.emplace("modsynth-batch");
+        dir = scratch->path();
+    } else {
+        fs::create_directories(dir);
+    }
+    std::vector<std::string> paths;
+    std::vector<SolveJob> jobs;
+    for (std::size_t i : shard_positions(all.size(), shard)) {
+        paths.push_back(all[i]);
+        const std::string base = (fs::path(dir) / stems[i]).string();
+        jobs.push_back({all[i], base + ".solution.json", base + ".log"});
+    }
+    OrderedWriter writer(a.out, jobs.size());
+    Progress progress(jobs.size());
+    std::vector<SolveOutcome> outcomes(jobs.size());
+    try {
+        run_solves(
+            jobs, a.run,
+            [&](std::size_t i, const SolveOutcome& o) {
+                outcomes[i] = o;
+                writer.put(i,
+                           result_line(paths[i], o, scratch ? "" : jobs[i].solution_path).dump());
+                progress.finished(o);
+            },
+            [&] { progress.tick(); });
+    } catch (const Interrupted&) {
+        progress.close();
+        std::fprintf(stderr, "batch: interrupted; the finished tasks are in %s\n", a.out.c_str());
+        return kInternal;
+    }
+    progress.close();
+    print_summary(a, shard, paths, outcomes, progress.elapsed());
+    const bool all_answered =
+        std::all_of(outcomes.begin(), outcomes.end(),
+                    [](const SolveOutcome& o) { return is_answer(o.status); });
+    return all_answered ? kOk : kInternal;
+}
+
+}  // namespace
+
+Command add_batch(CLI::App& parent) {
+    auto a = std::make_shared<BatchArgs>();
+    a->run.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    CLI::App* sub = parent.add_subcommand(
+        "batch",
+        "Solve many tasks in parallel processes (exit 0: every task answered, 1: some failed)");
+    sub->add_option(
+           "INPUT", a->input,
+           "a folder (every *.json task in it, recursively; only *.task.json where present) "
+           "or a text file listing one task path per line")
+        ->required();
+    sub->add_option("--out", a->out, "results, one JSON object per task and line")->required();
+    sub->add_option("-j,--jobs", a->run.jobs, "solves at once (default: the number of CPUs)")
+        ->check(CLI::Range(1, 4096));
+    sub->add_option("--shard", a->shard,
+                    "K/N: of the tasks sorted by path, take every N-th starting at the K-th");
+    sub->add_option("--time-limit", a->run.time_limit, "seconds per task (default 60)")
+        ->check(CLI::PositiveNumber);
+    sub->add_option("--grace", a->run.grace,
+                    "seconds past the time limit before a run is killed (default 10)")
+        ->check(CLI::NonNegativeNumber);
+    sub->add_option(
+        "--solutions", a->solutions,
+        "keep each solution (NAME.solution.json) and run log (NAME.log) in this folder");
+    sub->add_option("--seed", a->run.seed, "passed to every solve (default 0)");
+    return {sub, [a] { return run_batch(*a); }};
+}
+
+}  // namespace modsynth::app

@@ -1,0 +1,69 @@
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <modsynth/output/exports.h>
+#include <modsynth/output/solution_reader.h>
+#include <modsynth/task/task_io.h>
+#include <modsynth/verify/verifier.h>
+
+#include "command.h"
+
+namespace modsynth::app {
+namespace {
+
+struct ExportArgs {
+    std::string task, solution;
+    output::ExportPaths exports;
+};
+
+/// A solution written by another tool may carry no certificate; the report
+/// then shows one computed here, and says so.
+output::ReportFigures figures_for(const task::Task& task, output::ParsedSolution& parsed) {
+    output::ReportFigures figures;
+    synth::Solution& s = parsed.solution;
+    if (s.status == synth::Status::Solved && !parsed.has_certificate) {
+        s.certificate = verify::certify(task, s.robot, s.samples);
+        figures.certificate_note = "computed by export: the solution file carries no certificate";
+    }
+    return figures;
+}
+
+int run_export(const ExportArgs& a) {
+    if (!a.exports.any()) {
+        std::fprintf(stderr,
+                     "error: nothing to export; give --report, --urdf, --csv and/or "
+                     "--build-sheet\n");
+        return kInvalid;
+    }
+    const task::Task task = task::load_task(a.task);
+    output::ParsedSolution parsed = output::load_solution(a.solution);
+    output::check_solution_fits(task, parsed.solution);
+    const output::ReportFigures figures = figures_for(task, parsed);
+    const auto skipped = output::write_exports(task, parsed.solution, a.exports, figures);
+    for (const auto& s : skipped) std::fprintf(stderr, "error: %s\n", s.c_str());
+    return skipped.empty() ? kOk : kInvalid;
+}
+
+}  // namespace
+
+void add_export_options(CLI::App& sub, output::ExportPaths& paths) {
+    sub.add_option("--report", paths.report, "write a visual report (self-contained HTML)");
+    sub.add_option("--urdf", paths.urdf, "write the robot as a URDF model");
+    sub.add_option("--csv", paths.csv,
+                   "write the joint trajectory as CSV (t,q1..qn,phase,primitive)");
+    sub.add_option("--build-sheet", paths.build_sheet,
+                   "write a build sheet (Markdown): parts, tube cut lengths, base, start pose");
+}
+
+Command add_export(CLI::App& parent) {
+    auto a = std::make_shared<ExportArgs>();
+    CLI::App* sub = parent.add_subcommand(
+        "export", "Write the report, URDF, CSV or build sheet of a saved solution");
+    sub->add_option("TASK", a->task, "modsynth-task/1 JSON file the solution is for")->required();
+    sub->add_option("SOLUTION", a->solution, "modsynth-solution/1 JSON file")->required();
+    add_export_options(*sub, a->exports);
+    return {sub, [a] { return run_export(*a); }};
+}
+
+}  // namespace modsynth::app

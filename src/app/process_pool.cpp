@@ -1,0 +1,220 @@
+#include "process_pool.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <thread>
+
+extern char** environ;
+
+namespace modsynth::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Polling, rather than waiting on SIGCHLD, keeps the signal handling to one
+// flag; 10 ms is far below any solve's duration.
+constexpr auto kPoll = std::chrono::milliseconds(10);
+constexpr auto kTick = std::chrono::milliseconds(200);
+
+volatile std::sig_atomic_t g_interrupted = 0;
+
+extern "C" void note_interrupt(int) { g_interrupted = 1; }
+
+// While children run, SIGINT and SIGTERM must not kill this process before it
+// has killed them: a batch on a cluster node would leave orphans running.
+class SignalGuard {
+public:
+    SignalGuard() {
+        g_interrupted = 0;
+        struct sigaction sa {};
+        sa.sa_handler = note_interrupt;
+        sigemptyset(&sa.sa_mask);
+        sigaction(SIGINT, &sa, &old_int_);
+        sigaction(SIGTERM, &sa, &old_term_);
+    }
+    ~SignalGuard() {
+        sigaction(SIGINT, &old_int_, nullptr);
+        sigaction(SIGTERM, &old_term_, nullptr);
+    }
+    SignalGuard(const SignalGuard&) = delete;
+    SignalGuard& operator=(const SignalGuard&) = delete;
+
+private:
+    struct sigaction old_int_ {};
+    struct sigaction old_term_ {};
+};
+
+struct Running {
+    std::size_t index = 0;
+    pid_t pid = -1;
+    Clock::time_point start;
+    Clock::time_point deadline = Clock::time_point::max();
+};
+
+double seconds_since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+pid_t spawn(const ProcessSpec& spec) {
+    std::vector<char*> argv;
+    for (const auto& a : spec.argv) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const char* log = spec.log_path.empty() ? "/dev/null" : spec.log_path.c_str();
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log, O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
+    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    pid_t pid = -1;
+    const int err = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    return err == 0 ? pid : -1;
+}
+
+ProcessResult result_of(int status, const Running& r) {
+    ProcessResult out;
+    out.seconds = seconds_since(r.start);
+    if (WIFEXITED(status)) {
+        out.exit_code = WEXITSTATUS(status);
+    } else if (WIFSIGNALED(status)) {
+        out.signal = WTERMSIG(status);
+        out.exit_code = 128 + out.signal;
+    }
+    return out;
+}
+
+int wait_blocking(pid_t pid) {
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    return status;
+}
+
+void kill_all(std::vector<Running>& running) {
+    for (const auto& r : running) kill(r.pid, SIGKILL);
+    for (const auto& r : running) wait_blocking(r.pid);
+    running.clear();
+}
+
+class Pool {
+public:
+    Pool(const std::vector<ProcessSpec>& specs, int jobs, const FinishHandler& on_finish)
+        : specs_(specs),
+          jobs_(static_cast<std::size_t>(std::max(1, jobs))),
+          on_finish_(on_finish) {}
+
+    bool busy() const { return next_ < specs_.size() || !running_.empty(); }
+
+    void start_more() {
+        while (running_.size() < jobs_ && next_ < specs_.size()) start(next_++);
+    }
+
+    void reap_finished() {
+        for (std::size_t i = 0; i < running_.size();) {
+            int status = 0;
+            if (waitpid(running_[i].pid, &status, WNOHANG) == running_[i].pid) {
+                finish(i, result_of(status, running_[i]));
+            } else {
+                ++i;
+            }
+        }
+    }
+
+    void kill_overdue() {
+        const auto now = Clock::now();
+        for (std::size_t i = 0; i < running_.size();) {
+            if (now < running_[i].deadline) {
+                ++i;
+                continue;
+            }
+            kill(running_[i].pid, SIGKILL);
+            ProcessResult r = result_of(wait_blocking(running_[i].pid), running_[i]);
+            r.timed_out = true;
+            finish(i, r);
+        }
+    }
+
+    /// Until the next poll, or the next deadline if sooner, so that a tiny
+    /// limit is enforced as given.
+    void sleep() const {
+        auto until = Clock::now() + kPoll;
+        for (const auto& r : running_) until = std::min(until, r.deadline);
+        std::this_thread::sleep_until(until);
+    }
+
+    void kill_everything() { kill_all(running_); }
+
+private:
+    void start(std::size_t index) {
+        const ProcessSpec& spec = specs_[index];
+        Running r;
+        r.index = index;
+        r.start = Clock::now();
+        if (spec.wall_limit > 0.0)
+            r.deadline = r.start + std::chrono::duration_cast<Clock::duration>(
+                                       std::chrono::duration<double>(spec.wall_limit));
+        r.pid = spawn(spec);
+        if (r.pid < 0) {
+            ProcessResult failed;
+            failed.exit_code = 127;
+            on_finish_(index, failed);
+            return;
+        }
+        running_.push_back(r);
+    }
+
+    void finish(std::size_t slot, const ProcessResult& result) {
+        const std::size_t index = running_[slot].index;
+        running_.erase(running_.begin() + static_cast<long>(slot));
+        on_finish_(index, result);
+    }
+
+    const std::vector<ProcessSpec>& specs_;
+    std::size_t jobs_;
+    const FinishHandler& on_finish_;
+    std::vector<Running> running_;
+    std::size_t next_ = 0;
+};
+
+}  // namespace
+
+void run_processes(const std::vector<ProcessSpec>& specs, int jobs, const FinishHandler& on_finish,
+                   const std::function<void()>& on_tick) {
+    SignalGuard guard;
+    Pool pool(specs, jobs, on_finish);
+    auto last_tick = Clock::now();
+    try {
+        while (pool.busy()) {
+            if (g_interrupted) throw Interrupted();
+            pool.start_more();
+            pool.reap_finished();
+            pool.kill_overdue();
+            if (on_tick && Clock::now() - last_tick >= kTick) {
+                on_tick();
+                last_tick = Clock::now();
+            }
+            if (pool.busy()) pool.sleep();
+        }
+    } catch (...) {
+        pool.kill_everything();
+        throw;
+    }
+}
+
+std::string self_executable() {
+    std::error_code ec;
+    const auto path = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return ec ? std::string("/proc/self/exe") : path.string();
+}
+
+}  // namespace modsynth::app

@@ -1,0 +1,153 @@
+#include "solve_runner.h"
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "process_pool.h"
+#include "task_files.h"
+
+namespace modsynth::app {
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+ProcessSpec spec_for(const SolveJob& job, const SolveRunOptions& o, const std::string& self) {
+    ProcessSpec spec;
+    spec.argv = {self,      "solve",        job.task_path,        "-o",     job.solution_path,
+                 "--quiet", "--time-limit", number(o.time_limit), "--seed", std::to_string(o.seed)};
+    spec.log_path = job.log_path;
+    spec.wall_limit = o.time_limit + o.grace;
+    return spec;
+}
+
+// Unparsable input yields an empty object: the caller then falls back to
+// what the exit code says.
+nlohmann::json read_json(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) return nlohmann::json::object();
+    auto doc = nlohmann::json::parse(in, nullptr, false);
+    return doc.is_object() ? doc : nlohmann::json::object();
+}
+
+std::string last_error_line(const std::string& log_path) {
+    std::ifstream in(log_path);
+    std::string line, last, error;
+    while (std::getline(in, line)) {
+        if (line.empty()) continue;
+        last = line;
+        if (line.rfind("error: ", 0) == 0 || line.rfind("internal error: ", 0) == 0) error = line;
+    }
+    if (error.empty()) return last;
+    return error.substr(error.find(':') + 2);
+}
+
+std::string status_of_exit(int code) {
+    switch (code) {
+        case kOk:
+            return "solved";
+        case kInfeasible:
+            return "infeasible";
+        case kUnknown:
+            return "unknown";
+        case kInvalid:
+            return "invalid";
+        default:
+            return "error";
+    }
+}
+
+std::optional<double> optional_number(const nlohmann::json& doc, const char* key) {
+    const auto it = doc.find(key);
+    if (it == doc.end() || !it->is_number()) return std::nullopt;
+    return it->get<double>();
+}
+
+void read_solution(const std::string& path, SolveOutcome& o) {
+    const nlohmann::json doc = read_json(path);
+    const std::string status = doc.value("status", "");
+    if (status != o.status) {
+        o.message = "exit code " + std::to_string(o.exit_code) + " but the solution file says '" +
+                    status + "' (" + path + ")";
+        o.status = "error";
+        return;
+    }
+    o.name = doc.value("task", o.name);
+    if (const auto e = doc.find("explanation"); e != doc.end() && e->is_object()) {
+        o.message = e->value("message", "");
+        if (const auto c = e->find("core"); c != e->end() && c->is_array())
+            for (const auto& part : *c)
+                if (part.is_string()) o.core.push_back(part.get<std::string>());
+    }
+    const auto robot = doc.find("robot");
+    if (robot != doc.end() && robot->is_object()) {
+        if (const auto d = robot->find("dof"); d != robot->end() && d->is_number_integer())
+            o.dof = d->get<int>();
+        if (const auto l = robot->find("link_lengths"); l != robot->end() && l->is_array()) {
+            double sum = 0.0;
+            for (const auto& r : *l) sum += r.is_number() ? r.get<double>() : 0.0;
+            o.total_link_length = sum;
+        }
+    }
+    if (const auto c = doc.find("certificate"); c != doc.end() && c->is_object())
+        o.clearance_margin = optional_number(*c, "min_clearance_margin");
+}
+
+std::string task_name(const std::string& task_path) {
+    const nlohmann::json doc = read_json(task_path);
+    const auto it = doc.find("name");
+    return it != doc.end() && it->is_string() ? it->get<std::string>() : task_stem(task_path);
+}
+
+SolveOutcome outcome_of(const SolveJob& job, const ProcessResult& r, const SolveRunOptions& o) {
+    SolveOutcome out;
+    out.exit_code = r.exit_code;
+    out.signal = r.signal;
+    out.seconds = r.seconds;
+    out.name = task_name(job.task_path);
+    char buf[160];
+    if (r.timed_out) {
+        out.status = "timeout";
+        std::snprintf(buf, sizeof buf, "killed after %.2f s (time limit %g s + grace %g s)",
+                      r.seconds, o.time_limit, o.grace);
+        out.message = buf;
+    } else if (r.signal != 0) {
+        out.status = "crashed";
+        out.message = std::string("killed by signal ") + std::to_string(r.signal) + " (" +
+                      strsignal(r.signal) + ")";
+    } else {
+        out.status = status_of_exit(r.exit_code);
+        if (is_answer(out.status)) {
+            read_solution(job.solution_path, out);
+        } else {
+            out.message =
+                r.exit_code == 127 ? "could not be started" : last_error_line(job.log_path);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+bool is_answer(const std::string& status) {
+    return status == "solved" || status == "infeasible" || status == "unknown";
+}
+
+void run_solves(const std::vector<SolveJob>& jobs, const SolveRunOptions& options,
+                const OutcomeHandler& on_done, const std::function<void()>& on_tick) {
+    const std::string self = self_executable();
+    std::vector<ProcessSpec> specs;
+    for (const auto& job : jobs) specs.push_back(spec_for(job, options, self));
+    run_processes(
+        specs, options.jobs,
+        [&](std::size_t i, const ProcessResult& r) { on_done(i, outcome_of(jobs[i], r, options)); },
+        on_tick);
+}
+
+}  // namespace modsynth::app

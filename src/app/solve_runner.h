@@ -1,0 +1,51 @@
+#pragma once
+// Many `modsynth solve` runs, each in its own process of this executable
+// under a watchdog, and what each one answered, read back from its exit code
+// and its solution file.
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace modsynth::app {
+
+struct SolveJob {
+    std::string task_path;
+    std::string solution_path;
+    std::string log_path;  ///< the child's stdout and stderr
+};
+
+struct SolveRunOptions {
+    double time_limit = 60.0;  ///< passed to each solve
+    double grace = 10.0;       ///< seconds past time_limit before the watchdog kills
+    unsigned seed = 0;
+    int jobs = 1;
+};
+
+struct SolveOutcome {
+    /// "solved", "infeasible", "unknown" (answers); "invalid" (bad task),
+    /// "error" (internal error), "timeout" (killed by the watchdog),
+    /// "crashed" (killed by another signal) (failures).
+    std::string status;
+    int exit_code = -1;
+    int signal = 0;
+    double seconds = 0.0;
+    std::string name;  ///< the task's name, or the file's stem if unreadable
+    std::optional<int> dof;
+    std::optional<double> total_link_length;
+    std::optional<double> clearance_margin;  ///< certified; none when no obstacle bounds it
+    std::vector<std::string> core;
+    std::string message;  ///< explanation, or the error a failed run printed
+};
+
+bool is_answer(const std::string& status);
+
+using OutcomeHandler = std::function<void(std::size_t index, const SolveOutcome& outcome)>;
+
+/// Runs the jobs, options.jobs at a time; on_done is called as each ends.
+/// Throws Interrupted (process_pool.h) on SIGINT/SIGTERM.
+void run_solves(const std::vector<SolveJob>& jobs, const SolveRunOptions& options,
+                const OutcomeHandler& on_done, const std::function<void()>& on_tick = {});
+
+}  // namespace modsynth::app

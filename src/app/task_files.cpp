@@ -1,0 +1,107 @@
+#include "task_files.h"
+
+#include <modsynth/task/input_error.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+
+namespace modsynth::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() &&
+           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+bool is_companion(const std::string& name) {
+    return ends_with(name, ".expect.json") || ends_with(name, ".planted.json") ||
+           ends_with(name, ".solution.json");
+}
+
+std::vector<std::string> tasks_in_folder(const fs::path& folder) {
+    std::vector<std::string> json, planted;
+    for (const auto& e : fs::directory_iterator(folder)) {
+        if (!e.is_regular_file()) continue;
+        const std::string name = e.path().filename().string();
+        if (ends_with(name, ".task.json")) planted.push_back(e.path().generic_string());
+        if (ends_with(name, ".json") && !is_companion(name))
+            json.push_back(e.path().generic_string());
+    }
+    return planted.empty() ? json : planted;
+}
+
+std::string trim(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t\r");
+    if (b == std::string::npos) return "";
+    return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+}  // namespace
+
+std::vector<std::string> find_task_files(const std::string& dir) {
+    if (!fs::is_directory(dir)) throw task::InputError(dir, "not a folder");
+    std::vector<std::string> out = tasks_in_folder(dir);
+    for (const auto& e : fs::recursive_directory_iterator(dir)) {
+        if (!e.is_directory()) continue;
+        const auto more = tasks_in_folder(e.path());
+        out.insert(out.end(), more.begin(), more.end());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::vector<std::string> read_task_list(const std::string& list_file) {
+    std::ifstream in(list_file);
+    if (!in) throw task::InputError(list_file, "cannot be read");
+    std::vector<std::string> out;
+    for (std::string line; std::getline(in, line);) {
+        line = trim(line);
+        if (!line.empty() && line[0] != '#') out.push_back(line);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::string task_stem(const std::string& path) {
+    std::string name = fs::path(path).filename().string();
+    for (const std::string suffix : {".task.json", ".json"})
+        if (ends_with(name, suffix)) return name.substr(0, name.size() - suffix.size());
+    return name;
+}
+
+std::vector<std::string> unique_stems(const std::vector<std::string>& paths) {
+    std::map<std::string, int> seen;
+    std::vector<std::string> out;
+    for (const auto& p : paths) {
+        const std::string stem = task_stem(p);
+        const int n = ++seen[stem];
+        out.push_back(n == 1 ? stem : stem + "-" + std::to_string(n));
+    }
+    return out;
+}
+
+Shard parse_shard(const std::string& text) {
+    static const std::regex form(R"(\s*([0-9]{1,6})\s*/\s*([0-9]{1,6})\s*)");
+    std::smatch m;
+    if (!std::regex_match(text, m, form))
+        throw task::InputError("--shard", "expected K/N (e.g. 2/8), got '" + text + "'");
+    Shard s{std::stoi(m[1]), std::stoi(m[2])};
+    if (s.count < 1 || s.index < 1 || s.index > s.count)
+        throw task::InputError("--shard", "K/N needs 1 <= K <= N, got '" + text + "'");
+    return s;
+}
+
+std::vector<std::size_t> shard_positions(std::size_t size, const Shard& shard) {
+    std::vector<std::size_t> out;
+    for (std::size_t i = static_cast<std::size_t>(shard.index - 1); i < size;
+         i += static_cast<std::size_t>(shard.count))
+        out.push_back(i);
+    return out;
+}
+
+}  // namespace modsynth::app

@@ -1,0 +1,48 @@
+#include <modsynth/output/exports.h>
+
+#include <fstream>
+#include <functional>
+#include <stdexcept>
+
+#include <modsynth/output/build_sheet.h>
+#include <modsynth/output/csv.h>
+#include <modsynth/output/urdf.h>
+
+namespace modsynth::output {
+
+void write_text_file(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+std::vector<std::string> write_exports(const task::Task& task, const synth::Solution& solution,
+                                       const ExportPaths& paths, const ReportFigures& figures) {
+    if (!paths.report.empty()) write_text_file(paths.report, html_report(task, solution, figures));
+    const bool solved = solution.status == synth::Status::Solved;
+    const struct {
+        const std::string& path;
+        const char* option;
+        std::function<std::string()> make;
+    } robot_outputs[] = {
+        {paths.urdf, "--urdf", [&] { return robot_urdf(task, solution); }},
+        {paths.csv, "--csv", [&] { return trajectory_csv(solution); }},
+        {paths.build_sheet, "--build-sheet", [&] { return build_sheet(task, solution); }},
+    };
+    std::vector<std::string> skipped;
+    for (const auto& o : robot_outputs) {
+        if (o.path.empty()) continue;
+        if (solved) {
+            write_text_file(o.path, o.make());
+        } else {
+            skipped.push_back(std::string(o.option) + " " + o.path +
+                              ": not written; the solution is " +
+                              synth::to_string(solution.status) + ", so there is no robot");
+        }
+    }
+    return skipped;
+}
+
+}  // namespace modsynth::output

@@ -1,0 +1,315 @@
+#include <modsynth/output/report.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "plot.h"
+#include "report_assets.h"
+#include "report_layers.h"
+
+namespace modsynth::output {
+namespace {
+
+using plot::escape;
+using plot::Frame;
+
+constexpr double kPlotWidth = 900.0;
+constexpr double kPlotHeight = 720.0;
+
+std::string fmt(const char* format, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+std::string mm(double metres, const char* format = "%.1f") {
+    return fmt(format, 1000.0 * metres) + " mm";
+}
+
+std::string point_text(const geometry::Vec2& p) {
+    return "(" + fmt("%.4f", p.x()) + ", " + fmt("%.4f", p.y()) + ") m";
+}
+
+std::string row(const char* id, const std::string& name, const std::string& value) {
+    return std::string("<tr id=\"") + id + "\"><th>" + name + "</th><td>" + value + "</td></tr>\n";
+}
+
+// ------------------------------------------------------------------ figures
+
+std::string base_text(const task::Task& task, const kinematics::Robot& robot) {
+    std::string s = point_text(robot.base);
+    for (std::size_t i = 0; i < task.base_regions.size(); ++i) {
+        if (task.base_regions[i].contains(robot.base, 1e-9)) {
+            return s + ", in base_regions[" + std::to_string(i) + "]";
+        }
+    }
+    return s;
+}
+
+std::string links_text(const kinematics::Robot& robot) {
+    std::string s;
+    for (double r : robot.link_lengths) s += (s.empty() ? "" : ", ") + mm(r);
+    return s + " (total " + mm(robot.total_length()) + ")";
+}
+
+std::string margin_text(double metres, const char* what) {
+    return std::isfinite(metres) ? mm(metres, "%.2f") + " " + what : "nothing to check";
+}
+
+std::string stage_text(const ReportFigures& f) {
+    if (!f.front_seconds && !f.refine_seconds && !f.verify_seconds) {
+        return "n/a (a saved solution does not record them)";
+    }
+    const auto t = [](const std::optional<double>& s) {
+        return s ? fmt("%.3f s", *s) : std::string("n/a");
+    };
+    return "front stage " + t(f.front_seconds) + ", refinement " + t(f.refine_seconds) +
+           ", verification " + t(f.verify_seconds);
+}
+
+std::string certificate_rows(const synth::Solution& s, const ReportFigures& figures) {
+    const auto& c = s.certificate;
+    // Without a certificate these are only what the check found, not bounds.
+    const std::string prefix = c.ok ? "Certified " : "Uncertified ";
+    std::string out;
+    out += row("fig-clearance", prefix + "min. clearance",
+               margin_text(c.min_clearance, "beyond obstacle radius + link radius"));
+    out += row("fig-self-clearance", prefix + "self-collision margin",
+               margin_text(c.min_self_clearance, "beyond one link diameter"));
+    out += row("fig-deviation", "Max. EE deviation", mm(c.max_deviation, "%.3f") + " (bound)");
+    out += row("fig-joint-step", "Max. joint step", fmt("%.4f rad", c.max_joint_step));
+    if (!c.ok) {
+        out += row("fig-certificate", "Certificate",
+                   "<strong>not certified</strong>: " + std::to_string(c.violations.size()) +
+                       " violations");
+    }
+    if (!figures.certificate_note.empty()) {
+        out += row("fig-certificate-note", "Certificate source", escape(figures.certificate_note));
+    }
+    return out;
+}
+
+std::string solved_figures(const task::Task& task, const synth::Solution& s,
+                           const ReportFigures& figures) {
+    const auto& r = s.robot;
+    std::string out = "<table id=\"figures\">\n";
+    out += row("fig-status", "Status", "solved");
+    out += row("fig-dof", "Joints (DOF)", std::to_string(r.dof()));
+    out += row("fig-links", "Link lengths", links_text(r));
+    out += row("fig-base", "Base", base_text(task, r));
+    out += row(
+        "fig-elbow", "Elbow",
+        r.elbow > 0 ? "+1 (last joint bent counter-clockwise)" : "-1 (last joint bent clockwise)");
+    out += certificate_rows(s, figures);
+    out += row("fig-samples", "Control",
+               std::to_string(s.samples.size()) + " samples over " +
+                   fmt("%.2f s", s.samples.back().t - s.samples.front().t));
+    out += row("stage-times", "Time per stage", stage_text(figures));
+    return out + "</table>\n";
+}
+
+std::string failed_figures(const synth::Solution& s, const ReportFigures& figures) {
+    std::string out = "<table id=\"figures\">\n";
+    out += row("fig-status", "Status", synth::to_string(s.status));
+    out += row("fig-core", "Parts in conflict", std::to_string(s.explanation.core.size()));
+    out += row("stage-times", "Time per stage", stage_text(figures));
+    return out + "</table>\n";
+}
+
+// -------------------------------------------------------------- explanation
+
+const char* kind_name(geometry::PrimitiveKind k) {
+    switch (k) {
+        case geometry::PrimitiveKind::Line:
+            return "line";
+        case geometry::PrimitiveKind::Arc:
+            return "arc";
+        case geometry::PrimitiveKind::Circle:
+            return "circle";
+    }
+    return "";
+}
+
+/// The index in "name[i]" when the name is exactly that, else -1.
+int index_in(const std::string& part, const std::string& name) {
+    int i = -1;
+    char close = 0;
+    const std::string format = name + "[%d%c";
+    if (std::sscanf(part.c_str(), format.c_str(), &i, &close) == 2 && close == ']') return i;
+    return -1;
+}
+
+std::string describe_part(const task::Task& task, const std::string& part) {
+    const int j = index_in(part, "trajectory");
+    if (j >= 0 && j < static_cast<int>(task.trajectory.size())) {
+        const auto& p = task.trajectory[j];
+        return std::string(kind_name(p.kind)) + " of " + fmt("%.3f m", geometry::length(p)) +
+               " from " + point_text(p.start);
+    }
+    const int o = index_in(part, "obstacles");
+    if (o >= 0 && o < static_cast<int>(task.obstacles.size())) {
+        return "disc at " + point_text(task.obstacles[o].center) + ", radius " +
+               fmt("%.3f m", task.obstacles[o].radius);
+    }
+    const auto& r = task.robot;
+    if (part == "base_regions")
+        return std::to_string(task.base_regions.size()) + " rectangle(s) for the base";
+    if (part == "robot.max_link_length") {
+        return fmt("%.3f m", r.max_link_length) +
+               (task.base_regions.empty()
+                    ? std::string()
+                    : "; dashed: the farthest " + std::to_string(r.dof.back()) +
+                          " such links reach from the base regions");
+    }
+    if (part == "robot.min_link_length") return fmt("%.3f m", r.min_link_length);
+    if (part == "robot.link_diameter") return fmt("%.4f m", r.link_diameter);
+    return "";
+}
+
+std::string explanation(const task::Task& task, const synth::Solution& s) {
+    std::string out = "<section id=\"explanation\">\n<h2>";
+    out += s.status == synth::Status::Infeasible ? "Why no robot can do this task"
+                                                 : "Why no robot was found";
+    out += "</h2>\n<p id=\"explanation-message\">" + escape(s.explanation.message) + "</p>\n";
+    if (!s.explanation.core.empty()) {
+        out +=
+            "<p>The task parts that together cannot be satisfied (outlined in red):</p>\n"
+            "<ul id=\"core\">\n";
+        for (const auto& part : s.explanation.core) {
+            const std::string what = describe_part(task, part);
+            out += "<li class=\"core-part\" data-part=\"" + escape(part) + "\"><code>" +
+                   escape(part) + "</code>" + (what.empty() ? "" : ": " + escape(what)) + "</li>\n";
+        }
+        out += "</ul>\n";
+    }
+    return out + "</section>\n";
+}
+
+// ------------------------------------------------------------------- legend
+
+std::string legend(const task::Task& task, const layers::Core& core) {
+    std::string out = "<h2>Trajectory</h2>\n<ul class=\"legend\" id=\"legend\">\n";
+    for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
+        const auto& p = task.trajectory[j];
+        const std::string part = "trajectory[" + std::to_string(j) + "]";
+        out += "<li><span class=\"swatch\" style=\"background:" +
+               plot::primitive_colour(static_cast<int>(j)) + "\"></span><code>" + part +
+               "</code> " + kind_name(p.kind) + ", " + fmt("%.3f m", geometry::length(p)) +
+               (layers::in_core(core, part) ? " <strong>(in the core)</strong>" : "") + "</li>\n";
+    }
+    return out + "</ul>\n";
+}
+
+// --------------------------------------------------------------------- plot
+
+std::string svg(const task::Task& task, const synth::Solution& s, const Frame& f,
+                std::string* reach_caption) {
+    const bool solved = s.status == synth::Status::Solved;
+    const layers::Core core = solved ? layers::Core{} : s.explanation.core;
+    std::string out = "<svg id=\"plot\" width=\"" + plot::n2(f.width()) + "\" height=\"" +
+                      plot::n2(f.height()) + "\" viewBox=\"0 0 " + plot::n2(f.width()) + " " +
+                      plot::n2(f.height()) + "\" role=\"img\">\n";
+    if (solved) {
+        out += layers::reachable(task, s, f, reach_caption);
+        out += layers::swept(s, f);
+    }
+    if (!solved) out += layers::reach_limit(task, f, core);
+    out += layers::base_regions(task, f, core);
+    out +=
+        layers::obstacles(task, f, solved ? s.robot.link_diameter : task.robot.link_diameter, core);
+    out += layers::trajectory(task, f, core);
+    if (solved) {
+        out += layers::poses(s, f);
+        out += layers::robot(s, f);
+    }
+    return out + layers::scale_bar(f) + "</svg>\n";
+}
+
+std::string controls() {
+    return "<div id=\"controls\"><button id=\"play\" type=\"button\">Play</button>"
+           "<input id=\"scrub\" type=\"range\" value=\"0\" aria-label=\"time\">"
+           "<span id=\"clock\"></span><select id=\"speed\" aria-label=\"speed\">"
+           "<option value=\"0.5\">0.5x</option><option value=\"1\" selected>1x</option>"
+           "<option value=\"2\">2x</option><option value=\"5\">5x</option></select></div>\n"
+           "<div id=\"readout\"></div>\n"
+           "<div id=\"toggles\">"
+           "<label><input type=\"checkbox\" data-layer=\"reachable\" checked> reachable "
+           "space</label>"
+           "<label><input type=\"checkbox\" data-layer=\"swept\" checked> swept regions</label>"
+           "<label><input type=\"checkbox\" id=\"only-current\"> only the current "
+           "primitive's</label>"
+           "<label><input type=\"checkbox\" data-layer=\"poses\" checked> poses</label>"
+           "<label><input type=\"checkbox\" data-layer=\"trail\" checked> trail</label></div>\n";
+}
+
+/// The motion for the script: numbers only, so it can sit in a script element.
+std::string motion_data(const synth::Solution& s, const Frame& f) {
+    const auto list = [](const auto& values, const char* format) {
+        std::string out = "[";
+        for (std::size_t i = 0; i < values.size(); ++i)
+            out += (i ? "," : "") + fmt(format, values[i]);
+        return out + "]";
+    };
+    std::vector<double> t, q, ph, pr;
+    for (const auto& x : s.samples) {
+        t.push_back(x.t);
+        q.insert(q.end(), x.q.begin(), x.q.end());
+        ph.push_back(x.phase == control::Phase::Transition ? 1.0 : 0.0);
+        pr.push_back(x.primitive);
+    }
+    return "<script type=\"application/json\" id=\"motion-data\">{\"base\":[" +
+           fmt("%.9g", s.robot.base.x()) + "," + fmt("%.9g", s.robot.base.y()) +
+           "],\"L\":" + list(s.robot.link_lengths, "%.9g") +
+           ",\"f\":{\"x0\":" + fmt("%.9g", f.min.x()) + ",\"y1\":" + fmt("%.9g", f.max.y()) +
+           ",\"s\":" + fmt("%.9g", f.scale) + ",\"p\":" + fmt("%.9g", f.pad) +
+           "},\"t\":" + list(t, "%.6f") + ",\"q\":" + list(q, "%.6f") +
+           ",\"ph\":" + list(ph, "%.0f") + ",\"pr\":" + list(pr, "%.0f") + "}</script>\n";
+}
+
+std::string header(const task::Task& task, const synth::Solution& s) {
+    const std::string status = synth::to_string(s.status);
+    const std::string name = task.name.empty() ? "task" : task.name;
+    return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta "
+           "charset=\"utf-8\">\n<title>modsynth: " +
+           escape(name) + "</title>\n<style>" + assets::kStyle +
+           "</style>\n</head>\n<body>\n"
+           "<header><h1>" +
+           escape(name) + " <span class=\"status " + status + "\">" + status +
+           "</span></h1>\n<p class=\"note\">" + std::to_string(task.trajectory.size()) +
+           " primitives, " + std::to_string(task.obstacles.size()) + " obstacles, " +
+           std::to_string(task.base_regions.size()) +
+           " base regions. Task plane in metres, "
+           "x to the right, y up.</p></header>\n";
+}
+
+}  // namespace
+
+std::string html_report(const task::Task& task, const synth::Solution& solution,
+                        const ReportFigures& figures) {
+    const bool solved = solution.status == synth::Status::Solved;
+    const Frame frame = plot::fit_frame(task, solution, kPlotWidth, kPlotHeight);
+    std::string caption;
+    const std::string plot_svg = svg(task, solution, frame, &caption);
+    std::string out = header(task, solution) + "<main>\n<section id=\"plot-section\">\n" + plot_svg;
+    if (solved) out += controls();
+    out += "</section>\n<aside>\n";
+    if (!solved) out += explanation(task, solution);
+    out += "<h2>Figures</h2>\n";
+    out += solved ? solved_figures(task, solution, figures) : failed_figures(solution, figures);
+    out += legend(task, solved ? layers::Core{} : solution.explanation.core);
+    if (solved) {
+        out += "<p class=\"note\" id=\"reach-caption\">" + escape(caption) +
+               " Coloured areas: the region the arm sweeps while tracing each primitive "
+               "(dashed: transitions). Grey outlines: the arm at the start of each primitive. "
+               "Dotted circles: how close a link's axis may come to each obstacle.</p>\n";
+    }
+    out += "</aside>\n</main>\n";
+    if (solved) {
+        out += motion_data(solution, frame);
+        out += std::string("<script>") + assets::kScript + "</script>\n";
+    }
+    return out + "</body>\n</html>\n";
+}
+
+}  // namespace modsynth::output

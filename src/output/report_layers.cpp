@@ -1,0 +1,316 @@
+#include "report_layers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <modsynth/geometry/polygon.h>
+#include <modsynth/kinematics/kinematics.h>
+#include <modsynth/output/reachable_space.h>
+
+namespace modsynth::output::layers {
+namespace {
+
+using plot::n2;
+using plot::pt;
+
+/// Pixels per reachable-space cell: fine enough to show the shape, coarse
+/// enough to keep the file small.
+constexpr double kReachCellPixels = 3.0;
+/// Joint change (rad) between the poses that outline a swept region; the
+/// outline then strays far less than a pixel from the true one.
+constexpr double kSweptStep = 0.03;
+
+int primitive_count(const synth::Solution& s) {
+    int n = 0;
+    for (const auto& x : s.samples) n = std::max(n, x.primitive + 1);
+    return n;
+}
+
+std::string part_attributes(const Core& core, const std::string& part, const char* cls) {
+    return std::string(" class=\"") + cls + (in_core(core, part) ? " core" : "") +
+           "\" data-part=\"" + part + "\"";
+}
+
+/// Horizontal runs of reachable cells as one path.
+std::string grid_path(const ReachGrid& g, const plot::Frame& f) {
+    std::string d;
+    const double h = g.cell * f.scale;
+    for (int j = 0; j < g.ny; ++j) {
+        for (int i = 0; i < g.nx;) {
+            if (!g.at(i, j)) {
+                ++i;
+                continue;
+            }
+            int end = i;
+            while (end < g.nx && g.at(end, j)) ++end;
+            const Vec2 top_left = f.px(g.min + g.cell * Vec2(i, j + 1));
+            const double w = (end - i) * h;
+            d += "M" + n2(top_left.x()) + "," + n2(top_left.y()) + "h" + n2(w) + "v" + n2(h) + "h" +
+                 n2(-w) + "Z";
+            i = end;
+        }
+    }
+    return d;
+}
+
+/// The first sample of each primitive's trace: where link 1 of a 3-joint
+/// arm stands while the primitive is traced, and the pose drawn for it.
+std::vector<int> primitive_starts(const synth::Solution& s, int primitives) {
+    std::vector<int> first(static_cast<std::size_t>(primitives), -1);
+    for (int i = 0; i < static_cast<int>(s.samples.size()); ++i) {
+        const auto& x = s.samples[i];
+        if (x.phase == control::Phase::Trace && x.primitive < primitives &&
+            first[x.primitive] < 0) {
+            first[x.primitive] = i;
+        }
+    }
+    return first;
+}
+
+std::string reach_path(const DistalPair& arm, const task::Task& task, const synth::Solution& s,
+                       const plot::Frame& f, const std::string& attributes) {
+    const ReachGrid g = reachable_space(arm, task.obstacles, s.robot.link_diameter, f.min, f.max,
+                                        kReachCellPixels / f.scale);
+    return "<path class=\"reach\"" + attributes + " d=\"" + grid_path(g, f) + "\"/>\n";
+}
+
+/// Poses every kSweptStep of joint motion among the given samples.
+std::vector<std::vector<Vec2>> outline_poses(const synth::Solution& s,
+                                             const std::vector<int>& idx) {
+    std::vector<std::vector<Vec2>> poses;
+    const std::vector<double>* kept = nullptr;
+    for (std::size_t n = 0; n < idx.size(); ++n) {
+        const auto& q = s.samples[idx[n]].q;
+        double change = kept ? 0.0 : 1e9;
+        if (kept) {
+            for (std::size_t k = 0; k < q.size(); ++k)
+                change = std::max(change, std::abs(q[k] - (*kept)[k]));
+        }
+        if (change >= kSweptStep || n + 1 == idx.size()) {
+            poses.push_back(kinematics::forward(s.robot.base, s.robot.link_lengths, q));
+            kept = &q;
+        }
+    }
+    return poses;
+}
+
+/// Each link between consecutive poses covers (nearly) the hull of its two
+/// positions; hulls all wind the same way, so their union fills solidly.
+std::string swept_path_data(const std::vector<std::vector<Vec2>>& poses, const plot::Frame& f) {
+    std::string d;
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        const auto& a = poses[i];
+        const auto& b = i + 1 < poses.size() ? poses[i + 1] : poses[i];
+        for (std::size_t k = 0; k + 1 < a.size(); ++k) {
+            d += plot::path_data(f, geometry::convex_hull({a[k], a[k + 1], b[k + 1], b[k]}), true);
+        }
+    }
+    return d;
+}
+
+std::string swept_element(const synth::Solution& s, const plot::Frame& f,
+                          const std::vector<int>& idx, const char* cls, int j) {
+    if (idx.empty()) return "";
+    const std::string colour = plot::primitive_colour(j);
+    return std::string("<path class=\"") + cls + "\" data-primitive=\"" + std::to_string(j) +
+           "\" fill=\"" + colour + "\" stroke=\"" + colour + "\" stroke-width=\"" +
+           n2(s.robot.link_diameter * f.scale) + "\" d=\"" +
+           swept_path_data(outline_poses(s, idx), f) + "\"/>\n";
+}
+
+std::string arrow(const geometry::Primitive& p, const plot::Frame& f, const std::string& colour) {
+    const double mid = geometry::length(p) / 2.0;
+    const Vec2 tip = f.px(geometry::point_at(p, mid));
+    Vec2 t = geometry::tangent_at(p, mid);
+    t.y() = -t.y();  // screen y points down
+    const Vec2 n = geometry::perp(t);
+    const Vec2 a = tip - 9.0 * t + 4.5 * n;
+    const Vec2 b = tip - 9.0 * t - 4.5 * n;
+    return "<path class=\"arrow\" fill=\"" + colour + "\" d=\"M" + n2(tip.x()) + "," + n2(tip.y()) +
+           "L" + n2(a.x()) + "," + n2(a.y()) + "L" + n2(b.x()) + "," + n2(b.y()) + "Z\"/>";
+}
+
+std::string arm_points(const plot::Frame& f, const std::vector<Vec2>& joints) {
+    std::string s;
+    for (const Vec2& p : joints) s += (s.empty() ? "" : " ") + pt(f, p);
+    return s;
+}
+
+}  // namespace
+
+bool in_core(const Core& core, const std::string& part) {
+    for (const auto& c : core) {
+        if (c == part) return true;
+        if (part.size() > c.size() && part.compare(0, c.size(), c) == 0 &&
+            (part[c.size()] == '[' || part[c.size()] == '.')) {
+            return true;
+        }
+    }
+    return false;
+}
+
+std::string reachable(const task::Task& task, const synth::Solution& s, const plot::Frame& f,
+                      std::string* caption) {
+    std::string out = "<g id=\"reachable\">\n";
+    if (s.robot.dof() == 2) {
+        out += reach_path(distal_pair(s.robot, std::vector<double>{}), task, s, f,
+                          " data-primitive=\"all\"");
+        *caption =
+            "Shaded grey: every point the arm reaches, on either elbow branch, with both "
+            "links clear of every obstacle and the end-effector clear of link 1.";
+        return out + "</g>\n";
+    }
+    const auto starts = primitive_starts(s, static_cast<int>(task.trajectory.size()));
+    for (int j = 0; j < static_cast<int>(starts.size()); ++j) {
+        if (starts[j] < 0) continue;
+        out += reach_path(distal_pair(s.robot, s.samples[starts[j]].q), task, s, f,
+                          " data-primitive=\"" + std::to_string(j) + "\"");
+    }
+    *caption =
+        "Shaded grey: for the primitive being traced, every point the last two links "
+        "reach, on either elbow branch, with the leading links held as at the start of "
+        "that primitive, all links clear of every obstacle and the end-effector clear of "
+        "every link but the last.";
+    return out + "</g>\n";
+}
+
+std::string swept(const synth::Solution& s, const plot::Frame& f) {
+    const int primitives = primitive_count(s);
+    std::vector<std::vector<int>> trace(primitives), transition(primitives);
+    for (int i = 0; i < static_cast<int>(s.samples.size()); ++i) {
+        const auto& x = s.samples[i];
+        if (x.primitive >= primitives) continue;
+        (x.phase == control::Phase::Trace ? trace : transition)[x.primitive].push_back(i);
+    }
+    std::string out = "<g id=\"swept\">\n";
+    for (int j = 0; j < primitives; ++j) {
+        out += swept_element(s, f, trace[j], "swept", j);
+        out += swept_element(s, f, transition[j], "swept-transition", j);
+    }
+    return out + "</g>\n";
+}
+
+std::string base_regions(const task::Task& task, const plot::Frame& f, const Core& core) {
+    std::string out = "<g id=\"base-regions\">\n";
+    for (std::size_t i = 0; i < task.base_regions.size(); ++i) {
+        const auto& r = task.base_regions[i];
+        const Vec2 tl = f.px({r.min.x(), r.max.y()});
+        const Vec2 br = f.px({r.max.x(), r.min.y()});
+        out += "<rect" +
+               part_attributes(core, "base_regions[" + std::to_string(i) + "]", "base-region") +
+               " x=\"" + n2(tl.x()) + "\" y=\"" + n2(tl.y()) + "\" width=\"" +
+               n2(std::max(1.0, br.x() - tl.x())) + "\" height=\"" +
+               n2(std::max(1.0, br.y() - tl.y())) + "\"/>\n";
+    }
+    return out + "</g>\n";
+}
+
+std::string obstacles(const task::Task& task, const plot::Frame& f, double diameter,
+                      const Core& core) {
+    std::string out = "<g id=\"obstacles\">\n";
+    for (std::size_t i = 0; i < task.obstacles.size(); ++i) {
+        const auto& o = task.obstacles[i];
+        const Vec2 c = f.px(o.center);
+        const std::string part = "obstacles[" + std::to_string(i) + "]";
+        out += "<circle class=\"obstacle-margin\" cx=\"" + n2(c.x()) + "\" cy=\"" + n2(c.y()) +
+               "\" r=\"" + n2((o.radius + diameter / 2.0) * f.scale) + "\"/>";
+        out += "<circle" + part_attributes(core, part, "obstacle") + " cx=\"" + n2(c.x()) +
+               "\" cy=\"" + n2(c.y()) + "\" r=\"" + n2(o.radius * f.scale) + "\"><title>" + part +
+               "</title></circle>\n";
+    }
+    return out + "</g>\n";
+}
+
+std::string trajectory(const task::Task& task, const plot::Frame& f, const Core& core) {
+    std::string out = "<g id=\"trajectory\">\n";
+    for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
+        const auto& p = task.trajectory[j];
+        const std::string part = "trajectory[" + std::to_string(j) + "]";
+        const std::string colour = plot::primitive_colour(static_cast<int>(j));
+        out += "<path" + part_attributes(core, part, "primitive") + " data-primitive=\"" +
+               std::to_string(j) + "\" stroke=\"" + colour + "\" d=\"" +
+               plot::path_data(f, plot::polyline(p, f), false) + "\"><title>" + part +
+               "</title></path>" + arrow(p, f, colour) + "\n";
+    }
+    const Vec2 start = f.px(task.trajectory.front().start);
+    out += "<circle class=\"path-start\" cx=\"" + n2(start.x()) + "\" cy=\"" + n2(start.y()) +
+           "\" r=\"4\"><title>start of the path</title></circle>\n";
+    return out + "</g>\n";
+}
+
+std::string poses(const synth::Solution& s, const plot::Frame& f) {
+    const int primitives = primitive_count(s);
+    const auto starts = primitive_starts(s, primitives);
+    std::string out = "<g id=\"poses\">\n";
+    for (int j = 0; j < primitives; ++j) {
+        if (starts[j] < 0) continue;
+        const auto joints =
+            kinematics::forward(s.robot.base, s.robot.link_lengths, s.samples[starts[j]].q);
+        out += "<polyline class=\"pose\" data-primitive=\"" + std::to_string(j) + "\" points=\"" +
+               arm_points(f, joints) + "\" stroke-width=\"" + n2(s.robot.link_diameter * f.scale) +
+               "\"><title>the arm at the start of trajectory[" + std::to_string(j) +
+               "]</title></polyline>\n";
+    }
+    return out + "</g>\n";
+}
+
+std::string robot(const synth::Solution& s, const plot::Frame& f) {
+    const auto joints =
+        kinematics::forward(s.robot.base, s.robot.link_lengths, s.samples.front().q);
+    const std::string width = n2(s.robot.link_diameter * f.scale);
+    std::string out = "<polyline id=\"trail\" points=\"\"/>\n<g id=\"robot\">\n";
+    for (std::size_t k = 0; k + 1 < joints.size(); ++k) {
+        const Vec2 a = f.px(joints[k]);
+        const Vec2 b = f.px(joints[k + 1]);
+        out += "<line class=\"link\" x1=\"" + n2(a.x()) + "\" y1=\"" + n2(a.y()) + "\" x2=\"" +
+               n2(b.x()) + "\" y2=\"" + n2(b.y()) + "\" stroke-width=\"" + width + "\"/>\n";
+    }
+    for (std::size_t k = 0; k < joints.size(); ++k) {
+        const Vec2 c = f.px(joints[k]);
+        const bool ee = k + 1 == joints.size();
+        out += std::string("<circle class=\"") + (ee ? "ee" : "joint") + "\" cx=\"" + n2(c.x()) +
+               "\" cy=\"" + n2(c.y()) + "\" r=\"" + (ee ? "4" : "5") + "\"/>\n";
+    }
+    const Vec2 b = f.px(s.robot.base);
+    out += "<rect class=\"base-marker\" x=\"" + n2(b.x() - 7) + "\" y=\"" + n2(b.y() - 7) +
+           "\" width=\"14\" height=\"14\"><title>base (joint 1)</title></rect>\n";
+    return out + "</g>\n";
+}
+
+std::string reach_limit(const task::Task& task, const plot::Frame& f, const Core& core) {
+    const std::string part = "robot.max_link_length";
+    if (!in_core(core, part) || task.base_regions.empty()) return "";
+    const double reach = task.robot.dof.back() * task.robot.max_link_length;
+    const std::string r = n2(reach * f.scale);
+    std::string out = "<g id=\"reach-limit\">\n";
+    for (const auto& b : task.base_regions) {
+        const Vec2 tl = f.px({b.min.x() - reach, b.max.y() + reach});
+        const Vec2 br = f.px({b.max.x() + reach, b.min.y() - reach});
+        out += "<rect" + part_attributes(core, part, "reach-limit") + " x=\"" + n2(tl.x()) +
+               "\" y=\"" + n2(tl.y()) + "\" width=\"" + n2(br.x() - tl.x()) + "\" height=\"" +
+               n2(br.y() - tl.y()) + "\" rx=\"" + r + "\" ry=\"" + r +
+               "\"><title>farthest reach of any allowed robot</title></rect>\n";
+    }
+    return out + "</g>\n";
+}
+
+std::string scale_bar(const plot::Frame& f) {
+    // The largest of 1, 2, 5 x 10^k metres that fits in a fifth of the plot.
+    const double span = (f.max.x() - f.min.x()) / 5.0;
+    double bar = std::pow(10.0, std::floor(std::log10(span)));
+    if (5.0 * bar <= span)
+        bar *= 5.0;
+    else if (2.0 * bar <= span)
+        bar *= 2.0;
+    const double x0 = f.pad;
+    const double y0 = f.height() - f.pad / 2.0;
+    char label[32];
+    std::snprintf(label, sizeof label, bar >= 1.0 ? "%.0f m" : "%.0f mm",
+                  bar >= 1.0 ? bar : bar * 1000.0);
+    return "<g id=\"scale-bar\"><path d=\"M" + n2(x0) + "," + n2(y0 - 4) + "v4h" +
+           n2(bar * f.scale) + "v-4\"/><text x=\"" + n2(x0 + bar * f.scale + 6) + "\" y=\"" +
+           n2(y0 + 4) + "\">" + label + "</text></g>\n";
+}
+
+}  // namespace modsynth::output::layers

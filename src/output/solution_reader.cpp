@@ -1,0 +1,301 @@
+#include <modsynth/output/solution_reader.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include <modsynth/kinematics/kinematics.h>
+
+namespace modsynth::output {
+namespace {
+
+using nlohmann::json;
+using task::InputError;
+
+constexpr const char* kFormat = "modsynth-solution/1";
+constexpr const char* kDocument = "(document)";
+
+std::string member(const std::string& part, const char* key) {
+    return part.empty() ? std::string(key) : part + "." + key;
+}
+
+std::string element(const std::string& part, std::size_t i) {
+    return part + "[" + std::to_string(i) + "]";
+}
+
+/// What the document holds instead of what was expected, in plain words.
+std::string describe(const json& j) {
+    if (j.is_array()) return "a list";
+    if (j.is_object()) return "an object";
+    if (j.is_null()) return "null";
+    std::string s = j.dump();
+    if (s.size() > 40) s = s.substr(0, 37) + "...";
+    return s;
+}
+
+const json& required(const json& obj, const std::string& part, const char* key) {
+    const auto it = obj.find(key);
+    if (it == obj.end()) throw InputError(member(part, key), "missing");
+    return *it;
+}
+
+const json* optional(const json& obj, const char* key) {
+    const auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+}
+
+void require_object(const json& j, const std::string& part) {
+    if (!j.is_object()) throw InputError(part, "expected an object, got " + describe(j));
+}
+
+void require_array(const json& j, const std::string& part, const char* what) {
+    if (!j.is_array()) {
+        throw InputError(part, std::string("expected a list of ") + what + ", got " + describe(j));
+    }
+}
+
+double finite_number(const json& j, const std::string& part) {
+    if (!j.is_number() || !std::isfinite(j.get<double>())) {
+        throw InputError(part, "expected a finite number, got " + describe(j));
+    }
+    return j.get<double>();
+}
+
+double positive_number(const json& j, const std::string& part) {
+    const double v = finite_number(j, part);
+    if (v <= 0.0) throw InputError(part, "must be greater than 0, got " + describe(j));
+    return v;
+}
+
+/// Certificate margins are null when nothing was there to check.
+double number_or_infinity(const json& j, const std::string& part) {
+    return j.is_null() ? std::numeric_limits<double>::infinity() : finite_number(j, part);
+}
+
+int integer(const json& j, const std::string& part, int min, int max) {
+    if (!j.is_number_integer() || j.get<long long>() < min || j.get<long long>() > max) {
+        throw InputError(part, "expected a whole number from " + std::to_string(min) + " to " +
+                                   std::to_string(max) + ", got " + describe(j));
+    }
+    return j.get<int>();
+}
+
+std::string text(const json& j, const std::string& part) {
+    if (!j.is_string()) throw InputError(part, "expected text, got " + describe(j));
+    return j.get<std::string>();
+}
+
+std::vector<double> numbers(const json& j, const std::string& part, int count) {
+    require_array(j, part, "numbers");
+    if (static_cast<int>(j.size()) != count) {
+        throw InputError(part, "expected " + std::to_string(count) +
+                                   " numbers (one per joint), got " + std::to_string(j.size()));
+    }
+    std::vector<double> out;
+    for (std::size_t i = 0; i < j.size(); ++i) out.push_back(finite_number(j[i], element(part, i)));
+    return out;
+}
+
+// ------------------------------------------------------------------- parts
+
+synth::Status parse_status(const json& doc) {
+    const std::string s = text(required(doc, "", "status"), "status");
+    if (s == "solved") return synth::Status::Solved;
+    if (s == "infeasible") return synth::Status::Infeasible;
+    if (s == "unknown") return synth::Status::Unknown;
+    throw InputError("status",
+                     "expected \"solved\", \"infeasible\" or \"unknown\", got \"" + s + "\"");
+}
+
+synth::Explanation parse_explanation(const json& doc) {
+    const std::string part = "explanation";
+    const json& e = required(doc, "", "explanation");
+    require_object(e, part);
+    synth::Explanation out;
+    out.message = text(required(e, part, "message"), member(part, "message"));
+    if (const json* core = optional(e, "core")) {
+        const std::string cp = member(part, "core");
+        require_array(*core, cp, "task parts");
+        for (std::size_t i = 0; i < core->size(); ++i) {
+            out.core.push_back(text((*core)[i], element(cp, i)));
+        }
+    }
+    return out;
+}
+
+int parse_elbow(const json& j, const std::string& part) {
+    const int e = integer(j, part, -1, 1);
+    if (e == 0) throw InputError(part, "expected +1 or -1, got 0");
+    return e;
+}
+
+kinematics::Robot parse_robot(const json& doc) {
+    const std::string part = "robot";
+    const json& r = required(doc, "", "robot");
+    require_object(r, part);
+    kinematics::Robot robot;
+    const int dof =
+        integer(required(r, part, "dof"), member(part, "dof"), task::kMinDof, task::kMaxDof);
+    const json& base = required(r, part, "base");
+    const std::vector<double> b = numbers(base, member(part, "base"), 2);
+    robot.base = {b[0], b[1]};
+    const std::string lp = member(part, "link_lengths");
+    robot.link_lengths = numbers(required(r, part, "link_lengths"), lp, dof);
+    for (int k = 0; k < dof; ++k) positive_number(r["link_lengths"][k], element(lp, k));
+    robot.link_diameter =
+        positive_number(required(r, part, "link_diameter"), member(part, "link_diameter"));
+    robot.elbow = 0;
+    if (const json* e = optional(r, "elbow")) robot.elbow = parse_elbow(*e, member(part, "elbow"));
+    return robot;
+}
+
+control::Phase parse_phase(const json& j, const std::string& part) {
+    const std::string p = text(j, part);
+    if (p == "trace") return control::Phase::Trace;
+    if (p == "transition") return control::Phase::Transition;
+    throw InputError(part, "expected \"trace\" or \"transition\", got \"" + p + "\"");
+}
+
+control::Sample parse_sample(const json& j, const std::string& part, int dof) {
+    require_object(j, part);
+    control::Sample s;
+    s.t = finite_number(required(j, part, "t"), member(part, "t"));
+    s.phase = parse_phase(required(j, part, "phase"), member(part, "phase"));
+    s.primitive = integer(required(j, part, "primitive"), member(part, "primitive"), 0,
+                          std::numeric_limits<int>::max());
+    s.q = numbers(required(j, part, "q"), member(part, "q"), dof);
+    return s;
+}
+
+std::vector<control::Sample> parse_samples(const json& doc, int dof) {
+    const std::string part = "samples";
+    const json& list = required(doc, "", "samples");
+    require_array(list, part, "samples");
+    if (list.empty()) throw InputError(part, "is empty; a solved solution needs its motion");
+    std::vector<control::Sample> out;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        out.push_back(parse_sample(list[i], element(part, i), dof));
+        if (i > 0 && out[i].t < out[i - 1].t) {
+            throw InputError(member(element(part, i), "t"), "time goes backwards");
+        }
+    }
+    return out;
+}
+
+verify::Certificate parse_certificate(const json& c) {
+    const std::string part = "certificate";
+    require_object(c, part);
+    verify::Certificate out;
+    out.ok = true;
+    out.min_clearance = number_or_infinity(required(c, part, "min_clearance_margin"),
+                                           member(part, "min_clearance_margin"));
+    out.min_self_clearance = number_or_infinity(required(c, part, "min_self_collision_margin"),
+                                                member(part, "min_self_collision_margin"));
+    out.max_deviation =
+        finite_number(required(c, part, "max_ee_deviation"), member(part, "max_ee_deviation"));
+    if (const json* v = optional(c, "max_joint_step")) {
+        out.max_joint_step = finite_number(*v, member(part, "max_joint_step"));
+    }
+    return out;
+}
+
+/// Without an explicit elbow, the branch the motion is on: the sign of the
+/// last joint's angle where the arm is not straight.
+int elbow_from_samples(const std::vector<control::Sample>& samples) {
+    for (const auto& s : samples) {
+        const int e = kinematics::elbow_sign(s.q.back());
+        if (e != 0) return e;
+    }
+    return 1;
+}
+
+void check_format(const json& doc) {
+    const json& f = required(doc, "", "format");
+    if (!f.is_string() || f.get<std::string>() != kFormat) {
+        throw InputError("format", std::string("expected \"") + kFormat + "\", got " + describe(f) +
+                                       "; this is not a solution file modsynth can read");
+    }
+}
+
+}  // namespace
+
+ParsedSolution parse_solution(const json& doc) {
+    if (!doc.is_object()) {
+        throw InputError(kDocument,
+                         "expected a JSON object {\"format\": \"modsynth-solution/1\", "
+                         "...}, got " +
+                             describe(doc));
+    }
+    check_format(doc);
+    ParsedSolution out;
+    synth::Solution& s = out.solution;
+    if (const json* name = optional(doc, "task")) s.task_name = text(*name, "task");
+    s.status = parse_status(doc);
+    if (s.status != synth::Status::Solved) {
+        s.explanation = parse_explanation(doc);
+        return out;
+    }
+    s.robot = parse_robot(doc);
+    s.samples = parse_samples(doc, s.robot.dof());
+    if (s.robot.elbow == 0) s.robot.elbow = elbow_from_samples(s.samples);
+    if (const json* c = optional(doc, "certificate")) {
+        s.certificate = parse_certificate(*c);
+        out.has_certificate = true;
+    }
+    return out;
+}
+
+ParsedSolution parse_solution_text(std::string_view text) {
+    json doc;
+    try {
+        doc = json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        const std::string_view head = text.substr(0, std::min<std::size_t>(e.byte, text.size()));
+        const std::size_t line = 1 + std::count(head.begin(), head.end(), '\n');
+        const std::size_t nl = head.rfind('\n');
+        const std::size_t column =
+            nl == std::string_view::npos ? head.size() : head.size() - nl - 1;
+        throw InputError(kDocument, "not valid JSON at line " + std::to_string(line) + ", column " +
+                                        std::to_string(column));
+    }
+    return parse_solution(doc);
+}
+
+ParsedSolution load_solution(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        throw InputError(path, "is a folder, not a solution file");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw InputError(path,
+                         std::string("cannot open the solution file: ") + std::strerror(errno));
+    }
+    std::ostringstream content;
+    content << in.rdbuf();
+    if (in.bad()) throw InputError(path, "cannot read the solution file");
+    return parse_solution_text(content.str());
+}
+
+void check_solution_fits(const task::Task& task, const synth::Solution& solution) {
+    if (!solution.task_name.empty() && !task.name.empty() && solution.task_name != task.name) {
+        throw InputError("task", "the solution is for task \"" + solution.task_name + "\", not \"" +
+                                     task.name + "\"");
+    }
+    const int primitives = static_cast<int>(task.trajectory.size());
+    for (std::size_t i = 0; i < solution.samples.size(); ++i) {
+        if (solution.samples[i].primitive >= primitives) {
+            throw InputError(member(element("samples", i), "primitive"),
+                             "the task has only " + std::to_string(primitives) + " primitives");
+        }
+    }
+}
+
+}  // namespace modsynth::output

@@ -1,0 +1,276 @@
+#include <modsynth/synth/explanation.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include <modsynth/geometry/distance.h>
+#include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/synthesizer.h>
+
+namespace modsynth::synth {
+namespace {
+
+using geometry::Vec2;
+
+std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, f, a, b, c);
+    return buf;
+}
+
+bool has(const std::vector<std::string>& v, const std::string& s) {
+    return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+std::vector<std::string> with_prefix(const std::vector<std::string>& v, const std::string& prefix) {
+    std::vector<std::string> out;
+    for (const auto& s : v)
+        if (s.rfind(prefix, 0) == 0) out.push_back(s);
+    return out;
+}
+
+int index_of(const std::string& part) {
+    const auto open = part.find('['), close = part.find(']');
+    return std::stoi(part.substr(open + 1, close - open - 1));
+}
+
+std::string listing(const std::vector<std::string>& parts, const char* last = " and ") {
+    std::string s;
+    for (std::size_t i = 0; i < parts.size(); ++i)
+        s += (i == 0 ? "" : (i + 1 == parts.size() ? last : ", ")) + parts[i];
+    return s;
+}
+
+std::string joint_counts(const task::Task& task) {
+    std::vector<std::string> d;
+    for (int k : task.robot.dof) d.push_back(std::to_string(k));
+    return listing(d, " or ");
+}
+
+// Front stage verdict over every allowed joint count: true when some count
+// is satisfiable (the conflict is gone), false when all are unsat or undecided.
+bool conflict_free(const task::Task& task, double time_limit) {
+    for (int dof : task.robot.dof) {
+        smt::FrontStageOptions o;
+        o.time_limit = time_limit;
+        smt::FrontStage fs(task, dof, o);
+        if (fs.check() == smt::FrontStage::Result::Sat) return true;
+    }
+    return false;
+}
+
+// Smallest value in [lo, hi] (by bisection to `tolerance`) for which
+// `free(value)` holds, assuming monotonicity; nullopt if not even at hi.
+template <typename Free>
+std::optional<double> smallest(double lo, double hi, double tolerance, Free free) {
+    if (!free(hi)) return std::nullopt;
+    while (hi - lo > tolerance) {
+        const double mid = 0.5 * (lo + hi);
+        (free(mid) ? hi : lo) = mid;
+    }
+    return hi;
+}
+
+std::string attempt(const task::Task& relaxed, double seconds) {
+    SynthesisOptions options;
+    options.time_limit = seconds;
+    const Solution s = synthesize(relaxed, options);
+    if (s.status == Status::Solved) {
+        std::string links;
+        for (double r : s.robot.link_lengths) links += fmt(links.empty() ? "%.3f" : " + %.3f", r);
+        return "solved: " + std::to_string(s.robot.dof()) + " joints, links " + links + " m";
+    }
+    if (s.status == Status::Infeasible) return "still infeasible: " + s.explanation.message;
+    return "the conflict is gone, but no robot was found within " + fmt("%.0f s", seconds);
+}
+
+}  // namespace
+
+std::vector<std::string> common_core(const task::Task& task,
+                                     const std::vector<std::vector<std::string>>& cores,
+                                     double time_limit) {
+    std::vector<std::vector<std::string>> candidates = cores;
+    std::sort(candidates.begin(), candidates.end(),
+              [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    for (const auto& c : candidates) {
+        bool everywhere = true;
+        for (int dof : task.robot.dof) {
+            smt::FrontStageOptions o;
+            o.time_limit = time_limit;
+            smt::FrontStage fs(task, dof, o);
+            everywhere = everywhere && fs.conflicts(c);
+        }
+        if (everywhere) return c;
+    }
+    std::vector<std::string> all;
+    for (const auto& c : cores)
+        for (const auto& part : c)
+            if (!has(all, part)) all.push_back(part);
+    return all;
+}
+
+InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
+    InfeasibilityProof proof;
+    std::vector<std::vector<std::string>> cores;
+    for (int dof : task.robot.dof) {
+        smt::FrontStageOptions o;
+        o.time_limit = time_limit;
+        smt::FrontStage fs(task, dof, o);
+        const auto r = fs.check();
+        if (r != smt::FrontStage::Result::Unsat) {
+            proof.open += (proof.open.empty() ? "" : "; ") + std::to_string(dof) + " joints " +
+                          (r == smt::FrontStage::Result::Sat ? "not ruled out" : "undecided");
+            continue;
+        }
+        cores.push_back(fs.minimal_core());
+    }
+    proof.proved = proof.open.empty() && !cores.empty();
+    if (proof.proved) proof.core = common_core(task, cores, time_limit);
+    return proof;
+}
+
+std::string describe_conflict(const task::Task& task, const std::vector<std::string>& core) {
+    const auto traj = with_prefix(core, "trajectory[");
+    const auto obst = with_prefix(core, "obstacles[");
+    const bool base = has(core, "base_regions");
+    const bool longest = has(core, "robot.max_link_length");
+    const bool shortest = has(core, "robot.min_link_length");
+    const bool tube = has(core, "robot.link_diameter");
+    const std::string arms = "an arm of " + joint_counts(task) + " links";
+    if (!traj.empty() && longest && obst.empty() && !shortest) {
+        return listing(traj) + (traj.size() > 1 ? " cannot all be reached" : " is out of reach") +
+               (base ? " from every allowed base position" : " from any base position") + " by " + arms +
+               fmt(" of at most %.2f m.", task.robot.max_link_length);
+    }
+    if (traj.empty() && !obst.empty() && base && tube) {
+        return listing(obst) + (obst.size() > 1 ? " cover" : " covers") +
+               " every allowed base position: the first joint would stand inside an obstacle.";
+    }
+    if (!traj.empty() && !obst.empty() && tube && !base && !longest) {
+        return listing(obst) + " lies closer to " + listing(traj) +
+               fmt(" than half the tube diameter (%.4f m): the last link, which ends on the path, would "
+                   "touch it.",
+                   task.robot.link_diameter / 2);
+    }
+    if (!traj.empty() && shortest) {
+        return listing(traj) + " passes too close to " +
+               (base ? std::string("every allowed base position") : std::string("the base")) +
+               fmt(" for links of at least %.2f m: the arm cannot fold that tightly.", task.robot.min_link_length);
+    }
+    return "These parts of the task cannot all be satisfied by " + arms + ": " + listing(core) + ".";
+}
+
+std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::vector<std::string>& core,
+                                            double solve_seconds) {
+    constexpr double kCheck = 5.0;  // seconds per front-stage check
+    std::vector<Relaxation> out;
+    auto offer = [&](const std::string& part, const std::string& change, const task::Task& relaxed) {
+        // Re-checked here, whatever the search that found it assumed.
+        if (!conflict_free(relaxed, kCheck)) return;
+        out.push_back({part, change, relaxed, attempt(relaxed, solve_seconds)});
+    };
+    const auto traj = with_prefix(core, "trajectory[");
+    for (const std::string& part : core) {
+        task::Task t = task;
+        if (part == "robot.max_link_length") {
+            const auto v = smallest(task.robot.max_link_length, 50.0, 0.005, [&](double x) {
+                t.robot.max_link_length = x;
+                return conflict_free(t, kCheck);
+            });
+            if (!v) continue;
+            t.robot.max_link_length = std::ceil(*v * 100.0) / 100.0;
+            offer(part, fmt("robot.max_link_length >= %.2f m", t.robot.max_link_length) +
+                            (traj.empty() ? "" : " would make " + listing(traj) + " reachable"),
+                  t);
+        } else if (part == "robot.min_link_length") {
+            const auto v = smallest(-task.robot.min_link_length, 0.0, 0.002, [&](double x) {
+                t.robot.min_link_length = -x;
+                return conflict_free(t, kCheck);
+            });
+            if (!v) continue;
+            t.robot.min_link_length = std::floor(-*v * 1000.0) / 1000.0;
+            offer(part, fmt("robot.min_link_length <= %.3f m", t.robot.min_link_length), t);
+        } else if (part == "robot.link_diameter") {
+            const auto v = smallest(-task.robot.link_diameter, -1e-4, 0.0005, [&](double x) {
+                t.robot.link_diameter = -x;
+                return conflict_free(t, kCheck);
+            });
+            if (!v) continue;
+            t.robot.link_diameter = std::floor(-*v * 1000.0) / 1000.0;
+            offer(part, fmt("robot.link_diameter <= %.3f m", t.robot.link_diameter), t);
+        } else if (part == "base_regions" && !task.base_regions.empty()) {
+            // Grow every region by d on all sides; the satisfied relaxation
+            // then says where the base can stand, and the suggestion extends
+            // the nearest region just to there.
+            const auto v = smallest(0.0, 20.0, 0.005, [&](double d) {
+                for (std::size_t k = 0; k < t.base_regions.size(); ++k) {
+                    t.base_regions[k].min = task.base_regions[k].min - Vec2::Constant(d);
+                    t.base_regions[k].max = task.base_regions[k].max + Vec2::Constant(d);
+                }
+                return conflict_free(t, kCheck);
+            });
+            if (!v) continue;
+            smt::FrontStage fs(t, task.robot.dof.back());
+            if (fs.check() != smt::FrontStage::Result::Sat) continue;
+            const Vec2 b = fs.skeleton().base;
+            std::size_t nearest = 0;
+            double gap = 1e300;
+            for (std::size_t k = 0; k < task.base_regions.size(); ++k) {
+                const Vec2 clamp = b.cwiseMax(task.base_regions[k].min).cwiseMin(task.base_regions[k].max);
+                if ((b - clamp).norm() < gap) gap = (b - clamp).norm(), nearest = k;
+            }
+            task::Task e = task;
+            e.base_regions[nearest].min = e.base_regions[nearest].min.cwiseMin(b);
+            e.base_regions[nearest].max = e.base_regions[nearest].max.cwiseMax(b);
+            offer(part,
+                  "extend base_regions[" + std::to_string(nearest) + "]" +
+                      fmt(" by %.2f m towards (%.2f, %.2f)", gap, b.x(), b.y()),
+                  e);
+        } else if (part.rfind("obstacles[", 0) == 0) {
+            const int o = index_of(part);
+            t.obstacles.erase(t.obstacles.begin() + o);
+            if (!conflict_free(t, kCheck)) continue;
+            // The largest radius that still leaves room.
+            task::Task s = task;
+            const auto v = smallest(-task.obstacles[o].radius, -1e-3, 0.002, [&](double x) {
+                s.obstacles[o].radius = -x;
+                return conflict_free(s, kCheck);
+            });
+            if (v) {
+                s.obstacles[o].radius = std::floor(-*v * 1000.0) / 1000.0;
+                offer(part, part + fmt(" with radius <= %.3f m", s.obstacles[o].radius), s);
+            } else {
+                offer(part, "without " + part, t);
+            }
+        } else if (part.rfind("trajectory[", 0) == 0 && !task.base_regions.empty()) {
+            // Bring the whole path (so it stays connected) towards the base
+            // region nearest to this primitive.
+            const int j = index_of(part);
+            const geometry::Primitive& prim = task.trajectory[j];
+            const Vec2 mid = geometry::point_at(prim, geometry::length(prim) / 2);
+            Vec2 target = 0.5 * (task.base_regions[0].min + task.base_regions[0].max);
+            for (const auto& r : task.base_regions) {
+                const Vec2 c = 0.5 * (r.min + r.max);
+                if ((c - mid).norm() < (target - mid).norm()) target = c;
+            }
+            const Vec2 dir = (target - mid).normalized();
+            auto moved = [&](double d) {
+                task::Task m = task;
+                for (geometry::Primitive& p : m.trajectory) p.start += d * dir, p.end += d * dir, p.center += d * dir;
+                return m;
+            };
+            const auto v = smallest(0.0, (target - mid).norm(), 0.005,
+                                    [&](double d) { return conflict_free(moved(d), kCheck); });
+            if (!v) continue;
+            const double d = std::ceil(*v * 100.0) / 100.0;
+            offer(part, "move the path" + fmt(" %.2f m towards (%.2f, %.2f)", d, target.x(), target.y()) +
+                            " to bring " + part + " within reach",
+                  moved(d));
+        }
+    }
+    return out;
+}
+
+}  // namespace modsynth::synth

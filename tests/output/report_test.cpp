@@ -1,0 +1,162 @@
+#include <catch2/catch.hpp>
+
+#include <regex>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include <modsynth/output/report.h>
+
+#include "output_fixtures.h"
+
+namespace testing = modsynth::testing;
+using modsynth::output::html_report;
+using modsynth::output::ReportFigures;
+
+namespace {
+
+int count(const std::string& text, const std::string& pattern) {
+    const std::regex re(pattern);
+    return static_cast<int>(
+        std::distance(std::sregex_iterator(text.begin(), text.end(), re), std::sregex_iterator()));
+}
+
+bool has(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+/// The contents of the table cell of figure `id`.
+std::string figure(const std::string& html, const std::string& id) {
+    std::smatch m;
+    const std::regex re("<tr id=\"" + id + "\"><th>[^<]*</th><td>(.*?)</td></tr>");
+    return std::regex_search(html, m, re) ? m[1].str() : "(missing " + id + ")";
+}
+
+nlohmann::json motion_data(const std::string& html) {
+    std::smatch m;
+    const std::regex re("<script type=\"application/json\" id=\"motion-data\">(.*?)</script>");
+    REQUIRE(std::regex_search(html, m, re));
+    return nlohmann::json::parse(m[1].str());
+}
+
+void check_self_contained(const std::string& html) {
+    CHECK(html.rfind("<!DOCTYPE html>", 0) == 0);
+    CHECK_FALSE(has(html, "http://"));
+    CHECK_FALSE(has(html, "https://"));
+    CHECK_FALSE(has(html, " src="));
+    CHECK_FALSE(has(html, "<link"));
+    CHECK(count(html, "<g[ >]") == count(html, "</g>"));
+    CHECK(count(html, "<svg[ >]") == 1);
+    CHECK(has(html, "</svg>"));
+    CHECK(has(html, "</html>"));
+}
+
+void check_task_layers(const std::string& html, const modsynth::task::Task& task) {
+    for (const char* id : {"base-regions", "obstacles", "trajectory", "scale-bar"}) {
+        CHECK(has(html, std::string("<g id=\"") + id + "\">"));
+    }
+    CHECK(count(html, "class=\"primitive( core)?\"") == static_cast<int>(task.trajectory.size()));
+    CHECK(count(html, "class=\"obstacle( core)?\"") == static_cast<int>(task.obstacles.size()));
+    CHECK(count(html, "class=\"base-region( core)?\"") ==
+          static_cast<int>(task.base_regions.size()));
+    for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
+        CHECK(has(html, "data-part=\"trajectory[" + std::to_string(j) + "]\""));
+    }
+}
+
+void check_robot_layers(const std::string& html, const modsynth::synth::Solution& s,
+                        int primitives) {
+    for (const char* id : {"reachable", "swept", "poses", "robot"}) {
+        CHECK(has(html, std::string("<g id=\"") + id + "\">"));
+    }
+    CHECK(count(html, "class=\"swept\"") == primitives);
+    CHECK(count(html, "class=\"pose\"") == primitives);
+    CHECK(count(html, "class=\"link\"") == s.robot.dof());
+    CHECK(count(html, "class=\"joint\"") == s.robot.dof());
+    CHECK(count(html, "class=\"ee\"") == 1);
+    CHECK(has(html, "<polyline id=\"trail\""));
+}
+
+void check_animation(const std::string& html, const modsynth::synth::Solution& s) {
+    CHECK(has(html, "<button id=\"play\""));
+    CHECK(has(html, "<input id=\"scrub\" type=\"range\""));
+    CHECK(has(html, "<select id=\"speed\""));
+    CHECK(has(html, "requestAnimationFrame"));
+    const auto data = motion_data(html);
+    REQUIRE(data["t"].size() == s.samples.size());
+    CHECK(data["q"].size() == s.samples.size() * s.robot.link_lengths.size());
+    CHECK(data["pr"].size() == s.samples.size());
+    CHECK(data["t"].back().get<double>() == Approx(s.samples.back().t).margin(1e-6));
+    CHECK(data["q"][1].get<double>() == Approx(s.samples[0].q[1]).margin(1e-6));
+    CHECK(data["L"].size() == s.robot.link_lengths.size());
+}
+
+}  // namespace
+
+TEST_CASE("the report of a 2-joint solution shows task, robot, motion and figures", "[output]") {
+    const auto task = testing::two_joint_task();
+    const auto s = testing::two_joint_solution(task);
+    const std::string html = html_report(task, s, ReportFigures{});
+    check_self_contained(html);
+    check_task_layers(html, task);
+    check_robot_layers(html, s, 2);
+    check_animation(html, s);
+    CHECK(count(html, "class=\"reach\"") == 1);  // one reachable space for the whole motion
+    CHECK(count(html, " core\"") == 0);
+    CHECK(figure(html, "fig-status") == "solved");
+    CHECK(figure(html, "fig-dof") == "2");
+    CHECK(figure(html, "fig-links") == "350.0 mm, 300.0 mm (total 650.0 mm)");
+    CHECK(figure(html, "fig-base") == "(0.0000, 0.0000) m, in base_regions[0]");
+    CHECK(has(figure(html, "fig-clearance"), "12.30 mm"));
+    CHECK(has(figure(html, "fig-deviation"), "0.025 mm"));
+    CHECK(has(figure(html, "fig-samples"), std::to_string(s.samples.size()) + " samples"));
+    CHECK(has(figure(html, "stage-times"), "n/a"));
+    CHECK(has(html, "id=\"reach-caption\""));
+}
+
+TEST_CASE("the report shows stage timings when synthesis gives them", "[output]") {
+    const auto task = testing::two_joint_task();
+    const auto s = testing::two_joint_solution(task);
+    ReportFigures figures;
+    figures.front_seconds = 0.125;
+    figures.refine_seconds = 1.5;
+    figures.verify_seconds = 0.25;
+    const std::string html = html_report(task, s, figures);
+    CHECK(figure(html, "stage-times") ==
+          "front stage 0.125 s, refinement 1.500 s, verification 0.250 s");
+}
+
+TEST_CASE("the report of a 3-joint solution shades per primitive and shows transitions",
+          "[output]") {
+    const auto task = testing::three_joint_task();
+    const auto s = testing::three_joint_solution(task);
+    const std::string html = html_report(task, s, ReportFigures{});
+    check_self_contained(html);
+    check_task_layers(html, task);
+    check_robot_layers(html, s, 2);
+    check_animation(html, s);
+    CHECK(count(html, "class=\"reach\" data-primitive=\"[0-9]+\"") == 2);
+    CHECK(count(html, "class=\"swept-transition\"") == 1);
+    CHECK(figure(html, "fig-dof") == "3");
+    CHECK(has(html, "leading links held"));  // the shading says what it approximates
+}
+
+TEST_CASE("the report of an infeasible task highlights the core and explains", "[output]") {
+    const auto task = testing::two_joint_task();
+    const auto s = testing::infeasible_solution(task);
+    const std::string html = html_report(task, s, ReportFigures{});
+    check_self_contained(html);
+    check_task_layers(html, task);
+    CHECK(has(html, "class=\"primitive core\" data-part=\"trajectory[1]\""));
+    CHECK(has(html, "class=\"primitive\" data-part=\"trajectory[0]\""));
+    CHECK(has(html, "class=\"obstacle core\" data-part=\"obstacles[0]\""));
+    CHECK(has(html, "class=\"obstacle\" data-part=\"obstacles[1]\""));
+    CHECK(has(html, "class=\"base-region core\" data-part=\"base_regions[0]\""));
+    CHECK(has(html, "class=\"reach-limit core\" data-part=\"robot.max_link_length\""));
+    CHECK(has(html, "No robot &lt;can&gt; do this &amp; that"));  // escaped
+    CHECK(count(html, "<li class=\"core-part\"") == 4);
+    CHECK(figure(html, "fig-status") == "infeasible");
+    CHECK_FALSE(has(html, "id=\"play\""));
+    CHECK_FALSE(has(html, "id=\"motion-data\""));
+    CHECK_FALSE(has(html, "<g id=\"robot\">"));
+}

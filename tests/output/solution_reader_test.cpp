@@ -1,0 +1,204 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+
+#include <nlohmann/json.hpp>
+
+#include <modsynth/output/solution_io.h>
+#include <modsynth/output/solution_reader.h>
+
+#include "output_fixtures.h"
+
+using modsynth::output::parse_solution;
+using modsynth::output::to_json;
+using modsynth::synth::Solution;
+using modsynth::synth::Status;
+using modsynth::task::InputError;
+using nlohmann::json;
+namespace testing = modsynth::testing;
+
+namespace {
+
+/// The part named by the InputError `f` throws; fails when it throws none.
+std::string rejected_part(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.part();
+    }
+    FAIL("no InputError thrown");
+    return "";
+}
+
+std::string part_of(const json& doc) {
+    return rejected_part([&] { parse_solution(doc); });
+}
+
+void check_same_motion(const Solution& a, const Solution& b) {
+    REQUIRE(b.samples.size() == a.samples.size());
+    for (std::size_t i = 0; i < a.samples.size(); ++i) {
+        CHECK(b.samples[i].t == a.samples[i].t);
+        CHECK(b.samples[i].phase == a.samples[i].phase);
+        CHECK(b.samples[i].primitive == a.samples[i].primitive);
+        CHECK(b.samples[i].q == a.samples[i].q);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("the reader round-trips a solved solution exactly", "[output]") {
+    for (const auto& task : {testing::two_joint_task(), testing::three_joint_task()}) {
+        const Solution a = task.robot.dof[0] == 2 ? testing::two_joint_solution(task)
+                                                  : testing::three_joint_solution(task);
+        // Through text, as a saved file would be.
+        const auto parsed = modsynth::output::parse_solution_text(to_json(a).dump(1));
+        const Solution& b = parsed.solution;
+        CHECK(parsed.has_certificate);
+        CHECK(b.task_name == a.task_name);
+        CHECK(b.status == Status::Solved);
+        CHECK(b.robot.base == a.robot.base);
+        CHECK(b.robot.link_lengths == a.robot.link_lengths);
+        CHECK(b.robot.link_diameter == a.robot.link_diameter);
+        CHECK(b.robot.elbow == a.robot.elbow);
+        CHECK(b.certificate.ok);
+        CHECK(b.certificate.min_clearance == a.certificate.min_clearance);
+        CHECK(b.certificate.min_self_clearance == a.certificate.min_self_clearance);
+        CHECK(b.certificate.max_deviation == a.certificate.max_deviation);
+        check_same_motion(a, b);
+        // And it writes back the same document.
+        CHECK(to_json(b) == to_json(a));
+    }
+}
+
+TEST_CASE("the reader round-trips an infeasible solution", "[output]") {
+    const Solution a = testing::infeasible_solution(testing::two_joint_task());
+    const Solution b = parse_solution(to_json(a)).solution;
+    CHECK(b.status == Status::Infeasible);
+    CHECK(b.explanation.message == a.explanation.message);
+    CHECK(b.explanation.core == a.explanation.core);
+    CHECK(to_json(b) == to_json(a));
+}
+
+TEST_CASE("the reader accepts solutions without elbow or certificate", "[output]") {
+    const auto task = testing::two_joint_task();
+    const Solution a = testing::two_joint_solution(task);
+    json doc = to_json(a);
+    doc["robot"].erase("elbow");
+    doc.erase("certificate");
+    const auto parsed = parse_solution(doc);
+    CHECK_FALSE(parsed.has_certificate);
+    CHECK_FALSE(parsed.solution.certificate.ok);
+    // The branch is read off the motion: the last joint's sign.
+    CHECK(parsed.solution.robot.elbow == a.robot.elbow);
+    check_same_motion(a, parsed.solution);
+}
+
+TEST_CASE("null certificate margins mean nothing was there to check", "[output]") {
+    const auto task = testing::two_joint_task();
+    json doc = to_json(testing::two_joint_solution(task));
+    doc["certificate"]["min_clearance_margin"] = nullptr;
+    const auto parsed = parse_solution(doc);
+    CHECK(std::isinf(parsed.solution.certificate.min_clearance));
+}
+
+TEST_CASE("the reader rejects bad solutions naming the part", "[output]") {
+    const auto task = testing::two_joint_task();
+    const json good = to_json(testing::two_joint_solution(task));
+    json doc = good;
+
+    SECTION("not an object") { CHECK(part_of(json::array()) == "(document)"); }
+    SECTION("another format") {
+        doc["format"] = "modsynth-task/1";
+        CHECK(part_of(doc) == "format");
+    }
+    SECTION("unknown status") {
+        doc["status"] = "done";
+        CHECK(part_of(doc) == "status");
+    }
+    SECTION("solved without a robot") {
+        doc.erase("robot");
+        CHECK(part_of(doc) == "robot");
+    }
+    SECTION("unsupported joint count") {
+        doc["robot"]["dof"] = 5;
+        CHECK(part_of(doc) == "robot.dof");
+    }
+    SECTION("link lengths disagree with dof") {
+        doc["robot"]["link_lengths"] = {0.3};
+        CHECK(part_of(doc) == "robot.link_lengths");
+    }
+    SECTION("negative link length") {
+        doc["robot"]["link_lengths"][1] = -0.3;
+        CHECK(part_of(doc) == "robot.link_lengths[1]");
+    }
+    SECTION("elbow zero") {
+        doc["robot"]["elbow"] = 0;
+        CHECK(part_of(doc) == "robot.elbow");
+    }
+    SECTION("no samples") {
+        doc["samples"] = json::array();
+        CHECK(part_of(doc) == "samples");
+    }
+    SECTION("a joint angle missing") {
+        doc["samples"][3]["q"] = {0.1};
+        CHECK(part_of(doc) == "samples[3].q");
+    }
+    SECTION("a joint angle that is not a number") {
+        doc["samples"][4]["q"][1] = "x";
+        CHECK(part_of(doc) == "samples[4].q[1]");
+    }
+    SECTION("unknown phase") {
+        doc["samples"][2]["phase"] = "hold";
+        CHECK(part_of(doc) == "samples[2].phase");
+    }
+    SECTION("negative primitive") {
+        doc["samples"][2]["primitive"] = -1;
+        CHECK(part_of(doc) == "samples[2].primitive");
+    }
+    SECTION("time going backwards") {
+        doc["samples"][5]["t"] = -1.0;
+        CHECK(part_of(doc) == "samples[5].t");
+    }
+    SECTION("a broken certificate") {
+        doc["certificate"]["max_ee_deviation"] = "small";
+        CHECK(part_of(doc) == "certificate.max_ee_deviation");
+    }
+    SECTION("infeasible without explanation") {
+        doc = {{"format", "modsynth-solution/1"}, {"status", "infeasible"}};
+        CHECK(part_of(doc) == "explanation");
+    }
+    SECTION("a core part that is not text") {
+        doc = {{"format", "modsynth-solution/1"},
+               {"status", "infeasible"},
+               {"explanation", {{"message", "no"}, {"core", {"trajectory[0]", 3}}}}};
+        CHECK(part_of(doc) == "explanation.core[1]");
+    }
+}
+
+TEST_CASE("the reader names the position of a JSON syntax error", "[output]") {
+    try {
+        modsynth::output::parse_solution_text("{\n  \"format\": ,\n}");
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK(e.part() == "(document)");
+        CHECK_THAT(e.what(), Catch::Matchers::Contains("line 2"));
+    }
+}
+
+TEST_CASE("load_solution names an unreadable file", "[output]") {
+    const std::string path = "/nonexistent/solution.json";
+    CHECK(rejected_part([&] { modsynth::output::load_solution(path); }) == path);
+}
+
+TEST_CASE("a solution must fit the task it is exported with", "[output]") {
+    const auto task = testing::two_joint_task();
+    Solution s = testing::two_joint_solution(task);
+    CHECK_NOTHROW(modsynth::output::check_solution_fits(task, s));
+    Solution other = s;
+    other.task_name = "rose";
+    CHECK(rejected_part([&] { modsynth::output::check_solution_fits(task, other); }) == "task");
+    s.samples.back().primitive = 7;
+    const std::string part = "samples[" + std::to_string(s.samples.size() - 1) + "].primitive";
+    CHECK(rejected_part([&] { modsynth::output::check_solution_fits(task, s); }) == part);
+}
