@@ -5,6 +5,7 @@
 #include <modsynth/output/exports.h>
 #include <modsynth/output/solution_reader.h>
 #include <modsynth/task/task_io.h>
+#include <modsynth/control/motion.h>
 #include <modsynth/verify/verifier.h>
 
 #include "command.h"
@@ -23,6 +24,7 @@ output::ReportFigures figures_for(const task::Task& task, output::ParsedSolution
     output::ReportFigures figures;
     synth::Solution& s = parsed.solution;
     if (s.status == synth::Status::Solved && !parsed.has_certificate) {
+        control::recover_parameters(task, s.robot, s.samples);
         s.certificate = verify::certify(task, s.robot, s.samples);
         figures.certificate_note = "computed by export: the solution file carries no certificate";
     }

@@ -165,6 +165,33 @@ bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
     return true;
 }
 
+void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
+                        std::vector<Sample>& samples) {
+    constexpr double kSnap = 1e-5;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        Sample& a = samples[i];
+        if (a.phase == Phase::Transition) {
+            a.s = a.q.empty() ? 0.0 : a.q[0];
+            continue;
+        }
+        const geometry::Primitive& prim = task.trajectory[a.primitive];
+        const double length = geometry::length(prim);
+        const geometry::Vec2 ee = kinematics::forward(robot.base, robot.link_lengths, a.q).back();
+        double s = geometry::nearest(prim, ee).s;
+        const bool first = i == 0 || samples[i - 1].phase != Phase::Trace || samples[i - 1].primitive != a.primitive;
+        // A circle's start is also its end: a run begins at 0.
+        if (first && prim.kind == geometry::PrimitiveKind::Circle && s > length - kSnap) s = 0.0;
+        if (!first && prim.kind == geometry::PrimitiveKind::Circle) {
+            double d = s - samples[i - 1].s;
+            d -= length * std::round(d / length);
+            s = samples[i - 1].s + d;
+        }
+        if (std::abs(s) < kSnap) s = 0.0;
+        if (std::abs(s - length) < kSnap) s = length;
+        a.s = s;
+    }
+}
+
 void assign_times(std::vector<Sample>& samples, const MotionOptions& options) {
     if (samples.empty()) return;
     samples[0].t = 0.0;

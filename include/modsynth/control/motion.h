@@ -62,6 +62,13 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
 bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
                    std::vector<Sample>& samples, const std::vector<int>& pairs);
 
+/// For samples read from a file, which carry no `s`: the arc length of the
+/// EE's nearest point along its primitive, followed continuously (a circle
+/// ends at its length, not at 0) and snapped to the ends within 10 um; in
+/// transitions the first joint's angle.
+void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
+                        std::vector<Sample>& samples);
+
 /// Sets t: each step takes the longer of path length / ee_speed and
 /// largest joint change / joint_speed.
 void assign_times(std::vector<Sample>& samples, const MotionOptions& options);
