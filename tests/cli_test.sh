@@ -101,6 +101,16 @@ if [ -f "$tmp/inf.json" ]; then
 fi
 expect_exit 1 "export to an unwritable file" "$bin" export "$root/tasks/rose.json" "$tmp/s.json" --csv "$tmp/no/such/dir/x.csv"
 
+# explain: the proof in words, the parts, and checked relaxations.
+far="$root/tasks/infeasible/table-too-far.task.json"
+expect_exit 3 "explain $far" "$bin" explain "$far" --solve-seconds 3
+grep -q "Proved infeasible" "$tmp/out" || fail "explain does not say it is proved"
+grep -q "robot.max_link_length >= 1.3" "$tmp/out" || fail "explain suggests no longer links: $(cat "$tmp/out")"
+expect_exit 3 "explain --json" "$bin" explain "$far" --solve-seconds 3 --json
+python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["status"]=="infeasible" and d["suggestions"]' "$tmp/out" ||
+    fail "explain --json is not the expected JSON"
+expect_exit 0 "explain a feasible task" "$bin" explain "$root/tasks/rose.json"
+
 # Unwritable output is an internal error, reported, not a crash.
 expect_exit 1 "unwritable output" "$bin" solve "$root/tasks/rose.json" -o "$tmp/no/such/dir/x.json" --quiet
 

@@ -74,7 +74,12 @@ pid_t spawn(const ProcessSpec& spec) {
     posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log, O_WRONLY | O_CREAT | O_TRUNC,
                                      0644);
-    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    if (spec.stderr_path.empty()) {
+        posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    } else {
+        posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, spec.stderr_path.c_str(),
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    }
     pid_t pid = -1;
     const int err = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -186,7 +191,50 @@ private:
     std::size_t next_ = 0;
 };
 
+Clock::time_point deadline_after(Clock::time_point start, double limit) {
+    if (limit <= 0.0) return Clock::time_point::max();
+    return start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit));
+}
+
 }  // namespace
+
+ChildProcess::ChildProcess(const ProcessSpec& spec)
+    : start_(Clock::now()), deadline_(deadline_after(start_, spec.wall_limit)) {
+    pid_ = spawn(spec);
+    if (pid_ < 0) {
+        result_ = ProcessResult{};
+        result_->exit_code = 127;
+    }
+}
+
+ChildProcess::~ChildProcess() {
+    if (!result_) kill_now();
+}
+
+std::optional<ProcessResult> ChildProcess::poll() {
+    if (result_) return result_;
+    if (Clock::now() >= deadline_) {
+        ProcessResult r = kill_now();
+        result_->timed_out = true;
+        r.timed_out = true;
+        return r;
+    }
+    int status = 0;
+    if (waitpid(pid_, &status, WNOHANG) == pid_) result_ = result_of(status, Running{0, pid_, start_});
+    return result_;
+}
+
+ProcessResult ChildProcess::kill_now() {
+    if (!result_) {
+        kill(pid_, SIGKILL);
+        result_ = result_of(wait_blocking(pid_), Running{0, pid_, start_});
+    }
+    return *result_;
+}
+
+double ChildProcess::seconds() const {
+    return result_ ? result_->seconds : seconds_since(start_);
+}
 
 void run_processes(const std::vector<ProcessSpec>& specs, int jobs, const FinishHandler& on_finish,
                    const std::function<void()>& on_tick) {

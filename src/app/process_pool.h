@@ -4,7 +4,9 @@
 // default solver may ignore its own timeout: only a kill from outside bounds
 // a run for sure.
 #include <cstddef>
+#include <chrono>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,6 +16,7 @@ namespace modsynth::app {
 struct ProcessSpec {
     std::vector<std::string> argv;  ///< argv[0] is the program's path
     std::string log_path;           ///< receives stdout and stderr; empty: /dev/null
+    std::string stderr_path;        ///< when set, stderr goes here instead of log_path
     double wall_limit = 0.0;        ///< seconds before SIGKILL; <= 0: no limit
 };
 
@@ -38,6 +41,33 @@ using FinishHandler = std::function<void(std::size_t index, const ProcessResult&
 /// started ends with exit code 127, as in a shell.
 void run_processes(const std::vector<ProcessSpec>& specs, int jobs, const FinishHandler& on_finish,
                    const std::function<void()>& on_tick = {});
+
+/// One child process for a caller that supervises it itself, such as a
+/// server that cannot block in run_processes: started like theirs, polled,
+/// killed on demand or past its wall limit. Destroying a running one kills
+/// and reaps it, so no child outlives its owner.
+class ChildProcess {
+public:
+    explicit ChildProcess(const ProcessSpec& spec);
+    ~ChildProcess();
+    ChildProcess(const ChildProcess&) = delete;
+    ChildProcess& operator=(const ChildProcess&) = delete;
+
+    /// False when it could not be started (poll() then gives exit code 127).
+    bool started() const { return pid_ > 0; }
+    /// The result once it has ended (reaped here), else nothing. A process
+    /// past its wall limit is killed first and comes back timed_out.
+    std::optional<ProcessResult> poll();
+    /// SIGKILL, reap and return the result (the same result if it had ended).
+    ProcessResult kill_now();
+    double seconds() const;
+
+private:
+    int pid_ = -1;
+    std::chrono::steady_clock::time_point start_;
+    std::chrono::steady_clock::time_point deadline_;
+    std::optional<ProcessResult> result_;
+};
 
 /// Absolute path of the running executable, so that children run the very
 /// same build.

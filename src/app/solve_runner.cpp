@@ -139,6 +139,11 @@ bool is_answer(const std::string& status) {
     return status == "solved" || status == "infeasible" || status == "unknown";
 }
 
+SolveOutcome read_outcome(const SolveJob& job, const ProcessResult& result,
+                          const SolveRunOptions& options) {
+    return outcome_of(job, result, options);
+}
+
 void run_solves(const std::vector<SolveJob>& jobs, const SolveRunOptions& options,
                 const OutcomeHandler& on_done, const std::function<void()>& on_tick) {
     const std::string self = self_executable();

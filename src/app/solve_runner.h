@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "process_pool.h"
+
 namespace modsynth::app {
 
 struct SolveJob {
@@ -42,6 +44,12 @@ struct SolveOutcome {
 bool is_answer(const std::string& status);
 
 using OutcomeHandler = std::function<void(std::size_t index, const SolveOutcome& outcome)>;
+
+/// What one finished run answered, read from how it ended and from its
+/// solution file, as run_solves reports it (for callers that run the
+/// process themselves).
+SolveOutcome read_outcome(const SolveJob& job, const ProcessResult& result,
+                          const SolveRunOptions& options);
 
 /// Runs the jobs, options.jobs at a time; on_done is called as each ends.
 /// Throws Interrupted (process_pool.h) on SIGINT/SIGTERM.

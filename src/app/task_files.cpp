@@ -19,7 +19,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }
 
 bool is_companion(const std::string& name) {
-    return ends_with(name, ".expect.json") || ends_with(name, ".planted.json") ||
+    return ends_with(name, ".expect.json") || ends_with(name, ".core.json") || ends_with(name, ".planted.json") ||
            ends_with(name, ".solution.json");
 }
 

@@ -39,7 +39,7 @@ std::vector<geometry::Vec2> sample_points(const geometry::Primitive& p, int coun
 }  // namespace
 
 struct FrontStage::Impl {
-    const task::Task& task;
+    const task::Task task;  // a copy: callers may pass temporaries
     int dof;
     FrontStageOptions options;
     z3::context ctx;

@@ -162,6 +162,41 @@ std::string describe_conflict(const task::Task& task, const std::vector<std::str
     return "These parts of the task cannot all be satisfied by " + arms + ": " + listing(core) + ".";
 }
 
+std::string describe_part(const task::Task& task, const std::string& part) {
+    if (part.rfind("trajectory[", 0) == 0) {
+        const auto& p = task.trajectory.at(index_of(part));
+        switch (p.kind) {
+            case geometry::PrimitiveKind::Line:
+                return part + fmt(": a line from (%.3f, %.3f)", p.start.x(), p.start.y()) +
+                       fmt(" to (%.3f, %.3f)", p.end.x(), p.end.y());
+            case geometry::PrimitiveKind::Arc:
+                return part + fmt(": an arc from (%.3f, %.3f)", p.start.x(), p.start.y()) +
+                       fmt(" to (%.3f, %.3f)", p.end.x(), p.end.y()) +
+                       fmt(" around (%.3f, %.3f)", p.center.x(), p.center.y());
+            case geometry::PrimitiveKind::Circle:
+                return part + fmt(": a circle of radius %.3f m around (%.3f, %.3f)", p.radius, p.center.x(),
+                                  p.center.y());
+        }
+    }
+    if (part.rfind("obstacles[", 0) == 0) {
+        const auto& o = task.obstacles.at(index_of(part));
+        return part + fmt(": a disc of radius %.3f m at (%.3f, %.3f)", o.radius, o.center.x(), o.center.y());
+    }
+    if (part == "base_regions") {
+        std::string s = "base_regions: the base must stand in";
+        for (std::size_t k = 0; k < task.base_regions.size(); ++k) {
+            const auto& r = task.base_regions[k];
+            s += (k ? " or" : "") + fmt(" [%.3f, %.3f] x", r.min.x(), r.max.x()) + fmt(" [%.3f, %.3f]", r.min.y(), r.max.y());
+        }
+        return s;
+    }
+    if (part == "robot.max_link_length") return part + fmt(": links of at most %.3f m", task.robot.max_link_length);
+    if (part == "robot.min_link_length") return part + fmt(": links of at least %.3f m", task.robot.min_link_length);
+    if (part == "robot.link_diameter") return part + fmt(": tubes %.4f m thick", task.robot.link_diameter);
+    if (part == "robot.dof") return part + ": " + joint_counts(task) + " joints";
+    return part;
+}
+
 std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::vector<std::string>& core,
                                             double solve_seconds) {
     constexpr double kCheck = 5.0;  // seconds per front-stage check
@@ -204,17 +239,24 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             // Grow every region by d on all sides; the satisfied relaxation
             // then says where the base can stand, and the suggestion extends
             // the nearest region just to there.
-            const auto v = smallest(0.0, 20.0, 0.005, [&](double d) {
-                for (std::size_t k = 0; k < t.base_regions.size(); ++k) {
-                    t.base_regions[k].min = task.base_regions[k].min - Vec2::Constant(d);
-                    t.base_regions[k].max = task.base_regions[k].max + Vec2::Constant(d);
-                }
-                return conflict_free(t, kCheck);
-            });
+            auto grown = [&](double d) {
+                task::Task g = task;
+                for (auto& r : g.base_regions) r.min -= Vec2::Constant(d), r.max += Vec2::Constant(d);
+                return g;
+            };
+            const auto v = smallest(0.0, 20.0, 0.005, [&](double d) { return conflict_free(grown(d), kCheck); });
             if (!v) continue;
-            smt::FrontStage fs(t, task.robot.dof.back());
-            if (fs.check() != smt::FrontStage::Result::Sat) continue;
-            const Vec2 b = fs.skeleton().base;
+            // Where the base can stand: the model of a satisfiable joint count.
+            std::optional<Vec2> found;
+            for (int dof : task.robot.dof) {
+                smt::FrontStage fs(grown(*v), dof);
+                if (fs.check() == smt::FrontStage::Result::Sat) {
+                    found = fs.skeleton().base;
+                    break;
+                }
+            }
+            if (!found) continue;
+            const Vec2 b = *found;
             std::size_t nearest = 0;
             double gap = 1e300;
             for (std::size_t k = 0; k < task.base_regions.size(); ++k) {

@@ -30,6 +30,10 @@ std::vector<std::string> common_core(const task::Task& task,
 /// One sentence naming what conflicts, in the task's terms and units.
 std::string describe_conflict(const task::Task& task, const std::vector<std::string>& core);
 
+/// What one task part is, in words and numbers: "trajectory[2]: a line from
+/// (0.40, 0.10) to (0.55, 0.10)".
+std::string describe_part(const task::Task& task, const std::string& part);
+
 struct Relaxation {
     std::string part;    ///< the core part it changes
     std::string change;  ///< e.g. "robot.max_link_length >= 1.34 m"

@@ -1,0 +1,68 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include <modsynth/synth/explanation.h>
+#include <modsynth/synth/synthesizer.h>
+#include <modsynth/task/task_io.h>
+
+#include "../support/fixtures.h"
+
+using namespace modsynth;
+
+TEST_CASE("every hand-made infeasible task is proved with its expected core", "[explain]") {
+    int checked = 0;
+    for (const auto& e : std::filesystem::directory_iterator(testing::source_path("tasks/infeasible"))) {
+        const std::string path = e.path().string();
+        if (path.find(".task.json") == std::string::npos) continue;
+        const std::string stem = path.substr(0, path.size() - std::string(".task.json").size());
+        INFO(path);
+        REQUIRE(std::filesystem::exists(stem + ".core.json"));
+        const auto expected = testing::read_json(stem + ".core.json")["core"].get<std::vector<std::string>>();
+        const synth::Solution s = synth::synthesize(task::load_task(path), {});
+        REQUIRE(s.status == synth::Status::Infeasible);
+        CHECK(std::set<std::string>(s.explanation.core.begin(), s.explanation.core.end()) ==
+              std::set<std::string>(expected.begin(), expected.end()));
+        CHECK(s.explanation.message.rfind("Proved infeasible: ", 0) == 0);
+        ++checked;
+    }
+    CHECK(checked >= 4);
+}
+
+TEST_CASE("relaxations are the smallest change of one part, and they are re-checked", "[explain]") {
+    const task::Task t = task::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
+    const auto proof = synth::prove_infeasible(t, 10.0);
+    REQUIRE(proof.proved);
+    const auto suggestions = synth::suggest_relaxations(t, proof.core, 5.0);
+    const auto longer = std::find_if(suggestions.begin(), suggestions.end(),
+                                     [](const synth::Relaxation& r) { return r.part == "robot.max_link_length"; });
+    REQUIRE(longer != suggestions.end());
+    // The farthest point, (2.7, 0.3), is 2.61 m from the plate's nearest
+    // corner: two links need at least 1.30 m each.
+    CHECK(longer->relaxed.robot.max_link_length >= 1.30);
+    CHECK(longer->relaxed.robot.max_link_length <= 1.32);
+    CHECK_FALSE(synth::prove_infeasible(longer->relaxed, 10.0).proved);
+    CHECK(longer->outcome.rfind("solved", 0) == 0);
+    const auto moved = std::find_if(suggestions.begin(), suggestions.end(),
+                                    [](const synth::Relaxation& r) { return r.part == "base_regions"; });
+    REQUIRE(moved != suggestions.end());
+    CHECK(moved->change.find("extend base_regions[0]") != std::string::npos);
+    CHECK_FALSE(synth::prove_infeasible(moved->relaxed, 10.0).proved);
+}
+
+TEST_CASE("task parts are described in words and numbers", "[explain]") {
+    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    CHECK(synth::describe_part(t, "trajectory[0]") == "trajectory[0]: a line from (0.500, 0.050) to (0.500, 0.220)");
+    CHECK(synth::describe_part(t, "trajectory[4]").find("a circle of radius 0.050 m") != std::string::npos);
+    CHECK(synth::describe_part(t, "obstacles[2]") == "obstacles[2]: a disc of radius 0.030 m at (0.640, 0.070)");
+    CHECK(synth::describe_part(t, "robot.max_link_length") == "robot.max_link_length: links of at most 1.000 m");
+}
+
+TEST_CASE("a feasible task is not proved infeasible", "[explain]") {
+    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    const auto proof = synth::prove_infeasible(t, 10.0);
+    CHECK_FALSE(proof.proved);
+    CHECK(proof.open.find("not ruled out") != std::string::npos);
+}
