@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <set>
 
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/task/task_io.h>
@@ -117,4 +118,25 @@ TEST_CASE("progress is reported stage by stage", "[synth]") {
     REQUIRE(lines.size() >= 3);
     CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) { return l.find("skeleton") != std::string::npos; }));
     CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) { return l.find("certified") != std::string::npos; }));
+}
+
+TEST_CASE("wipe-table and clean-table: 2 joints exhausted, then solved with 3", "[synth]") {
+    for (const char* name : {"tasks/wipe-table.json", "tasks/clean-table.json"}) {
+        INFO(name);
+        const task::Task t = task::load_task(testing::source_path(name));
+        std::vector<std::string> lines;
+        synth::SynthesisOptions options;
+        options.progress = [&](const std::string& l) { lines.push_back(l); };
+        const synth::Solution s = synth::synthesize(t, options);
+        REQUIRE(s.status == synth::Status::Solved);
+        CHECK(s.robot.dof() == 3);
+        CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
+            return l.find("2 joints: search exhausted") != std::string::npos;
+        }));
+        const verify::Certificate again = verify::certify(t, s.robot, s.samples);
+        CHECK(again.ok);
+        CHECK(std::any_of(s.samples.begin(), s.samples.end(),
+                          [](const control::Sample& x) { return x.phase == control::Phase::Transition; }) ==
+              (std::set<double>(s.robot.proximal_angles.begin(), s.robot.proximal_angles.end()).size() > 1));
+    }
 }
