@@ -201,8 +201,8 @@ bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& star
         nlp::SolverOptions so;
         // A refinement that needs more than this is better restarted from
         // another initial guess than waited for.
-        so.time_limit = std::min(3.0, std::max(0.05, remaining()));
-        so.max_iterations = 200;
+        so.time_limit = std::min(round == 0 ? 3.0 : 1.5, std::max(0.05, remaining()));
+        so.max_iterations = round == 0 ? 200 : 100;
         const nlp::SolverResult res = nlp::minimize(f.program, so);
         stats_.refine_seconds += seconds_since(t0);
         ++stats_.nlp_solves;
