@@ -276,6 +276,7 @@ struct FrontStage::Impl {
             return coarse == z3::unsat ? Result::Unsat : Result::Unknown;
         }
         model = solver.get_model();
+        if (dof != 2) return Result::Sat;  // no refined families for these joint counts
         set_timeout(fine, std::min(options.time_limit, options.refined_time_limit));
         const z3::check_result refined = fine.check(assumptions());
         if (refined == z3::unsat) {
@@ -319,7 +320,16 @@ std::vector<std::string> FrontStage::minimal_core() {
         for (std::size_t k = 0; k < kept.size(); ++k)
             if (k != i) trial.push_back(kept[k]);
         if (s.check(trial) == z3::unsat) {
-            kept.erase(kept.begin() + static_cast<long>(i));
+            // The trial's own core may be smaller still: keep only that.
+            const z3::expr_vector smaller = s.unsat_core();
+            std::vector<z3::expr> next;
+            for (std::size_t k = 0; k < kept.size(); ++k) {
+                if (k == i) continue;
+                for (unsigned c = 0; c < smaller.size(); ++c)
+                    if (z3::eq(kept[k], smaller[c])) next.push_back(kept[k]);
+            }
+            kept = std::move(next);
+            i = std::min(i, kept.size());
         } else {
             ++i;
         }
@@ -343,6 +353,7 @@ bool FrontStage::conflicts(const std::vector<std::string>& parts) {
     }
     m.set_timeout(m.solver, m.options.time_limit);
     if (m.solver.check(a) == z3::unsat) return true;
+    if (m.dof != 2) return false;
     m.set_timeout(m.fine, std::min(m.options.time_limit, m.options.refined_time_limit));
     return m.fine.check(a) == z3::unsat;
 }

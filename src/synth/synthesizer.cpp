@@ -119,7 +119,11 @@ Solution Search::run() {
         auto result = front.check();
         stats_.front_seconds += seconds_since(t0);
         if (result == smt::FrontStage::Result::Unsat) {
-            cores.push_back(front.minimal_core());
+            // A core found for fewer joints often holds here too: checking
+            // it is cheaper than minimising afresh.
+            const auto known = std::find_if(cores.begin(), cores.end(),
+                                            [&](const auto& c) { return front.conflicts(c); });
+            cores.push_back(known != cores.end() ? *known : front.minimal_core());
             say(std::to_string(dof) + " joints: proved infeasible, conflict between " + join(cores.back(), ", "));
             tried_.push_back(std::to_string(dof) + " joints proved infeasible (" + join(cores.back(), ", ") + ")");
             continue;
