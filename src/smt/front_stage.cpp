@@ -310,6 +310,9 @@ bool FrontStage::exhausted_by_blocking() const { return impl_->blocked > 0; }
 std::vector<std::string> FrontStage::minimal_core() {
     Impl& m = *impl_;
     z3::solver& s = m.unsat_refined ? m.fine : m.solver;
+    // Other calls (conflicts) may have run checks since: re-establish the
+    // conflict so the core below is this one's.
+    if (s.check(m.assumptions()) != z3::unsat) return {};
     z3::expr_vector core = s.unsat_core();
     std::vector<z3::expr> kept;
     for (unsigned i = 0; i < core.size(); ++i) kept.push_back(core[i]);

@@ -43,6 +43,7 @@ public:
     bool exhausted_by_blocking() const;
     /// After Unsat (before any block): the task parts whose constraints
     /// conflict, as named in formats.md, shrunk to a minimal set by deletion.
+    /// Empty if the conflict cannot be re-established.
     std::vector<std::string> minimal_core();
     /// True when these task parts alone are proved to conflict (unsat with
     /// only their literals assumed); false when satisfiable or undecided.
