@@ -71,9 +71,10 @@ namespace {
 
 // Walks a parameter from `from` to `to`, each step as long as the joints
 // allow, appending a sample per step (the first one excluded).
+// On failure, *failed_at is the parameter that could not be reached.
 template <typename ConfigAt>
 bool walk(double from, double to, double first_step, double max_joint_step, Phase phase, int j,
-          std::vector<Sample>& out, ConfigAt config_at) {
+          std::vector<Sample>& out, double* failed_at, ConfigAt config_at) {
     const double dir = to >= from ? 1.0 : -1.0;
     double u = from, du = first_step;
     while (dir * (to - u) > 1e-12) {
@@ -90,7 +91,10 @@ bool walk(double from, double to, double first_step, double max_joint_step, Phas
             next.reset();
             if (du < 1e-10) break;
         }
-        if (!next) return false;
+        if (!next) {
+            *failed_at = candidate;
+            return false;
+        }
         u = candidate;
         out.push_back({0.0, phase, j, u, *next});
     }
@@ -101,8 +105,13 @@ bool walk(double from, double to, double first_step, double max_joint_step, Phas
 
 std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                                                const kinematics::Robot& robot,
-                                               const MotionOptions& options, std::string* where) {
+                                               const MotionOptions& options, MotionFailure* failure) {
     std::vector<Sample> out;
+    double failed_at = 0.0;
+    auto fail = [&](int j, bool transition, double s) -> std::optional<std::vector<Sample>> {
+        if (failure) *failure = {j, transition, s, transition ? transition_name(j) : point_name(j, s)};
+        return std::nullopt;
+    };
     const int m = static_cast<int>(task.trajectory.size());
     for (int j = 0; j < m; ++j) {
         if (j > 0 && robot.dof() == 3) {
@@ -112,31 +121,22 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             const double to = from + std::remainder(robot.proximal_angles[j] - from, geometry::kTau);
             const std::size_t before = out.size();
             const bool ok = walk(from, to, options.max_joint_step, options.max_joint_step, Phase::Transition,
-                                 j - 1, out, [&](double q1, const std::vector<double>* prev) {
+                                 j - 1, out, &failed_at, [&](double q1, const std::vector<double>* prev) {
                                      return transition_configuration(task, robot, j - 1, q1, prev);
                                  });
-            if (!ok) {
-                if (where) *where = transition_name(j - 1);
-                return std::nullopt;
-            }
+            if (!ok) return fail(j - 1, true, failed_at);
             if (out.size() > before) out.pop_back();  // the last pose is the next trace's first
         }
         const std::vector<double>* prev = out.empty() ? nullptr : &out.back().q;
         auto q = configuration_at(task, robot, j, 0.0, prev);
-        if (!q) {
-            if (where) *where = point_name(j, 0.0);
-            return std::nullopt;
-        }
+        if (!q) return fail(j, false, 0.0);
         out.push_back({0.0, Phase::Trace, j, 0.0, *q});
         const double length = geometry::length(task.trajectory[j]);
         const bool ok = walk(0.0, length, options.max_ee_step, options.max_joint_step, Phase::Trace, j, out,
-                             [&](double s, const std::vector<double>* p) {
+                             &failed_at, [&](double s, const std::vector<double>* p) {
                                  return configuration_at(task, robot, j, s, p);
                              });
-        if (!ok) {
-            if (where) *where = point_name(j, out.back().s);
-            return std::nullopt;
-        }
+        if (!ok) return fail(j, false, failed_at);
     }
     return out;
 }

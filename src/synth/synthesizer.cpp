@@ -38,18 +38,14 @@ std::string join(const std::vector<std::string>& v, const char* sep) {
 }
 
 // Points where the refinement constrains the arm: evenly spaced along each
-// primitive, plus the primitive's critical points relative to a base.
-std::vector<nlp::PathPoint> base_points(const task::Task& task, const geometry::Vec2& base) {
+// primitive (critical points are added for the robot at hand).
+std::vector<nlp::PathPoint> spaced_points(const task::Task& task) {
     constexpr double kSpacing = 0.025;
     std::vector<nlp::PathPoint> pts;
     for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
-        const auto& prim = task.trajectory[j];
-        const double len = geometry::length(prim);
+        const double len = geometry::length(task.trajectory[j]);
         const int n = std::max(4, static_cast<int>(std::ceil(len / kSpacing)));
         for (int i = 0; i <= n; ++i) pts.push_back({j, len * i / n});
-        const auto cp = geometry::critical_points(prim, base);
-        pts.push_back({j, cp.closest.s});
-        pts.push_back({j, cp.farthest.s});
     }
     return pts;
 }
@@ -76,6 +72,22 @@ void add_point(std::vector<nlp::PathPoint>& pts, int j, double s) {
         if (p.primitive == j && std::abs(p.s - s) < 1e-4) return;
     pts.push_back({j, s});
 }
+
+// The critical points of every primitive relative to the point the distal
+// pair turns about while tracing it: the base, or with three joints the end
+// of the proximal link.
+void add_critical_points(const task::Task& task, const kinematics::Robot& robot,
+                         std::vector<nlp::PathPoint>& points) {
+    for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
+        geometry::Vec2 origin = robot.base;
+        if (robot.dof() == 3 && j < static_cast<int>(robot.proximal_angles.size()))
+            origin += robot.link_lengths[0] * geometry::unit(robot.proximal_angles[j]);
+        const auto cp = geometry::critical_points(task.trajectory[j], origin);
+        add_point(points, j, cp.closest.s);
+        add_point(points, j, cp.farthest.s);
+    }
+}
+
 
 class Search {
 public:
@@ -197,7 +209,8 @@ bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& star
     problem.skeleton = skeleton;
     problem.start = start;
     problem.swept = swept;
-    problem.points = base_points(task_, start.base);
+    problem.points = spaced_points(task_);
+    add_critical_points(task_, start, problem.points);
     constexpr int kRounds = 12;
     for (int round = 0; round < kRounds && remaining() > 0.0; ++round) {
         const auto t0 = Clock::now();
@@ -240,17 +253,16 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
     constexpr int kMaxTransitionDepth = 4;
     std::vector<nlp::PathPoint>& points = problem.points;
     const auto t0 = Clock::now();
-    std::string where;
-    auto motion = control::plan_motion(task_, robot, opt_.motion, &where);
+    control::MotionFailure failure;
+    auto motion = control::plan_motion(task_, robot, opt_.motion, &failure);
     if (!motion) {
-        say("    out of reach at " + where);
-        if (where.find("transition") != std::string::npos)
+        say("    out of reach at " + failure.message);
+        if (failure.transition) {
             problem.transition_depth = std::min(kMaxTransitionDepth, problem.transition_depth + 1);
-        for (int j = 0; j < static_cast<int>(task_.trajectory.size()); ++j) {
-            const auto cp = geometry::critical_points(task_.trajectory[j], robot.base);
-            add_point(points, j, cp.closest.s);
-            add_point(points, j, cp.farthest.s);
+        } else {
+            add_point(points, failure.primitive, failure.s);
         }
+        add_critical_points(task_, robot, points);
         stats_.verify_seconds += seconds_since(t0);
         return false;
     }
@@ -288,11 +300,7 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
     if (!cert.violations.empty())
         say("    verification: " + std::to_string(cert.violations.size()) + " violation(s), first: " +
             cert.violations.front().message);
-    for (int j = 0; j < static_cast<int>(task_.trajectory.size()); ++j) {
-        const auto cp = geometry::critical_points(task_.trajectory[j], robot.base);
-        add_point(points, j, cp.closest.s);
-        add_point(points, j, cp.farthest.s);
-    }
+    add_critical_points(task_, robot, points);
     return false;
 }
 

@@ -69,9 +69,11 @@ TEST_CASE("a transition the distal pair cannot follow is reported", "[control]")
     task::Task t = two_lines();
     auto robot = three_link();
     robot.proximal_angles = {-0.2, 2.6};  // sweeps the proximal link away from the point
-    std::string where;
-    CHECK_FALSE(control::plan_motion(t, robot, {}, &where).has_value());
-    CHECK(where.find("transition after trajectory[0]") != std::string::npos);
+    control::MotionFailure failure;
+    CHECK_FALSE(control::plan_motion(t, robot, {}, &failure).has_value());
+    CHECK(failure.transition);
+    CHECK(failure.primitive == 0);
+    CHECK(failure.message.find("transition after trajectory[0]") != std::string::npos);
 }
 
 TEST_CASE("path parameters recovered from joint angles match the planned ones", "[control]") {

@@ -49,11 +49,19 @@ std::optional<std::vector<double>> transition_configuration(const task::Task& ta
 /// first joint sweeps while the EE holds the transition point; no joint moves
 /// more than max_joint_step and the EE no more than max_ee_step between
 /// samples. Times are not set.
-/// std::nullopt (with `where` naming the point) when some point is out of reach.
+/// Where a motion could not be planned: the first point out of reach.
+struct MotionFailure {
+    int primitive = -1;
+    bool transition = false;  ///< in the transition after `primitive`
+    double s = 0.0;           ///< arc length (first joint's angle in a transition)
+    std::string message;
+};
+
+/// std::nullopt (with `failure` saying where) when some point is out of reach.
 std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                                                const kinematics::Robot& robot,
                                                const MotionOptions& options,
-                                               std::string* where = nullptr);
+                                               MotionFailure* failure = nullptr);
 
 /// Inserts a sample midway between samples i and i + 1 for each i in
 /// `pairs`: by arc length within a trace, by the first joint's angle in a
