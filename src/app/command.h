@@ -23,6 +23,7 @@ Command add_batch(CLI::App& parent);
 Command add_regress(CLI::App& parent);
 Command add_export(CLI::App& parent);
 Command add_explain(CLI::App& parent);
+Command add_serve(CLI::App& parent);
 
 /// --report, --urdf, --csv, --build-sheet: shared by solve and export.
 void add_export_options(CLI::App& sub, output::ExportPaths& paths);

@@ -14,7 +14,8 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("modsynth ") + MODSYNTH_VERSION);
     app.require_subcommand(1);
     const std::vector<Command> commands = {add_validate(app), add_solve(app), add_export(app),
-                                           add_batch(app), add_regress(app), add_explain(app)};
+                                           add_batch(app), add_regress(app), add_explain(app),
+                                           add_serve(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

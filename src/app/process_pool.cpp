@@ -80,8 +80,20 @@ pid_t spawn(const ProcessSpec& spec) {
         posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, spec.stderr_path.c_str(),
                                          O_WRONLY | O_CREAT | O_TRUNC, 0644);
     }
+    // A parent that blocks or ignores signals (a server does) must not pass
+    // that on: a child should die of SIGINT, SIGTERM and SIGPIPE as usual.
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    sigset_t none, defaults;
+    sigemptyset(&none);
+    sigemptyset(&defaults);
+    for (int sig : {SIGINT, SIGTERM, SIGPIPE}) sigaddset(&defaults, sig);
+    posix_spawnattr_setsigmask(&attr, &none);
+    posix_spawnattr_setsigdefault(&attr, &defaults);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
     pid_t pid = -1;
-    const int err = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    const int err = posix_spawn(&pid, argv[0], &actions, &attr, argv.data(), environ);
+    posix_spawnattr_destroy(&attr);
     posix_spawn_file_actions_destroy(&actions);
     return err == 0 ? pid : -1;
 }

@@ -1,0 +1,369 @@
+#include "api_routes.h"
+
+#include <modsynth/task/task_io.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+
+#include "solve_jobs.h"
+#include "web_assets.h"
+
+// Last: it pulls in <resolv.h>, whose `_res` macro breaks Eigen's headers.
+#include <httplib.h>
+
+namespace modsynth::app {
+namespace {
+
+using httplib::Request;
+using httplib::Response;
+using nlohmann::json;
+
+// A long poll or a progress stream waits this long for news before it says
+// it is still there (a stream) or answers unchanged (a poll).
+constexpr auto kHeartbeat = std::chrono::milliseconds(1000);
+constexpr double kLongestPoll = 20.0;
+
+// ------------------------------------------------------------------ replies
+
+void send_json(Response& res, int status, const json& body) {
+    res.status = status;
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(body.dump(1), "application/json");
+}
+
+void send_error(Response& res, int status, const std::string& message,
+                const std::string& part = {}) {
+    json body = {{"error", message}};
+    if (!part.empty()) body["part"] = part;
+    send_json(res, status, body);
+}
+
+std::string status_text(int status, const ApiSettings& settings, const Request& req) {
+    switch (status) {
+        case 400:
+            return "bad request";
+        case 404:
+            return "nothing at " + req.path;
+        case 405:
+            return "method not allowed";
+        case 413:
+            return "request body larger than " + std::to_string(settings.max_body) + " bytes";
+        case 414:
+            return "request URI too long";
+        default:
+            return "HTTP " + std::to_string(status);
+    }
+}
+
+// --------------------------------------------------------------- job views
+
+std::string job_path(const std::string& id) { return "/api/jobs/" + id; }
+
+json outcome_json(const SolveOutcome& o) {
+    json out = {{"status", o.status}, {"exit_code", o.exit_code}, {"seconds", o.seconds},
+                {"name", o.name},     {"message", o.message},     {"core", o.core}};
+    out["dof"] = o.dof ? json(*o.dof) : json(nullptr);
+    out["total_link_length"] = o.total_link_length ? json(*o.total_link_length) : json(nullptr);
+    out["clearance_margin"] = o.clearance_margin ? json(*o.clearance_margin) : json(nullptr);
+    return out;
+}
+
+json job_json(const JobState& s) {
+    const std::string self = job_path(s.id);
+    json files = json::object();
+    for (const auto& name : s.files) files[name] = self + "/files/" + name;
+    return {
+        {"id", s.id},
+        {"phase", to_string(s.phase)},
+        {"done", s.phase == Phase::Done},
+        {"status", s.status.empty() ? json(nullptr) : json(s.status)},
+        {"stage", s.stage},
+        {"elapsed", std::round(s.elapsed * 1000.0) / 1000.0},
+        {"time_limit", s.time_limit},
+        {"version", s.version},
+        {"log", s.log},
+        {"result", s.outcome ? outcome_json(*s.outcome) : json(nullptr)},
+        {"explanation", s.explanation ? *s.explanation : json(nullptr)},
+        {"explanation_note", s.explanation_note},
+        {"cancel_reason", s.cancel_reason},
+        {"files", files},
+        {"links", {{"self", self}, {"events", self + "/events"}, {"cancel", self + "/cancel"}}}};
+}
+
+// ------------------------------------------------------------------- input
+
+/// The request body as JSON, or nothing after replying 400 with where the
+/// syntax breaks.
+std::optional<json> read_body(const Request& req, Response& res) {
+    json doc = json::parse(req.body, nullptr, false);
+    if (!doc.is_discarded()) return doc;
+    try {
+        task::parse_task_text(req.body);  // for its message naming line and column
+        send_error(res, 400, "the body is not valid JSON");
+    } catch (const task::InputError& e) {
+        send_error(res, 400, e.what());
+    }
+    return std::nullopt;
+}
+
+/// A positive number from the query string; nothing when absent. Throws
+/// task::InputError naming the parameter when it is not one.
+std::optional<double> query_number(const Request& req, const char* name) {
+    if (!req.has_param(name)) return std::nullopt;
+    const std::string text = req.get_param_value(name);
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || !std::isfinite(v) || v <= 0.0)
+        throw task::InputError(name, "not a positive number: '" + text + "'");
+    return v;
+}
+
+bool host_is_loopback(const Request& req) {
+    std::string host = req.get_header_value("Host");
+    if (host.empty()) return true;  // HTTP/1.0 clients send none
+    if (host.front() == '[') {
+        host = host.substr(0, host.find(']') + 1);
+    } else {
+        host = host.substr(0, host.find(':'));
+    }
+    return host == "localhost" || host == "[::1]" || host.rfind("127.", 0) == 0;
+}
+
+// ------------------------------------------------------------------ routes
+
+class Routes : public std::enable_shared_from_this<Routes> {
+public:
+    Routes(SolveJobs& jobs, const ApiSettings& settings) : jobs_(jobs), settings_(settings) {}
+
+    // Every handler holds the routes, so they live as long as the server.
+    void install(httplib::Server& server) {
+        auto self = shared_from_this();
+        server.set_pre_routing_handler(
+            [self](const Request& req, Response& res) { return self->guard(req, res); });
+        server.Get("/api/info", [self](const Request&, Response& res) { self->info(res); });
+        server.Post("/api/validate", [](const Request& req, Response& res) { validate(req, res); });
+        server.Post("/api/solve",
+                    [self](const Request& req, Response& res) { self->solve(req, res); });
+        server.Get(R"(/api/jobs/([0-9a-f]+))",
+                   [self](const Request& req, Response& res) { self->job(req, res); });
+        server.Get(R"(/api/jobs/([0-9a-f]+)/events)",
+                   [self](const Request& req, Response& res) { self->events(req, res); });
+        server.Post(R"(/api/jobs/([0-9a-f]+)/cancel)",
+                    [self](const Request& req, Response& res) { self->cancel(req, res); });
+        server.Get(R"(/api/jobs/([0-9a-f]+)/files/([a-z.\-]+))",
+                   [self](const Request& req, Response& res) { self->file(req, res); });
+        server.Get(R"(/([A-Za-z0-9_\-]+\.[a-z]+)?)",
+                   [](const Request& req, Response& res) { asset(req, res); });
+        server.set_error_handler([self](const Request& req, Response& res) {
+            if (res.body.empty())
+                send_error(res, res.status, status_text(res.status, self->settings_, req));
+        });
+        server.set_exception_handler([](const Request&, Response& res, std::exception_ptr e) {
+            std::string what = "unknown error";
+            try {
+                std::rethrow_exception(e);
+            } catch (const std::exception& x) {
+                what = x.what();
+            } catch (...) {
+            }
+            send_error(res, 500, "internal error: " + what);
+        });
+    }
+
+private:
+    /// Refuses what no route should see: foreign Host names, and POST bodies
+    /// that are not JSON (a cross-site form can send text/plain without
+    /// asking; it cannot send application/json without a preflight this
+    /// server never grants).
+    httplib::Server::HandlerResponse guard(const Request& req, Response& res) const {
+        using R = httplib::Server::HandlerResponse;
+        if (settings_.loopback_only && !host_is_loopback(req)) {
+            send_error(res, 403, "this server answers only on the loopback (Host: localhost)");
+            return R::Handled;
+        }
+        // This runs before the body is read: judge by the headers.
+        const std::string length = req.get_header_value("Content-Length");
+        const bool has_body =
+            (!length.empty() && length != "0") || req.has_header("Transfer-Encoding");
+        const std::string type = req.get_header_value("Content-Type");
+        if (req.method == "POST" && has_body && type.rfind("application/json", 0) != 0) {
+            send_error(res, 415, "send the body as Content-Type: application/json");
+            return R::Handled;
+        }
+        return R::Unhandled;
+    }
+
+    void info(Response& res) {
+        const JobLimits& l = jobs_.limits();
+        send_json(res, 200,
+                  {{"name", "modsynth"},
+                   {"version", MODSYNTH_VERSION},
+                   {"max_solves", l.max_solves},
+                   {"running", jobs_.running()},
+                   {"time_limit", l.time_limit},
+                   {"grace", l.grace},
+                   {"client_timeout", l.client_timeout},
+                   {"max_body", settings_.max_body}});
+    }
+
+    static void validate(const Request& req, Response& res) {
+        const auto doc = read_body(req, res);
+        if (!doc) return;
+        try {
+            const task::Task t = task::parse_task(*doc);
+            send_json(res, 200,
+                      {{"valid", true},
+                       {"name", t.name},
+                       {"primitives", t.trajectory.size()},
+                       {"obstacles", t.obstacles.size()},
+                       {"base_regions", t.base_regions.size()},
+                       {"errors", json::array()}});
+        } catch (const task::InputError& e) {
+            send_json(res, 200,
+                      {{"valid", false},
+                       {"errors", json::array({{{"part", e.part()}, {"message", e.what()}}})}});
+        }
+    }
+
+    void solve(const Request& req, Response& res) {
+        const auto doc = read_body(req, res);
+        if (!doc) return;
+        double time_limit = 0.0;
+        try {
+            task::parse_task(*doc);
+            time_limit = query_number(req, "time_limit").value_or(0.0);
+        } catch (const task::InputError& e) {
+            send_error(res, e.part() == "time_limit" ? 400 : 422, e.what(), e.part());
+            return;
+        }
+        try {
+            const std::string id = jobs_.start(doc->dump(1), time_limit);
+            res.set_header("Location", job_path(id));
+            send_json(res, 202, job_json(*jobs_.state(id)));
+        } catch (const JobsBusy& e) {
+            res.set_header("Retry-After", "5");
+            send_error(res, 429, e.what());
+        }
+    }
+
+    /// A poll; with ?since=VERSION a long poll that answers as soon as the
+    /// job changes (or after ?wait seconds, at most kLongestPoll).
+    void job(const Request& req, Response& res) {
+        const std::string id = req.matches[1];
+        std::optional<JobState> s;
+        if (req.has_param("since")) {
+            const std::uint64_t since =
+                std::strtoull(req.get_param_value("since").c_str(), nullptr, 10);
+            double wait = 10.0;
+            try {
+                wait = std::min(kLongestPoll, query_number(req, "wait").value_or(wait));
+            } catch (const task::InputError& e) {
+                send_error(res, 400, e.what(), e.part());
+                return;
+            }
+            s = jobs_.wait_for_change(id, since,
+                                      std::chrono::milliseconds(static_cast<long>(wait * 1000)));
+        } else {
+            s = jobs_.state(id);
+        }
+        if (!s) return send_error(res, 404, "no job " + id);
+        send_json(res, 200, job_json(*s));
+    }
+
+    /// Server-sent events: "state" with the whole job at every change,
+    /// "tick" with the elapsed time in between. A stream that breaks means
+    /// the page went away, so its solve is cancelled.
+    void events(const Request& req, Response& res) {
+        const std::string id = req.matches[1];
+        if (!jobs_.state(id)) return send_error(res, 404, "no job " + id);
+        auto seen = std::make_shared<std::optional<std::uint64_t>>();
+        res.set_header("Cache-Control", "no-store");
+        res.set_chunked_content_provider(
+            "text/event-stream",
+            [self = shared_from_this(), id, seen](std::size_t, httplib::DataSink& sink) {
+                SolveJobs& jobs = self->jobs_;
+                const auto s =
+                    *seen ? jobs.wait_for_change(id, **seen, kHeartbeat) : jobs.state(id);
+                if (!s) {
+                    sink.done();
+                    return true;
+                }
+                std::string message;
+                if (!*seen || s->version != **seen || s->phase == Phase::Done) {
+                    message = "event: state\ndata: " + job_json(*s).dump() + "\n\n";
+                    *seen = s->version;
+                } else {
+                    message = "event: tick\ndata: " + json{{"elapsed", s->elapsed}}.dump() + "\n\n";
+                }
+                if (!sink.write(message.data(), message.size())) return false;
+                if (s->phase == Phase::Done) sink.done();
+                return true;
+            },
+            [self = shared_from_this(), id](bool completed) {
+                if (!completed)
+                    self->jobs_.cancel(id, "the client left: its progress stream closed");
+            });
+    }
+
+    void cancel(const Request& req, Response& res) {
+        const std::string id = req.matches[1];
+        if (!jobs_.cancel(id, "cancelled by the client"))
+            return send_error(res, 404, "no job " + id);
+        send_json(res, 200, job_json(*jobs_.state(id)));
+    }
+
+    void file(const Request& req, Response& res) {
+        const std::string id = req.matches[1], name = req.matches[2];
+        const auto path = jobs_.file(id, name);
+        if (!path) return send_error(res, 404, "job " + id + " has no file " + name);
+        std::ifstream in(*path, std::ios::binary);
+        std::ostringstream content;
+        content << in.rdbuf();
+        if (req.has_param("download"))
+            res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\"");
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(content.str(), mime_of(name));
+    }
+
+    static void asset(const Request& req, Response& res) {
+        const WebAsset* a = find_web_asset(req.path == "/" ? "/index.html" : req.path);
+        if (!a) return send_error(res, 404, "nothing at " + req.path);
+        res.set_header("Cache-Control", "no-cache");
+        res.set_content(reinterpret_cast<const char*>(a->data), a->size, a->mime);
+    }
+
+    static const char* mime_of(const std::string& name) {
+        const auto ends = [&](const char* ext) {
+            const std::string e = ext;
+            return name.size() >= e.size() &&
+                   name.compare(name.size() - e.size(), e.size(), e) == 0;
+        };
+        if (ends(".json")) return "application/json";
+        if (ends(".html")) return "text/html; charset=utf-8";
+        if (ends(".md")) return "text/markdown; charset=utf-8";
+        if (ends(".csv")) return "text/csv; charset=utf-8";
+        if (ends(".urdf")) return "application/xml";
+        return "text/plain; charset=utf-8";
+    }
+
+    SolveJobs& jobs_;
+    ApiSettings settings_;
+};
+
+}  // namespace
+
+void add_routes(httplib::Server& server, SolveJobs& jobs, const ApiSettings& settings) {
+    std::make_shared<Routes>(jobs, settings)->install(server);
+}
+
+}  // namespace modsynth::app

@@ -1,0 +1,26 @@
+#pragma once
+// What `modsynth serve` answers: the editor page and the JSON API it (and
+// any script) talks to. The API is documented in README.md ("serve").
+#include <cstddef>
+#include <string>
+
+namespace httplib {
+class Server;
+}
+
+namespace modsynth::app {
+
+class SolveJobs;
+
+struct ApiSettings {
+    std::size_t max_body = 1 << 20;  ///< bytes; larger request bodies get 413
+    /// Only Host headers naming the loopback are served, so that a page from
+    /// elsewhere cannot reach the server through a rebound DNS name.
+    bool loopback_only = true;
+};
+
+/// Installs the page, the API routes and the error replies on `server`.
+/// `jobs` must outlive the server's listening.
+void add_routes(httplib::Server& server, SolveJobs& jobs, const ApiSettings& settings);
+
+}  // namespace modsynth::app

@@ -1,0 +1,38 @@
+#include "log_follower.h"
+
+#include <fstream>
+
+namespace modsynth::app {
+
+std::vector<std::string> LogFollower::new_lines(bool final) {
+    std::vector<std::string> lines;
+    std::ifstream in(path_, std::ios::binary);
+    if (in) {
+        in.seekg(static_cast<std::streamoff>(offset_));
+        std::string chunk((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        offset_ += chunk.size();
+        partial_ += chunk;
+    }
+    std::size_t begin = 0;
+    for (std::size_t end; (end = partial_.find('\n', begin)) != std::string::npos; begin = end + 1)
+        lines.push_back(partial_.substr(begin, end - begin));
+    partial_.erase(0, begin);
+    if (final && !partial_.empty()) {
+        lines.push_back(partial_);
+        partial_.clear();
+    }
+    return lines;
+}
+
+std::string stage_of(const std::string& line) {
+    if (line.size() < 4 || line[0] != '[') return {};
+    const std::size_t close = line.find("s] ");
+    if (close == std::string::npos) return {};
+    for (std::size_t i = 1; i < close; ++i) {
+        const char c = line[i];
+        if (c != ' ' && c != '.' && (c < '0' || c > '9')) return {};
+    }
+    return line.substr(close + 3);
+}
+
+}  // namespace modsynth::app

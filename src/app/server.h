@@ -1,0 +1,26 @@
+#pragma once
+// `modsynth serve`: the web editor and its API on a local HTTP server, until
+// SIGINT or SIGTERM. Solves run in child processes (solve_jobs.h); the
+// server itself survives whatever a request holds.
+#include <string>
+
+#include "api_routes.h"
+#include "solve_jobs.h"
+
+namespace modsynth::app {
+
+struct ServerOptions {
+    std::string host = "127.0.0.1";
+    int port = 8080;  ///< 0: any free port (the one taken is printed)
+    ApiSettings api;
+    JobLimits jobs;
+};
+
+/// Serves until SIGINT or SIGTERM; returns the exit code. Prints the URL on
+/// stdout once listening, so that a script can wait for it and read the port.
+int run_server(const ServerOptions& options);
+
+/// True for the names and addresses of the loopback interface.
+bool is_loopback_host(const std::string& host);
+
+}  // namespace modsynth::app

@@ -1,0 +1,306 @@
+// `modsynth serve` as a new user meets it, in real headless Chromium (Debian's
+// /usr/bin/chromium driven by playwright-core): draw a small task by clicking,
+// synthesize, watch the robot move along the path; load an infeasible task
+// and see its core outlined; edit numbers, drag, undo, and cancel a long
+// solve. Every wait is for a condition, bounded.
+//
+// usage: node editor.test.mjs MODSYNTH_BINARY SOURCE_DIR OUTPUT_DIR
+// Exit: 0 all passed, 1 a check failed, 77 skipped (Chromium or
+// playwright-core missing: ./scripts/test installs both).
+
+import { spawn } from "node:child_process";
+import fs from "node:fs";
+import path from "node:path";
+import readline from "node:readline";
+
+const [bin, root, outDir] = process.argv.slice(2);
+const SKIP = 77;
+const CHROMIUM = "/usr/bin/chromium";
+// Without the networking flags Chromium keeps calling home, and this
+// machine's closed network refuses every call.
+const CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                        "--disable-component-update", "--disable-sync", "--no-first-run"];
+const WHOLE_RUN_MS = 150_000;
+const SOLVE_MS = 60_000;
+const EXPLAIN_MS = 90_000;
+
+const failures = [];
+let checks = 0;
+const figures = {};
+let server = null;
+let browser = null;
+
+function check(cond, what) {
+  ++checks;
+  if (!cond) {
+    failures.push(what);
+    console.log("FAIL: " + what);
+  }
+}
+
+async function cleanup() {
+  if (browser) await browser.close().catch(() => {});
+  if (server && server.exitCode === null) server.kill("SIGTERM");
+}
+
+// ------------------------------------------------------------------ setup
+
+async function loadPlaywright() {
+  if (!fs.existsSync(CHROMIUM)) {
+    console.log(`e2e: skipped: ${CHROMIUM} is missing (Debian packages chromium, chromium-driver)`);
+    process.exit(SKIP);
+  }
+  try {
+    return (await import("playwright-core")).chromium;
+  } catch (e) {
+    console.log("e2e: skipped: playwright-core is not installed (npm ci in tests/e2e): " + e.message);
+    process.exit(SKIP);
+  }
+}
+
+/// Starts `modsynth serve --port 0` and reads the URL it prints.
+function startServer() {
+  return new Promise((resolve, reject) => {
+    server = spawn(bin, ["serve", "--port", "0", "--max-solves", "2"], { stdio: ["ignore", "pipe", "inherit"] });
+    server.on("error", reject);
+    server.on("exit", (code) => reject(new Error("serve exited early with code " + code)));
+    readline.createInterface({ input: server.stdout }).once("line", (line) => {
+      const m = /http:\/\/[^ ]+\//.exec(line);
+      if (m) resolve(m[0]); else reject(new Error("serve printed no URL: " + line));
+    });
+  });
+}
+
+async function openEditor(url) {
+  const context = await browser.newContext({ viewport: { width: 1400, height: 900 } });
+  const page = await context.newPage();
+  page.on("pageerror", (e) => check(false, "no script error on the page: " + e.message));
+  await page.goto(url);
+  await page.waitForSelector("body[data-ready=true]");
+  return page;
+}
+
+/// A click on the canvas at a task point (metres), where the page draws it.
+async function clickAt(page, p, modifiers = []) {
+  const [x, y] = await page.evaluate((q) => window.modsynth.clientPoint(q), p);
+  for (const m of modifiers) await page.keyboard.down(m);
+  await page.mouse.move(x, y);
+  await page.mouse.click(x, y);
+  for (const m of modifiers) await page.keyboard.up(m);
+}
+
+const text = (page, selector) => page.$eval(selector, (e) => e.textContent);
+const hasClass = (page, selector, cls) => page.$eval(selector, (e, c) => e.classList.contains(c), cls).catch(() => false);
+
+// ------------------------------------------------------------ first user
+
+const DRAWN = {
+  trajectory: [
+    { type: "line", start: [0.4, 0.1], end: [0.6, 0.1] },
+    { type: "arc", start: [0.6, 0.1], end: [0.6, 0.3], center: [0.6, 0.2], direction: "ccw" },
+    { type: "circle", start: [0.6, 0.3], center: [0.6, 0.4], direction: "ccw" },
+  ],
+  obstacles: [{ center: [0.2, 0.6], radius: 0.1 }],
+  base_regions: [{ min: [-0.1, -0.1], max: [0.1, 0.1] }],
+};
+
+async function drawTask(page) {
+  await page.click('button[data-tool="line"]');
+  await clickAt(page, [0.4, 0.1]);
+  await clickAt(page, [0.6, 0.1]);
+  await page.click('button[data-tool="arc"]');
+  await clickAt(page, [0.6, 0.3]);   // its end
+  await clickAt(page, [0.7, 0.2]);   // a point on it
+  await page.click('button[data-tool="circle"]');
+  await clickAt(page, [0.6, 0.4]);   // its centre
+  await page.click('button[data-tool="obstacle"]');
+  await clickAt(page, [0.2, 0.6]);
+  await clickAt(page, [0.3, 0.6]);
+  await page.click('button[data-tool="region"]');
+  await clickAt(page, [-0.1, -0.1]);
+  await clickAt(page, [0.1, 0.1]);
+}
+
+async function firstUser(url) {
+  const opened = Date.now();
+  const page = await openEditor(url);
+  await drawTask(page);
+  const doc = await page.evaluate(() => window.modsynth.model.doc);
+  for (const key of ["trajectory", "obstacles", "base_regions"]) {
+    check(JSON.stringify(doc[key]) === JSON.stringify(DRAWN[key]),
+          `clicks drew the ${key}: ${JSON.stringify(doc[key])}`);
+  }
+  await page.waitForSelector('body[data-validity="valid"]', { timeout: 10_000 });
+  check((await text(page, "#validity")).includes("3 primitives"), "the server calls the drawn task valid");
+
+  await page.keyboard.press("Control+z");
+  check((await page.evaluate(() => window.modsynth.model.regions.length)) === 0, "undo removes the base region");
+  await page.keyboard.press("Control+y");
+  check((await page.evaluate(() => window.modsynth.model.regions.length)) === 1, "redo brings it back");
+  await page.screenshot({ path: path.join(outDir, "e2e-editor-drawn.png") });
+
+  await page.click("#synthesize");
+  await page.waitForFunction(() => document.getElementById("run-stage").textContent.length > 0);
+  await page.waitForSelector('body[data-synthesis="solved"]', { timeout: SOLVE_MS });
+  await watchRobotMove(page, opened);
+  await checkFigures(page);
+  await page.screenshot({ path: path.join(outDir, "e2e-editor-solved.png") });
+  await page.context().close();
+}
+
+/// The report opens in the Result tab and plays: the arm's last link moves.
+async function watchRobotMove(page, opened) {
+  await page.waitForSelector("#result-view:not([hidden])", { timeout: 10_000 });
+  const frame = await (await page.waitForSelector("#report")).contentFrame();
+  await frame.waitForSelector("#robot .link", { state: "attached", timeout: 10_000 });
+  const tip = () => frame.$eval("#robot .link:last-of-type", (e) => e.getAttribute("x2") + "," + e.getAttribute("y2"));
+  const before = await tip();
+  await frame.waitForFunction((b) => {
+    const l = document.querySelector("#robot .link:last-of-type");
+    return l.getAttribute("x2") + "," + l.getAttribute("y2") !== b;
+  }, before, { timeout: 10_000 });
+  figures.animatedAfter = (Date.now() - opened) / 1000;
+  check(figures.animatedAfter < 60, `an animated robot within a minute of opening the page (${figures.animatedAfter} s)`);
+  check(/^(Pause)$/.test(await frame.$eval("#play", (e) => e.textContent)), "the report is playing");
+}
+
+async function checkFigures(page) {
+  const frame = await (await page.$("#report")).contentFrame();
+  const cell = (id) => frame.$eval(`#${id} td`, (e) => e.textContent);
+  check(/^[23]$/.test(await cell("fig-dof")), "figures: joint count");
+  check((await cell("fig-links")).includes("mm"), "figures: link lengths");
+  check((await cell("fig-clearance")).includes("mm"), "figures: certified clearance");
+  check((await frame.$$("#reachable path")).length > 0, "the reachable space is drawn");
+  check((await frame.$$("#swept path")).length >= 3, "a swept region per primitive");
+  check((await text(page, "#summary-table")).includes("solved"), "the panel says solved");
+  await page.waitForSelector("#summary-links", { timeout: 10_000 });
+  check(/mm/.test(await text(page, "#summary-links")), "the panel shows the link lengths");
+  const links = await page.$$eval("#downloads a", (as) => as.map((a) => [a.dataset.file, a.href]));
+  const names = links.map(([name]) => name);
+  for (const name of ["solution.json", "robot.urdf", "trajectory.csv", "report.html"]) {
+    check(names.includes(name), "download offered: " + name);
+  }
+  for (const [name, href] of links) {
+    const status = await page.evaluate(async (u) => (await fetch(u)).status, href);
+    check(status === 200, `download ${name} answers 200 (${status})`);
+  }
+}
+
+// ------------------------------------------------------------- infeasible
+
+async function loadFile(page, file) {
+  const [chooser] = await Promise.all([page.waitForEvent("filechooser"), page.click("#open")]);
+  await chooser.setFiles(file);
+}
+
+async function infeasibleTask(url) {
+  const page = await openEditor(url);
+  await loadFile(page, path.join(root, "tests/fixtures/invalid/disconnected.json"));
+  await page.waitForSelector('body[data-validity="invalid"]', { timeout: 10_000 });
+  const row = '#parts li[data-part="trajectory[1]"]';
+  check((await text(page, row + " .part-error").catch(() => "")).includes("connect"),
+        "the validation error sits next to trajectory[1] in the list");
+  check(await hasClass(page, '#canvas polyline.primitive[data-part="trajectory[1]"]', "error"),
+        "trajectory[1] is marked on the canvas");
+  check((await page.$$('#canvas .error-label[data-part="trajectory[1]"]')).length === 1,
+        "the message is written next to it on the canvas");
+
+  await loadFile(page, path.join(root, "tasks/infeasible/out-of-reach.task.json"));
+  await page.waitForSelector('body[data-validity="valid"]', { timeout: 10_000 });
+  await page.click("#synthesize");
+  await page.waitForSelector("#core-list li", { timeout: SOLVE_MS });
+  check(await hasClass(page, '#canvas polyline.primitive[data-part="trajectory[0]"]', "core"),
+        "the core's primitive is outlined on the canvas");
+  check(await hasClass(page, '#canvas rect.region[data-part="base_regions[0]"]', "core"),
+        "the core's base region is outlined on the canvas");
+  check(await hasClass(page, "#max-link", "core-field"), "robot.max_link_length is marked in the panel");
+  check(/infeasible/i.test(await text(page, "#explanation-message")), "the explanation is shown");
+  await page.waitForSelector('body[data-synthesis="infeasible"]', { timeout: EXPLAIN_MS });
+  await page.waitForSelector("#suggestions", { timeout: 5_000 });
+  const suggestions = await text(page, "#suggestions");
+  check(suggestions.length > 10, "suggested changes (or why there are none): " + suggestions);
+  figures.suggestions = (await page.$$("#suggestions li")).length;
+  await page.screenshot({ path: path.join(outDir, "e2e-editor-infeasible.png") });
+  await page.context().close();
+}
+
+// ------------------------------------------------------- edit and cancel
+
+/// Exact numbers in the panel, a drag on the canvas, undo; then a long solve
+/// with live progress, stopped with the Cancel button.
+async function editAndCancel(url) {
+  const page = await openEditor(url);
+  await loadFile(page, path.join(root, "tests/fixtures/serve/slow.task.json"));
+  await page.waitForSelector('body[data-validity="valid"]', { timeout: 10_000 });
+  const radius = () => page.evaluate(() => window.modsynth.model.doc.obstacles[0].radius);
+  await page.click('#parts li[data-part="obstacles[0]"]');
+  await page.fill('#selection-form input[data-key="radius"]', "0.025");
+  await page.press('#selection-form input[data-key="radius"]', "Tab");
+  check((await radius()) === 0.025, "the panel sets an obstacle's radius exactly");
+  await page.click("#undo");
+  check((await radius()) === 0.03, "undo restores it");
+  const center = await page.evaluate(() => window.modsynth.model.doc.obstacles[0].center);
+  const [hx, hy] = await page.evaluate((c) => window.modsynth.clientPoint([c[0] + 0.03, c[1]]), center);
+  await page.mouse.move(hx, hy);
+  await page.mouse.down();
+  await page.mouse.move(hx + 40, hy, { steps: 4 });
+  await page.mouse.up();
+  check((await radius()) > 0.03, "dragging the rim handle resizes the obstacle");
+  await page.click("#undo");
+  check((await radius()) === 0.03, "undo restores the size");
+
+  await page.click("#synthesize");
+  // The first progress line replaces "starting" once the solver has begun.
+  await page.waitForFunction(() => !/^(|starting)$/.test(document.getElementById("run-stage").textContent),
+                             null, { timeout: 20_000 });
+  const stage = await text(page, "#run-stage");
+  const log = await page.evaluate(() => window.modsynth.synthesis.job.log);
+  check(log.some((line) => line.endsWith(stage)), "live progress shows the solver's latest stage: " + stage);
+  check((await page.evaluate(() => document.body.dataset.synthesis)) === "running", "the solve runs on");
+  check(/of at most/.test(await text(page, "#run-clock")), "live progress shows the elapsed time");
+  const id = await page.evaluate(() => document.body.dataset.jobId);
+  await page.click("#cancel");
+  await page.waitForSelector('body[data-synthesis="cancelled"]', { timeout: 5_000 });
+  const job = await page.evaluate(async (j) => (await fetch("/api/jobs/" + j)).json(), id);
+  check(job.status === "cancelled" && /client/.test(job.cancel_reason), "Cancel stops the solve on the server");
+  await page.context().close();
+}
+
+// ------------------------------------------------------------------- main
+
+async function main() {
+  const chromium = await loadPlaywright();
+  const watchdog = setTimeout(async () => {
+    console.log(`e2e: FAILED: still running after ${WHOLE_RUN_MS / 1000} s`);
+    await cleanup();
+    process.exit(1);
+  }, WHOLE_RUN_MS);
+  fs.mkdirSync(outDir, { recursive: true });
+  try {
+    const url = await startServer();
+    browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_FLAGS });
+    for (const [name, run] of [["draw, synthesize, animate", firstUser], ["infeasible core", infeasibleTask],
+                               ["edit and cancel", editAndCancel]]) {
+      const started = Date.now();
+      try {
+        await run(url);
+      } catch (e) {
+        check(false, `${name}: ${e.message.split("\n")[0]}`);
+      }
+      console.log(`${name}: ${((Date.now() - started) / 1000).toFixed(1)} s`);
+    }
+  } catch (e) {
+    check(false, "setup: " + e.message);
+  } finally {
+    clearTimeout(watchdog);
+    await cleanup();
+  }
+  const timing = figures.animatedAfter !== undefined ? `; page open to animated robot ${figures.animatedAfter.toFixed(1)} s` : "";
+  if (failures.length) {
+    console.log(`e2e: FAILED: ${failures.length} of ${checks} checks${timing}`);
+    process.exit(1);
+  }
+  console.log(`e2e: all ${checks} checks passed${timing}; screenshots in ${outDir}`);
+}
+
+await main();

@@ -1,0 +1,358 @@
+#!/usr/bin/env python3
+"""`modsynth serve` from the outside: its JSON API and every limit it
+promises (README.md, "serve"). Each check starts its own server on a free
+loopback port and stops it; every wait is bounded, so a hung server fails
+the test instead of hanging it.
+
+usage: serve_test.py MODSYNTH_BINARY SOURCE_DIR
+"""
+import http.client
+import json
+import os
+import re
+import signal
+import socket
+import subprocess
+import sys
+import time
+
+BIN, ROOT = sys.argv[1], sys.argv[2]
+ROSE = os.path.join(ROOT, "tasks", "rose.json")
+OUT_OF_REACH = os.path.join(ROOT, "tasks", "infeasible", "out-of-reach.task.json")
+DISCONNECTED = os.path.join(ROOT, "tests", "fixtures", "invalid", "disconnected.json")
+# Runs to its time limit: for checks that act on a solve still running.
+SLOW = os.path.join(ROOT, "tests", "fixtures", "serve", "slow.task.json")
+JSON_TYPE = {"Content-Type": "application/json"}
+
+failures = []
+checks = 0
+
+
+def check(cond, what):
+    global checks
+    checks += 1
+    if not cond:
+        failures.append(what)
+        print("FAIL:", what, flush=True)
+
+
+def read(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+class Server:
+    """One `modsynth serve --port 0` process; the port comes from its first line."""
+
+    def __init__(self, *options):
+        self.proc = subprocess.Popen([BIN, "serve", "--port", "0", *options],
+                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        line = self.proc.stdout.readline()
+        m = re.search(r"http://127\.0\.0\.1:(\d+)/", line)
+        if not m:
+            self.proc.kill()
+            raise RuntimeError("serve printed no URL: %r %s" % (line, self.proc.stderr.read()))
+        self.port = int(m.group(1))
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.stop()
+
+    def stop(self):
+        if self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGTERM)
+            try:
+                self.proc.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+                failures.append("serve did not stop on SIGTERM")
+        return self.proc.returncode
+
+    def request(self, method, path, body=None, headers=None, timeout=30):
+        conn = http.client.HTTPConnection("127.0.0.1", self.port, timeout=timeout)
+        try:
+            conn.request(method, path, body=body, headers=headers or {})
+            res = conn.getresponse()
+            data = res.read()
+            return res.status, dict(res.getheaders()), data
+        finally:
+            conn.close()
+
+    def json(self, method, path, body=None, headers=None):
+        status, headers, data = self.request(method, path, body, headers)
+        try:
+            return status, headers, json.loads(data)
+        except ValueError:
+            return status, headers, {"unparsed": data[:200]}
+
+    def solve(self, task_path, query=""):
+        return self.json("POST", "/api/solve" + query, read(task_path), JSON_TYPE)
+
+    def job(self, job_id):
+        return self.json("GET", "/api/jobs/" + job_id)[2]
+
+    def wait(self, job_id, cond, seconds, poll=0.1):
+        """Polls the job (which also keeps it alive) until cond(job) holds."""
+        deadline = time.monotonic() + seconds
+        job = self.job(job_id)
+        while not cond(job) and time.monotonic() < deadline:
+            time.sleep(poll)
+            job = self.job(job_id)
+        return job
+
+    def alive(self):
+        try:
+            return self.request("GET", "/api/info", timeout=5)[0] == 200 and self.proc.poll() is None
+        except OSError:
+            return False
+
+    def children(self):
+        """Process ids whose parent is the server (its running solves)."""
+        kids = []
+        for pid in os.listdir("/proc"):
+            if not pid.isdigit():
+                continue
+            try:
+                with open("/proc/%s/stat" % pid) as f:
+                    fields = f.read().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if int(fields[1]) == self.proc.pid and fields[0] != "Z":
+                kids.append(int(pid))
+        return kids
+
+
+def done(job):
+    return job.get("done") is True
+
+
+def running_with_progress(job):
+    return done(job) or len(job.get("log", [])) > 0
+
+
+# ------------------------------------------------------------------ checks
+
+def test_page_and_info():
+    with Server() as s:
+        status, headers, body = s.request("GET", "/")
+        check(status == 200 and b"<svg id=\"canvas\"" in body, "GET / serves the editor page")
+        check(headers.get("Content-Type", "").startswith("text/html"), "page is text/html")
+        for asset in ["index.html", "app.js", "canvas.js", "panel.js", "synthesis.js", "task_model.js",
+                      "geometry.js", "style.css"]:
+            status, _, body = s.request("GET", "/" + asset)
+            check(status == 200 and len(body) > 100, "GET /%s" % asset)
+            # Works offline: nothing fetched from elsewhere (the SVG namespace is a name, not a fetch).
+            check(not re.search(rb"https?://|//cdn", body.replace(b"http://www.w3.org/2000/svg", b"")),
+                  "/%s refers to no other host" % asset)
+        status, _, info = s.json("GET", "/api/info")
+        check(status == 200 and info.get("max_solves") == 2 and info.get("max_body") == 1 << 20,
+              "GET /api/info: %s" % info)
+
+
+def test_body_limit():
+    with Server() as s:
+        big = b'{"format": "modsynth-task/1", "pad": "' + b"x" * (1 << 20) + b'"}'
+        try:
+            status, _, body = s.json("POST", "/api/validate", big, JSON_TYPE)
+        except OSError as e:  # the server may close while the rest is on its way
+            status, body = None, {"error": str(e)}
+        check(status == 413, "a body over 1 MB gets 413 (got %s)" % status)
+        check("larger than" in body.get("error", ""), "413 says why: %s" % body)
+        under = b'{"format": "modsynth-task/1", "pad": "' + b"x" * ((1 << 20) - 100) + b'"}'
+        status, _, body = s.json("POST", "/api/validate", under, JSON_TYPE)
+        check(status == 200 and body.get("valid") is False, "a body just under 1 MB is read (%s)" % status)
+        check(s.alive(), "server alive after an oversized body")
+
+
+def test_malformed_and_invalid():
+    with Server() as s:
+        status, _, body = s.json("POST", "/api/validate", b'{"format": "modsynth-task/1",', JSON_TYPE)
+        check(status == 400 and "line 1, column" in body.get("error", ""),
+              "malformed JSON: 400 naming line and column: %s" % body)
+        status, _, body = s.json("POST", "/api/solve", b"\x00\xff garbage", JSON_TYPE)
+        check(status == 400 and body.get("error"), "malformed JSON to /api/solve: 400 with a message")
+        status, _, body = s.json("POST", "/api/validate", read(DISCONNECTED), JSON_TYPE)
+        errors = body.get("errors") or [{}]
+        check(status == 200 and body.get("valid") is False and errors[0].get("part") == "trajectory[1]",
+              "validate names the offending part: %s" % body)
+        status, _, body = s.json("POST", "/api/solve", read(DISCONNECTED), JSON_TYPE)
+        check(status == 422 and body.get("part") == "trajectory[1]", "an invalid task to solve: 422 with its part")
+        status, _, body = s.json("POST", "/api/validate", read(ROSE), JSON_TYPE)
+        check(status == 200 and body.get("valid") is True and body.get("primitives") == 7, "rose is valid")
+        status, _, body = s.json("POST", "/api/validate", b"{}", {"Content-Type": "text/plain"})
+        check(status == 415, "a body that is not application/json: 415 (%s)" % status)
+        status, _, body = s.json("GET", "/api/info", headers={"Host": "attacker.example"})
+        check(status == 403, "a foreign Host name: 403 (%s)" % status)
+        status, _, body = s.json("GET", "/api/nothing-here")
+        check(status == 404 and body.get("error"), "unknown path: 404 with a JSON message")
+        status, _, body = s.json("GET", "/api/jobs/0123456789abcdef")
+        check(status == 404, "unknown job: 404")
+        status, _, body = s.solve(ROSE, "?time_limit=soon")
+        check(status == 400 and body.get("part") == "time_limit", "bad time_limit: 400 naming it")
+
+
+def test_solve_and_files():
+    with Server() as s:
+        status, headers, job = s.solve(ROSE)
+        check(status == 202 and job.get("id") and headers.get("Location") == job["links"]["self"],
+              "POST /api/solve: 202 with the job")
+        job = s.wait(job["id"], done, 60)
+        check(job.get("status") == "solved", "rose solved through the API: %s" % job.get("status"))
+        result = job.get("result") or {}
+        check(result.get("dof") in (2, 3) and result.get("total_link_length", 0) > 0, "result figures")
+        check(any(line.startswith("[") for line in job.get("log", [])), "progress lines were followed")
+        for name, marker in [("solution.json", b'"status": "solved"'), ("report.html", b'<svg id="plot"'),
+                             ("robot.urdf", b"<robot"), ("trajectory.csv", b"t,q1,q2"),
+                             ("build-sheet.md", b"#")]:
+            url = job.get("files", {}).get(name)
+            status, headers, body = s.request("GET", url or "/missing")
+            check(status == 200 and marker in body, "download %s" % name)
+        status, headers, _ = s.request("GET", job["files"]["robot.urdf"] + "?download=1")
+        check("attachment" in headers.get("Content-Disposition", ""), "?download=1 sends an attachment")
+        status, _, _ = s.request("GET", "/api/jobs/%s/files/..%%2F..%%2Fetc%%2Fpasswd" % job["id"])
+        check(status == 404, "only the job's own files are served")
+
+
+def test_infeasible_explained():
+    with Server() as s:
+        job = s.solve(OUT_OF_REACH)[2]
+        job = s.wait(job["id"], lambda j: j.get("result") is not None, 30)
+        check((job.get("result") or {}).get("status") == "infeasible", "out-of-reach is infeasible")
+        check("trajectory[0]" in (job.get("result") or {}).get("core", []), "its core names trajectory[0]")
+        job = s.wait(job["id"], done, 90)
+        suggestions = (job.get("explanation") or {}).get("suggestions")
+        check(job.get("status") == "infeasible" and (suggestions or job.get("explanation_note")),
+              "suggested changes (or why there are none): %s" % job.get("explanation_note"))
+
+
+def test_concurrency_limit_and_cancel():
+    with Server("--max-solves", "1") as s:
+        first = s.solve(SLOW, "?time_limit=30")[2]
+        job = s.wait(first["id"], running_with_progress, 10)
+        check(not done(job), "precondition: the slow task is still running (%s)" % job.get("status"))
+        status, headers, body = s.solve(ROSE)
+        check(status == 429 and headers.get("Retry-After") and body.get("error"),
+              "beyond --max-solves: 429 with Retry-After (%s)" % status)
+        check(len(s.children()) == 1, "one solve process runs")
+        started = time.monotonic()
+        status, _, job = s.json("POST", job["links"]["cancel"])
+        check(status == 200 and job.get("status") == "cancelled", "cancel answers with the cancelled job")
+        check(time.monotonic() - started < 2, "cancel is immediate")
+        check(s.children() == [], "the cancelled solve's process is gone")
+        status, _, second = s.solve(ROSE)
+        check(status == 202, "a freed slot takes the next solve (%s)" % status)
+        s.wait(second.get("id", ""), done, 60)
+        status, _, job = s.json("POST", first["links"]["cancel"])
+        check(status == 200 and job.get("status") == "cancelled", "cancelling a finished job changes nothing")
+
+
+def test_time_limit():
+    with Server("--time-limit", "1", "--grace", "0.5") as s:
+        started = time.monotonic()
+        job = s.solve(SLOW, "?time_limit=100")[2]
+        check(job.get("time_limit") == 1, "a request cannot raise the server's time limit")
+        job = s.wait(job["id"], done, 10)
+        took = time.monotonic() - started
+        check(job.get("status") in ("unknown", "timeout"), "a solve past its limit stops: %s" % job.get("status"))
+        check(took < 1 + 0.5 + 1.5, "... within the limit and grace (%.2f s)" % took)
+    with Server("--grace", "0") as s:
+        job = s.solve(SLOW, "?time_limit=0.3")[2]
+        job = s.wait(job["id"], done, 5)
+        check(done(job) and job.get("elapsed", 99) < 1.5,
+              "a request's own shorter limit holds (%s after %s s)" % (job.get("status"), job.get("elapsed")))
+
+
+def test_client_that_leaves():
+    with Server("--client-timeout", "1") as s:
+        job = s.solve(SLOW, "?time_limit=30")[2]
+        time.sleep(2.5)  # ask nothing: the client is gone
+        job = s.job(job["id"])
+        check(job.get("status") == "cancelled" and "client left" in job.get("cancel_reason", ""),
+              "a solve nobody asks about is cancelled: %s / %s" % (job.get("status"), job.get("cancel_reason")))
+        check(s.children() == [], "... and its process is gone")
+    with Server() as s:
+        job = s.solve(SLOW, "?time_limit=30")[2]
+        sock = socket.create_connection(("127.0.0.1", s.port), timeout=5)
+        sock.sendall(("GET %s HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n" % job["links"]["events"]).encode())
+        first = sock.recv(4096)
+        check(b"text/event-stream" in first, "the progress stream opens")
+        sock.close()
+        job = s.wait(job["id"], done, 5)
+        check(job.get("status") == "cancelled" and "stream closed" in job.get("cancel_reason", ""),
+              "closing the progress stream cancels: %s" % job.get("cancel_reason"))
+
+
+def test_long_poll():
+    with Server() as s:
+        job = s.solve(SLOW, "?time_limit=30")[2]
+        started = time.monotonic()
+        status, _, later = s.json("GET", "/api/jobs/%s?since=%d&wait=5" % (job["id"], job["version"]))
+        check(status == 200 and later.get("version", 0) > job["version"] and time.monotonic() - started < 5,
+              "a long poll answers at the next change")
+        status, _, _ = s.json("GET", "/api/jobs/%s?since=0&wait=-1" % job["id"])
+        check(status == 400, "a bad wait is 400")
+        s.json("POST", job["links"]["cancel"])
+
+
+def test_garbage_does_not_kill():
+    with Server() as s:
+        junk = [b"\x16\x03\x01\x02\x00\x01\x00\x01\xfc\x03\x03" + os.urandom(64),  # a TLS hello
+                b"NOT A REQUEST\r\n\r\n",
+                b"GET / HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: -5\r\n\r\n",
+                b"POST /api/solve HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/json\r\n"
+                b"Content-Length: 1000\r\n\r\n{\"format\":",  # then hang up mid-body
+                b"GET /" + b"a" * 20000 + b" HTTP/1.1\r\n\r\n",
+                b"GET / HTTP/1.1\r\n" + b"X: y\r\n" * 5000 + b"\r\n",
+                os.urandom(3000)]
+        for data in junk:
+            try:
+                sock = socket.create_connection(("127.0.0.1", s.port), timeout=3)
+                sock.sendall(data)
+                sock.shutdown(socket.SHUT_WR)
+                sock.recv(1024)
+            except OSError:
+                pass
+            finally:
+                sock.close()
+        status, _, body = s.json("POST", "/api/solve", b'{"format": "modsynth-task/1", "trajectory": 7}', JSON_TYPE)
+        check(status == 422, "a task of the wrong shape: 422 (%s)" % status)
+        check(s.alive(), "garbage requests do not kill the server")
+
+
+def test_shutdown_kills_solves():
+    s = Server()
+    job = s.solve(SLOW, "?time_limit=30")[2]
+    s.wait(job["id"], running_with_progress, 10)
+    kids = s.children()
+    check(len(kids) == 1, "a solve runs before the shutdown")
+    code = s.stop()
+    check(code == 0, "SIGTERM stops the server cleanly (exit %s)" % code)
+    time.sleep(0.2)
+    check(all(not os.path.exists("/proc/%d" % k) for k in kids), "no solve outlives the server")
+
+
+def main():
+    tests = [test_page_and_info, test_body_limit, test_malformed_and_invalid, test_solve_and_files,
+             test_infeasible_explained, test_concurrency_limit_and_cancel, test_time_limit,
+             test_client_that_leaves, test_long_poll, test_garbage_does_not_kill,
+             test_shutdown_kills_solves]
+    for t in tests:
+        started = time.monotonic()
+        try:
+            t()
+        except Exception as e:  # one broken check must not hide the others
+            failures.append("%s raised %r" % (t.__name__, e))
+            print("FAIL: %s raised %r" % (t.__name__, e), flush=True)
+        print("%-36s %.1f s" % (t.__name__, time.monotonic() - started), flush=True)
+    if failures:
+        print("serve: %d of %d checks failed" % (len(failures), checks))
+        return 1
+    print("serve: all %d checks passed" % checks)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
