@@ -1,13 +1,8 @@
 #include <modsynth/output/solution_reader.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -269,19 +264,7 @@ ParsedSolution parse_solution_text(std::string_view text) {
 }
 
 ParsedSolution load_solution(const std::string& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        throw InputError(path, "is a folder, not a solution file");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw InputError(path,
-                         std::string("cannot open the solution file: ") + std::strerror(errno));
-    }
-    std::ostringstream content;
-    content << in.rdbuf();
-    if (in.bad()) throw InputError(path, "cannot read the solution file");
-    return parse_solution_text(content.str());
+    return parse_solution_text(task::read_input_file(path, "solution"));
 }
 
 void check_solution_fits(const task::Task& task, const synth::Solution& solution) {

@@ -484,19 +484,23 @@ Task parse_task_text(std::string_view text) {
     return parse_task(doc);
 }
 
-Task load_task(const std::string& path) {
+std::string read_input_file(const std::string& path, const std::string& what) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
-        throw InputError(path, "is a folder, not a task file");
+        throw InputError(path, "is a folder, not a " + what + " file");
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        throw InputError(path, std::string("cannot open the task file: ") + std::strerror(errno));
+        throw InputError(path, "cannot open the " + what + " file: " + std::strerror(errno));
     }
     std::ostringstream content;
     content << in.rdbuf();
-    if (in.bad()) throw InputError(path, "cannot read the task file");
-    Task task = parse_task_text(content.str());
+    if (in.bad()) throw InputError(path, "cannot read the " + what + " file");
+    return content.str();
+}
+
+Task load_task(const std::string& path) {
+    Task task = parse_task_text(read_input_file(path, "task"));
     if (task.name.empty()) task.name = std::filesystem::path(path).stem().string();
     return task;
 }

@@ -17,4 +17,9 @@ private:
     std::string part_;
 };
 
+/// The whole content of a file the user named, for parsing. Failures are
+/// InputErrors whose part is the path; `what` says what the file should be
+/// ("task", "solution").
+std::string read_input_file(const std::string& path, const std::string& what);
+
 }  // namespace modsynth::task
