@@ -3,12 +3,7 @@
 # figures and exit codes, shards that partition the suite, and a watchdog
 # kill reported as a timeout instead of a hang.
 set -u
-bin=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/shell_test_lib.sh"
 
 # The bundled tasks plus one that cannot be parsed.
 mkdir -p "$tmp/suite"
@@ -98,5 +93,4 @@ batch "$tmp/no-such-folder" --out "$tmp/x.jsonl"
 batch "$tmp/suite" --out "$tmp/x.jsonl" --jobs 0
 [ $? -eq 2 ] || fail "--jobs 0 accepted"
 
-echo "$(( failures == 0 ? 1 : 0 )) passed, $(( failures == 0 ? 0 : 1 )) failed: batch"
-[ "$failures" -eq 0 ]
+finish batch

@@ -2,12 +2,7 @@
 # The command line as a user meets it: exit codes, messages that name the
 # offending part, output files, determinism.
 set -u
-bin=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/shell_test_lib.sh"
 
 expect_exit() {  # expected-code description command...
     local want=$1 what=$2
@@ -114,5 +109,4 @@ expect_exit 0 "explain a feasible task" "$bin" explain "$root/tasks/rose.json"
 # Unwritable output is an internal error, reported, not a crash.
 expect_exit 1 "unwritable output" "$bin" solve "$root/tasks/rose.json" -o "$tmp/no/such/dir/x.json" --quiet
 
-echo "$(( failures == 0 ? 1 : 0 )) passed, $(( failures == 0 ? 0 : 1 )) failed: cli"
-[ "$failures" -eq 0 ]
+finish cli

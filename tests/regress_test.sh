@@ -4,12 +4,7 @@
 # (The committed encodings themselves are checked by the regress_encodings
 # test.)
 set -u
-bin=$1
-root=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/shell_test_lib.sh"
 
 # Copies the committed encodings, applies a Python edit to one expectation,
 # runs the regression against the copy.
@@ -80,5 +75,4 @@ timeout 300 "$bin" regress encodings --regenerate --dir "$tmp/regen" --tasks "$r
 (cd "$tmp/regen" && find . -name '*.smt2' | sort) >"$tmp/fresh"
 cmp -s "$tmp/committed" "$tmp/fresh" || fail "--regenerate writes other files than the committed ones"
 
-echo "$(( failures == 0 ? 1 : 0 )) passed, $(( failures == 0 ? 0 : 1 )) failed: regress"
-[ "$failures" -eq 0 ]
+finish regress
