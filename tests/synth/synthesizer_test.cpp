@@ -82,6 +82,11 @@ TEST_CASE("the rose is solved with two joints", "[synth]") {
     CHECK(s.robot.dof() == 2);
     CHECK(s.certificate.ok);
     CHECK(s.certificate.min_clearance >= 0.0);
+    // The first certified robot (elbow -1) needs 0.97 m of links; the other
+    // elbow does it with 0.54 m, and the shorter one is returned. No arm
+    // shorter than the farthest path point's distance from the base region
+    // (0.53 m, the top circle seen from the region's corner) can exist.
+    CHECK(s.robot.total_length() < 0.56);
 }
 
 TEST_CASE("same task and seed give the same solution", "[synth]") {
