@@ -106,6 +106,34 @@ python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["status"]=
     fail "explain --json is not the expected JSON"
 expect_exit 0 "explain a feasible task" "$bin" explain "$root/tasks/rose.json"
 
+# The discretized baseline and the comparison with it.
+expect_exit 0 "baseline rose" "$bin" baseline "$root/tasks/rose.json" --points 25 -o "$tmp/base.json" --quiet
+grep -q "executed EE strays up to" "$tmp/out" || fail "baseline prints no deviation: $(cat "$tmp/out")"
+python3 - "$tmp/base.json" <<'PY' || fail "baseline JSON is not as documented"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["format"] == "modsynth-baseline/1" and d["status"] == "executed", d.get("status")
+assert len(d["points"]) == 25 and len(d["poses"]) == 25 and len(d["waypoints"]) >= 25
+assert d["robot"]["dof"] == 2 and d["figures"]["max_ee_deviation"] > 0.005
+PY
+expect_exit 2 "baseline with one point" "$bin" baseline "$root/tasks/rose.json" --points 1
+expect_exit 4 "baseline out of reach" "$bin" baseline "$root/tasks/infeasible/out-of-reach.task.json" --quiet
+grep -q "no design" "$tmp/out" || fail "baseline out of reach does not say 'no design': $(cat "$tmp/out")"
+expect_exit 0 "compare rose" "$bin" compare "$root/tasks/rose.json" --quiet --report "$tmp/cmp.html"
+for row in "max EE deviation" "path in reachable space" "total length"; do
+    grep -q "$row" "$tmp/out" || fail "compare table lacks '$row'"
+done
+grep -q 'id="comparison"' "$tmp/cmp.html" || fail "compare report lacks the comparison table"
+expect_exit 0 "compare rose --json" "$bin" compare "$root/tasks/rose.json" --quiet --json
+python3 - "$tmp/out" <<'PY' || fail "compare --json is not as documented"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["format"] == "modsynth-comparison/1"
+assert d["modsynth"]["status"] == "solved" and d["discretized"]["status"] == "executed"
+assert d["modsynth"]["figures"]["max_ee_deviation"] < 0.001
+assert d["baseline_over_modsynth"]["max_ee_deviation"] > 5
+PY
+
 # Unwritable output is an internal error, reported, not a crash.
 expect_exit 1 "unwritable output" "$bin" solve "$root/tasks/rose.json" -o "$tmp/no/such/dir/x.json" --quiet
 

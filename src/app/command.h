@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <modsynth/baseline/baseline.h>
 #include <modsynth/output/exports.h>
 
 namespace modsynth::app {
@@ -24,8 +25,14 @@ Command add_regress(CLI::App& parent);
 Command add_export(CLI::App& parent);
 Command add_explain(CLI::App& parent);
 Command add_serve(CLI::App& parent);
+Command add_baseline(CLI::App& parent);
+Command add_compare(CLI::App& parent);
 
 /// --report, --urdf, --csv, --build-sheet: shared by solve and export.
 void add_export_options(CLI::App& sub, output::ExportPaths& paths);
+
+/// --points, --seed, --baseline-time-limit, --rrt-iterations, --goal-bias,
+/// --no-shortcut: shared by baseline and compare.
+void add_baseline_options(CLI::App& sub, baseline::BaselineOptions& options);
 
 }  // namespace modsynth::app

@@ -6,76 +6,14 @@
 
 #include <modsynth/geometry/distance.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/nlp/bilinear.h>
 
 namespace modsynth::nlp {
 namespace {
 
 using geometry::Vec2;
 
-// c + sum a_i x_i: a coordinate of a point that is a variable, a constant,
-// or a difference of those.
-struct Affine {
-    double c = 0.0;
-    std::vector<std::pair<int, double>> terms;
-};
-
-Affine operator-(Affine a, const Affine& b) {
-    a.c -= b.c;
-    for (const auto& [i, w] : b.terms) a.terms.push_back({i, -w});
-    return a;
-}
-
-Affine operator+(Affine a, const Affine& b) {
-    a.c += b.c;
-    a.terms.insert(a.terms.end(), b.terms.begin(), b.terms.end());
-    return a;
-}
-
-// Adds k * a * b to q.
-void add_product(Quadratic& q, const Affine& a, const Affine& b, double k = 1.0) {
-    q.add(k * a.c * b.c);
-    for (const auto& [i, w] : b.terms) q.add(i, k * a.c * w);
-    for (const auto& [i, w] : a.terms) q.add(i, k * b.c * w);
-    for (const auto& [i, wi] : a.terms)
-        for (const auto& [j, wj] : b.terms) q.add(i, j, k * wi * wj);
-}
-
-void add_affine(Quadratic& q, const Affine& a, double k = 1.0) {
-    q.add(k * a.c);
-    for (const auto& [i, w] : a.terms) q.add(i, k * w);
-}
-
-// A point of the model with its value in the initial guess.
-struct Point {
-    Affine x, y;
-    Vec2 value;
-};
-
-Point constant(const Vec2& v) { return {{v.x(), {}}, {v.y(), {}}, v}; }
-Point variable(int ix, int iy, const Vec2& v) { return {{0.0, {{ix, 1.0}}}, {0.0, {{iy, 1.0}}}, v}; }
-
-Quadratic squared_distance(const Point& a, const Point& b) {
-    Quadratic q;
-    const Affine dx = a.x - b.x, dy = a.y - b.y;
-    add_product(q, dx, dx);
-    add_product(q, dy, dy);
-    return q;
-}
-
-// cross(e - o, p - o).
-Quadratic cross(const Point& o, const Point& e, const Point& p) {
-    Quadratic q;
-    add_product(q, e.x - o.x, p.y - o.y);
-    add_product(q, e.y - o.y, p.x - o.x, -1.0);
-    return q;
-}
-
-Vec2 away_from(const Vec2& c, const Vec2& a, const Vec2& b) {
-    const double t = geometry::segment_parameter(c, a, b);
-    const Vec2 d = a + t * (b - a) - c;
-    const double n = d.norm();
-    return n > 1e-12 ? Vec2(d / n) : Vec2(1.0, 0.0);
-}
+using namespace bilinear;
 
 std::string part(const char* what, int i) { return std::string(what) + "[" + std::to_string(i) + "]"; }
 
@@ -123,35 +61,15 @@ private:
         return ob.radius + t_.robot.link_diameter / 2.0 + p_.margins.clearance;
     }
 
-    Point new_point(const std::string& name, const Vec2& v) {
-        const int ix = qp_.add_variable(-kInfinity, kInfinity, v.x(), name + ".x");
-        const int iy = qp_.add_variable(-kInfinity, kInfinity, v.y(), name + ".y");
-        return variable(ix, iy, v);
-    }
+    Point new_point(const std::string& name, const Vec2& v) { return bilinear::new_point(qp_, name, v); }
 
-    // |a - b| = r (eq. 11).
-    void link(const Point& a, const Point& b, int r, const std::string& tag) {
-        Quadratic q = squared_distance(a, b);
-        q.add(r, r, -1.0);
-        qp_.add_constraint(q, 0.0, 0.0, "link length " + tag);
-    }
+    void link(const Point& a, const Point& b, int r, const std::string& tag) { add_link(qp_, a, b, r, tag); }
 
-    // Some unit n with n . (a - c) >= need and n . (b - c) >= need keeps the
-    // segment ab at least `need` from c (the line through c along n's normal
-    // separates them).
+    // Pairs farther apart than the horizon in the initial guess are left to
+    // the verification.
     void keep_apart(const Point& a, const Point& b, const Point& c, double need, const std::string& tag) {
         if (geometry::point_segment(c.value, a.value, b.value) - need > p_.horizon) return;
-        const Vec2 n0 = away_from(c.value, a.value, b.value);
-        const int nx = qp_.add_variable(-1.0, 1.0, n0.x(), "normal.x " + tag);
-        const int ny = qp_.add_variable(-1.0, 1.0, n0.y(), "normal.y " + tag);
-        const Point n = variable(nx, ny, n0);
-        for (const Point* end : {&a, &b}) {
-            Quadratic q;
-            add_product(q, n.x, end->x - c.x);
-            add_product(q, n.y, end->y - c.y);
-            qp_.add_constraint(q, need, kInfinity, "clearance " + tag);
-        }
-        qp_.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0, "unit " + tag);
+        add_keep_apart(qp_, a, b, c, need, tag);
     }
 
     void keep_links_from_obstacles(const Point& a, const Point& b, int link, const std::string& where) {
@@ -182,11 +100,7 @@ private:
         // the first distal link: this keeps the elbow on its branch, away
         // from the singular straight and folded poses, and the EE at least k
         // from that link (a lower bound on its distance from the segment).
-        Quadratic side;
-        const Quadratic c = cross(o, e, target);
-        for (const auto& [i, w] : c.linear) side.add(i, f_.elbow * w);
-        for (const auto& q : c.quadratic) side.add(q.i, q.j, f_.elbow * q.w);
-        side.add(f_.elbow * c.constant);
+        Quadratic side = scaled(cross(o, e, target), f_.elbow);
         side.add(r_a, -(t_.robot.link_diameter + p_.margins.self));
         qp_.add_constraint(side, 0.0, kInfinity, "elbow side " + where);
         keep_links_from_obstacles(o, e, f_.dof - 1, where);

@@ -6,6 +6,7 @@
 
 #include "plot.h"
 #include "report_assets.h"
+#include "report_comparison.h"
 #include "report_layers.h"
 
 namespace modsynth::output {
@@ -204,7 +205,7 @@ std::string legend(const task::Task& task, const layers::Core& core) {
 // --------------------------------------------------------------------- plot
 
 std::string svg(const task::Task& task, const synth::Solution& s, const Frame& f,
-                std::string* reach_caption) {
+                const baseline::Comparison* comparison, std::string* reach_caption) {
     const bool solved = s.status == synth::Status::Solved;
     const layers::Core core = solved ? layers::Core{} : s.explanation.core;
     std::string out = "<svg id=\"plot\" width=\"" + plot::n2(f.width()) + "\" height=\"" +
@@ -223,10 +224,11 @@ std::string svg(const task::Task& task, const synth::Solution& s, const Frame& f
         out += layers::poses(s, f);
         out += layers::robot(s, f);
     }
+    if (comparison) out += comparison::layer(*comparison, f);
     return out + layers::scale_bar(f) + "</svg>\n";
 }
 
-std::string controls() {
+std::string controls(bool comparison) {
     return "<div id=\"controls\"><button id=\"play\" type=\"button\">Play</button>"
            "<input id=\"scrub\" type=\"range\" value=\"0\" aria-label=\"time\">"
            "<span id=\"clock\"></span><select id=\"speed\" aria-label=\"speed\">"
@@ -240,7 +242,11 @@ std::string controls() {
            "<label><input type=\"checkbox\" id=\"only-current\"> only the current "
            "primitive's</label>"
            "<label><input type=\"checkbox\" data-layer=\"poses\" checked> poses</label>"
-           "<label><input type=\"checkbox\" data-layer=\"trail\" checked> trail</label></div>\n";
+           "<label><input type=\"checkbox\" data-layer=\"trail\" checked> trail</label>" +
+           std::string(comparison ? "<label><input type=\"checkbox\" data-layer=\"baseline\" checked> "
+                                    "discretized baseline</label>"
+                                  : "") +
+           "</div>\n";
 }
 
 /// The motion for the script: numbers only, so it can sit in a script element.
@@ -290,13 +296,14 @@ std::string html_report(const task::Task& task, const synth::Solution& solution,
     const bool solved = solution.status == synth::Status::Solved;
     const Frame frame = plot::fit_frame(task, solution, kPlotWidth, kPlotHeight);
     std::string caption;
-    const std::string plot_svg = svg(task, solution, frame, &caption);
+    const std::string plot_svg = svg(task, solution, frame, figures.comparison, &caption);
     std::string out = header(task, solution) + "<main>\n<section id=\"plot-section\">\n" + plot_svg;
-    if (solved) out += controls();
+    if (solved) out += controls(figures.comparison != nullptr);
     out += "</section>\n<aside>\n";
     if (!solved) out += explanation(task, solution);
     out += "<h2>Figures</h2>\n";
     out += solved ? solved_figures(task, solution, figures) : failed_figures(solution, figures);
+    if (figures.comparison) out += comparison::section(*figures.comparison);
     out += legend(task, solved ? layers::Core{} : solution.explanation.core);
     if (solved) {
         out += "<p class=\"note\" id=\"reach-caption\">" + escape(caption) +

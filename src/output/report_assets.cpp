@@ -45,6 +45,11 @@ li.core-part { margin: 2px 0; }
 #trail { fill: none; stroke: #000; stroke-opacity: 0.55; stroke-width: 1.2; }
 #scale-bar path { fill: none; stroke: #000; stroke-width: 1.5; }
 #scale-bar text { font-size: 12px; }
+.baseline-arm { fill: none; stroke: #1f4e9c; stroke-opacity: 0.35; stroke-dasharray: 6 4; stroke-linecap: round; }
+.baseline-trail { fill: none; stroke: #000; stroke-width: 1.5; stroke-dasharray: 5 3; }
+.baseline-point { fill: #fff; stroke: #1f4e9c; stroke-width: 1.5; }
+.baseline-outside { fill: #d00; }
+#comparison td, #comparison th { padding-right: 0.8em; }
 .hidden { display: none; }
 )CSS";
 

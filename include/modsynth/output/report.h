@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include <modsynth/baseline/comparison.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/task/task.h>
 
@@ -21,6 +22,9 @@ struct ReportFigures {
     /// Where the certificate's figures come from, when not from synthesis
     /// (e.g. "recomputed on export: the solution file carried none").
     std::string certificate_note;
+    /// When given, the report also shows the discretized baseline's robot,
+    /// its executed path and the figures of both methods.
+    const baseline::Comparison* comparison = nullptr;
 };
 
 std::string html_report(const task::Task& task, const synth::Solution& solution,

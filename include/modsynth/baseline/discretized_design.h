@@ -1,0 +1,55 @@
+#pragma once
+// The discretized design of the paper's comparison (IV-B, after its ref.
+// [6]): a robot synthesised from N points of the path alone. Each point gets
+// its own pose, with every joint free; the poses keep their elbows on one
+// side from point to point (elbow consistency, straight poses allowed), every
+// link clear of the obstacles and the EE clear of the lower links at each
+// point, and nothing at all between the points. Objective: the total link
+// length, plus a small cost on the motion of the joints between
+// consecutive poses. This is the method modsynth is measured against; it is
+// not used to solve tasks.
+#include <string>
+#include <vector>
+
+#include <modsynth/geometry/vec.h>
+#include <modsynth/kinematics/robot.h>
+#include <modsynth/task/task.h>
+
+namespace modsynth::baseline {
+
+struct PathSample {
+    int primitive = 0;
+    double s = 0.0;  ///< arc length along the primitive
+    geometry::Vec2 point = geometry::Vec2::Zero();
+};
+
+/// `count` >= 2 points equidistant by arc length along the whole path, its
+/// start and its end included.
+std::vector<PathSample> equidistant_points(const task::Task& task, int count);
+
+struct DesignOptions {
+    double time_limit = 60.0;  ///< seconds, wall clock
+    /// Weight (1/m) of the squared distance each joint moves between
+    /// consecutive poses, beside the total length (weight 1).
+    double smoothness_weight = 1.0;
+    double clearance_margin = 0.003;  ///< m beyond radius + diameter/2 at each point
+    double self_margin = 0.002;       ///< m beyond the diameter, EE to lower links
+};
+
+struct PointDesign {
+    bool found = false;
+    kinematics::Robot robot;  ///< elbow: the sign of the distal pair
+    /// One joint-angle vector per point, each q in (-pi, pi].
+    std::vector<std::vector<double>> poses;
+    /// The elbow sign of each consecutive link pair (dof - 1 entries).
+    std::vector<int> elbows;
+    int nlp_solves = 0;
+    std::string message;  ///< what was tried when nothing was found
+};
+
+/// Tries the allowed joint counts fewest first; for each, every base region
+/// and every elbow pattern, keeping the shortest robot found.
+PointDesign design_for_points(const task::Task& task, const std::vector<PathSample>& points,
+                              const DesignOptions& options);
+
+}  // namespace modsynth::baseline

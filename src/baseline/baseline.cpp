@@ -1,0 +1,59 @@
+#include <modsynth/baseline/baseline.h>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+namespace modsynth::baseline {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+}  // namespace
+
+const char* to_string(BaselineResult::Status status) {
+    switch (status) {
+        case BaselineResult::Status::Executed: return "executed";
+        case BaselineResult::Status::NoDesign: return "no design";
+        case BaselineResult::Status::NoMotion: return "no motion";
+    }
+    return "?";
+}
+
+BaselineResult run_baseline(const task::Task& task, const BaselineOptions& options) {
+    auto say = [&](const std::string& line) {
+        if (options.progress) options.progress(line);
+    };
+    BaselineResult result;
+    result.points = equidistant_points(task, options.points);
+    const auto t0 = Clock::now();
+    DesignOptions design = options.design;
+    // A design that used the whole budget would leave RRT nothing.
+    design.time_limit = std::min(design.time_limit, 0.8 * options.time_limit);
+    say("discretized design: " + std::to_string(options.points) + " points");
+    result.design = design_for_points(task, result.points, design);
+    result.design_seconds = since(t0);
+    if (!result.design.found) {
+        result.status = BaselineResult::Status::NoDesign;
+        result.message = result.design.message;
+        result.seconds = result.design_seconds;
+        return result;
+    }
+    say("discretized design: " + std::to_string(result.design.robot.dof()) + " joints after " +
+        std::to_string(result.design.nlp_solves) + " solves; RRT between the poses");
+    const auto t1 = Clock::now();
+    PlannerOptions planner = options.planner;
+    planner.time_limit = std::max(0.0, std::min(planner.time_limit, options.time_limit - result.design_seconds));
+    result.motion = plan_rrt(task, result.design.robot, result.design.poses, planner);
+    result.planning_seconds = since(t1);
+    result.seconds = result.design_seconds + result.planning_seconds;
+    result.status = result.motion.complete ? BaselineResult::Status::Executed : BaselineResult::Status::NoMotion;
+    result.message = result.motion.message;
+    say("measuring the executed path");
+    result.fidelity = measure_fidelity(task, result.design.robot, result.motion.waypoints, options.fidelity);
+    return result;
+}
+
+}  // namespace modsynth::baseline

@@ -1,0 +1,22 @@
+#include <modsynth/baseline/comparison.h>
+
+#include <chrono>
+
+namespace modsynth::baseline {
+
+Comparison compare_methods(const task::Task& task, const synth::SynthesisOptions& ours,
+                           const BaselineOptions& theirs) {
+    Comparison c;
+    const auto t0 = std::chrono::steady_clock::now();
+    c.solution = synth::synthesize(task, ours);
+    c.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (c.solution.status == synth::Status::Solved) {
+        std::vector<std::vector<double>> waypoints;
+        for (const auto& sample : c.solution.samples) waypoints.push_back(sample.q);
+        c.fidelity = measure_fidelity(task, c.solution.robot, waypoints, theirs.fidelity);
+    }
+    c.baseline = run_baseline(task, theirs);
+    return c;
+}
+
+}  // namespace modsynth::baseline
