@@ -10,6 +10,7 @@
 #include <modsynth/output/baseline_io.h>
 #include <modsynth/output/exports.h>
 #include <modsynth/task/task_io.h>
+#include <modsynth/text/format.h>
 
 #include "command.h"
 
@@ -24,11 +25,7 @@ struct CompareArgs {
     baseline::BaselineOptions options;
 };
 
-std::string fixed(double v, int digits) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
+std::string fixed(double v, int digits) { return text::format("%.*f", digits, v); }
 
 std::string links(const kinematics::Robot& r) {
     std::string out;

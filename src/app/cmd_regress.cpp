@@ -5,6 +5,7 @@
 // and passes, since the figures are expected to improve with the solver.
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/task/task_io.h>
+#include <modsynth/text/format.h>
 
 #include <algorithm>
 #include <chrono>
@@ -307,11 +308,6 @@ int rank(const std::string& status) {
     return status == "unknown" ? 1 : 0;
 }
 
-std::string fmt(const char* format, double a, double b, double c) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf, format, a, b, c);
-    return buf;
-}
 
 Judgement judge_solved(const SolveFigures& e, const SolveFigures& n, double tolerance) {
     if (!e.dof || !e.total_link_length) return {Verdict::Improved, "expectation had no robot"};
@@ -323,9 +319,9 @@ Judgement judge_solved(const SolveFigures& e, const SolveFigures& n, double tole
     const double was = *e.total_link_length, now = *n.total_link_length;
     const double change = now / was - 1.0;
     const std::string why =
-        fmt("total link length %.4f m, was %.4f m (%+.1f%%)", now, was, 100 * change);
+        text::format("total link length %.4f m, was %.4f m (%+.1f%%)", now, was, 100 * change);
     if (change > tolerance)
-        return {Verdict::Regressed, why + fmt(", tolerance %.0f%%", 100 * tolerance, 0, 0)};
+        return {Verdict::Regressed, why + text::format(", tolerance %.0f%%", 100 * tolerance)};
     if (change < -tolerance) return {Verdict::Improved, why};
     return {};
 }
@@ -353,12 +349,12 @@ std::string show_front(const FrontFigures& f) {
 
 std::string show_solve(const SolveFigures& s) {
     if (s.status == "solved" && s.dof && s.total_link_length)
-        return fmt("solved, %.0f joints, %.4f m", *s.dof, *s.total_link_length, 0);
+        return text::format("solved, %d joints, %.4f m", *s.dof, *s.total_link_length);
     if (s.status == "infeasible") return "infeasible, core of " + std::to_string(s.core.size());
     return s.status;
 }
 
-std::string show_seconds(double was, double now) { return fmt("%.2f -> %.2f", was, now, 0); }
+std::string show_seconds(double was, double now) { return text::format("%.2f -> %.2f", was, now); }
 
 // Timings vary from machine to machine: only a large slowdown is worth a
 // note, and never a failure.
@@ -400,7 +396,7 @@ Row front_row(const Entry& e, const FrontFigures& n, const Figures& expected,
     const FrontFigures* x = find_dof(expected.front, n.dof);
     if (!x) {
         row.expected = "-";
-        row.seconds = fmt("- -> %.2f", n.seconds, 0, 0);
+        row.seconds = text::format("- -> %.2f", n.seconds);
         row.judgement = {Verdict::Regressed, "no expectation for this joint count"};
         return row;
     }

@@ -1,6 +1,7 @@
 #include "solve_jobs.h"
 
 #include <modsynth/output/exports.h>
+#include <modsynth/text/format.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -28,11 +29,7 @@ const std::vector<std::string> kFiles = {"solution.json",  "report.html",    "ro
                                          "trajectory.csv", "build-sheet.md", "task.json",
                                          "solve.log"};
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string number(double v) { return text::format("%.6g", v); }
 
 // Unguessable enough that one page cannot stumble on another's job. Called
 // under the jobs' lock, which guards the generator too.

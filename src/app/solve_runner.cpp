@@ -5,6 +5,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include <modsynth/text/format.h>
+
 #include "command.h"
 #include "process_pool.h"
 #include "task_files.h"
@@ -12,11 +14,7 @@
 namespace modsynth::app {
 namespace {
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+std::string number(double v) { return text::format("%.17g", v); }
 
 ProcessSpec spec_for(const SolveJob& job, const SolveRunOptions& o, const std::string& self) {
     ProcessSpec spec;

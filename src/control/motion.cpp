@@ -5,6 +5,7 @@
 
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::control {
 namespace {
@@ -33,17 +34,9 @@ std::optional<std::vector<double>> arm_configuration(const kinematics::Robot& ro
     return q;
 }
 
-std::string transition_name(int j) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "the transition after trajectory[%d]", j);
-    return buf;
-}
+std::string transition_name(int j) { return text::format("the transition after trajectory[%d]", j); }
 
-std::string point_name(int j, double s) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "trajectory[%d] at %.4f m from its start", j, s);
-    return buf;
-}
+std::string point_name(int j, double s) { return text::format("trajectory[%d] at %.4f m from its start", j, s); }
 
 }  // namespace
 

@@ -6,17 +6,13 @@
 #include <modsynth/geometry/vec.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/output/hardware.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::output {
 namespace {
 
-std::string fmt(const char* format, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
-std::string mm(double metres) { return fmt("%.1f", 1000.0 * metres); }
+std::string mm(double metres) { return text::format("%.1f", 1000.0 * metres); }
 
 std::string parts(const task::Task& task, const kinematics::Robot& robot) {
     const auto& spec = task.robot;
@@ -95,8 +91,8 @@ std::string stack_section(const task::Task& task, const kinematics::Robot& robot
 }
 
 std::string base_section(const kinematics::Robot& robot) {
-    return "## Base\n\nJoint 1's axis at x = " + fmt("%.4f", robot.base.x()) +
-           " m, y = " + fmt("%.4f", robot.base.y()) +
+    return "## Base\n\nJoint 1's axis at x = " + text::format("%.4f", robot.base.x()) +
+           " m, y = " + text::format("%.4f", robot.base.y()) +
            " m in the task frame (the frame of the task file).\n\n";
 }
 
@@ -109,12 +105,12 @@ std::string start_pose_section(const synth::Solution& solution) {
         "task's x-axis, counter-clockwise; each further joint relative to the "
         "previous link):\n\n| joint | angle (rad) | angle (deg) |\n|---|---|---|\n";
     for (std::size_t k = 0; k < q.size(); ++k) {
-        s += "| " + std::to_string(k + 1) + " | " + fmt("%.4f", q[k]) + " | " +
-             fmt("%.2f", q[k] * 180.0 / geometry::kPi) + " |\n";
+        s += "| " + std::to_string(k + 1) + " | " + text::format("%.4f", q[k]) + " | " +
+             text::format("%.2f", q[k] * 180.0 / geometry::kPi) + " |\n";
     }
     const geometry::Vec2 ee = s_joint.back();
-    return s + "\nThe end-effector then stands at (" + fmt("%.4f", ee.x()) + ", " +
-           fmt("%.4f", ee.y()) + ") m, the start of the path. Joint " +
+    return s + "\nThe end-effector then stands at (" + text::format("%.4f", ee.x()) + ", " +
+           text::format("%.4f", ee.y()) + ") m, the start of the path. Joint " +
            std::to_string(robot.dof()) + " stays bent " +
            (robot.elbow > 0 ? "counter-clockwise (positive)" : "clockwise (negative)") +
            " for the whole motion.\n";

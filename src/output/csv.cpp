@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include <modsynth/text/format.h>
+
 namespace modsynth::output {
 namespace {
 
@@ -14,13 +16,8 @@ std::string header(int dof) {
 // Nanoradians and microseconds: finer than any actuator resolves, and
 // fixed-point so that the file diffs cleanly.
 std::string row(const control::Sample& s) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.6f", s.t);
-    std::string r = buf;
-    for (double q : s.q) {
-        std::snprintf(buf, sizeof buf, ",%.9f", q);
-        r += buf;
-    }
+    std::string r = text::format("%.6f", s.t);
+    for (double q : s.q) r += text::format(",%.9f", q);
     r += s.phase == control::Phase::Trace ? ",trace," : ",transition,";
     return r + std::to_string(s.primitive) + "\n";
 }

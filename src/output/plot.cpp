@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::output::plot {
 namespace {
@@ -59,9 +60,8 @@ Frame fit_frame(const task::Task& task, const synth::Solution& solution, double 
 }
 
 std::string n2(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.2f", v);
-    return std::string(buf) == "-0.00" ? "0.00" : buf;
+    const std::string s = text::format("%.2f", v);
+    return s == "-0.00" ? "0.00" : s;
 }
 
 std::string pt(const Frame& f, const Vec2& p) {

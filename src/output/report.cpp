@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <string>
 
+#include <modsynth/text/format.h>
+
 #include "plot.h"
 #include "report_assets.h"
 #include "report_comparison.h"
@@ -18,18 +20,13 @@ using plot::Frame;
 constexpr double kPlotWidth = 900.0;
 constexpr double kPlotHeight = 720.0;
 
-std::string fmt(const char* format, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 std::string mm(double metres, const char* format = "%.1f") {
-    return fmt(format, 1000.0 * metres) + " mm";
+    return text::format(format, 1000.0 * metres) + " mm";
 }
 
 std::string point_text(const geometry::Vec2& p) {
-    return "(" + fmt("%.4f", p.x()) + ", " + fmt("%.4f", p.y()) + ") m";
+    return "(" + text::format("%.4f", p.x()) + ", " + text::format("%.4f", p.y()) + ") m";
 }
 
 std::string row(const char* id, const std::string& name, const std::string& value) {
@@ -63,7 +60,7 @@ std::string stage_text(const ReportFigures& f) {
         return "n/a (a saved solution does not record them)";
     }
     const auto t = [](const std::optional<double>& s) {
-        return s ? fmt("%.3f s", *s) : std::string("n/a");
+        return s ? text::format("%.3f s", *s) : std::string("n/a");
     };
     return "front stage " + t(f.front_seconds) + ", refinement " + t(f.refine_seconds) +
            ", verification " + t(f.verify_seconds);
@@ -79,7 +76,7 @@ std::string certificate_rows(const synth::Solution& s, const ReportFigures& figu
     out += row("fig-self-clearance", prefix + "self-collision margin",
                margin_text(c.min_self_clearance, "beyond one link diameter"));
     out += row("fig-deviation", "Max. EE deviation", mm(c.max_deviation, "%.3f") + " (bound)");
-    out += row("fig-joint-step", "Max. joint step", fmt("%.4f rad", c.max_joint_step));
+    out += row("fig-joint-step", "Max. joint step", text::format("%.4f rad", c.max_joint_step));
     if (!c.ok) {
         out += row("fig-certificate", "Certificate",
                    "<strong>not certified</strong>: " + std::to_string(c.violations.size()) +
@@ -105,7 +102,7 @@ std::string solved_figures(const task::Task& task, const synth::Solution& s,
     out += certificate_rows(s, figures);
     out += row("fig-samples", "Control",
                std::to_string(s.samples.size()) + " samples over " +
-                   fmt("%.2f s", s.samples.back().t - s.samples.front().t));
+                   text::format("%.2f s", s.samples.back().t - s.samples.front().t));
     out += row("stage-times", "Time per stage", stage_text(figures));
     return out + "</table>\n";
 }
@@ -145,26 +142,26 @@ std::string describe_part(const task::Task& task, const std::string& part) {
     const int j = index_in(part, "trajectory");
     if (j >= 0 && j < static_cast<int>(task.trajectory.size())) {
         const auto& p = task.trajectory[j];
-        return std::string(kind_name(p.kind)) + " of " + fmt("%.3f m", geometry::length(p)) +
+        return std::string(kind_name(p.kind)) + " of " + text::format("%.3f m", geometry::length(p)) +
                " from " + point_text(p.start);
     }
     const int o = index_in(part, "obstacles");
     if (o >= 0 && o < static_cast<int>(task.obstacles.size())) {
         return "disc at " + point_text(task.obstacles[o].center) + ", radius " +
-               fmt("%.3f m", task.obstacles[o].radius);
+               text::format("%.3f m", task.obstacles[o].radius);
     }
     const auto& r = task.robot;
     if (part == "base_regions")
         return std::to_string(task.base_regions.size()) + " rectangle(s) for the base";
     if (part == "robot.max_link_length") {
-        return fmt("%.3f m", r.max_link_length) +
+        return text::format("%.3f m", r.max_link_length) +
                (task.base_regions.empty()
                     ? std::string()
                     : "; dashed: the farthest " + std::to_string(r.dof.back()) +
                           " such links reach from the base regions");
     }
-    if (part == "robot.min_link_length") return fmt("%.3f m", r.min_link_length);
-    if (part == "robot.link_diameter") return fmt("%.4f m", r.link_diameter);
+    if (part == "robot.min_link_length") return text::format("%.3f m", r.min_link_length);
+    if (part == "robot.link_diameter") return text::format("%.4f m", r.link_diameter);
     return "";
 }
 
@@ -196,7 +193,7 @@ std::string legend(const task::Task& task, const layers::Core& core) {
         const std::string part = "trajectory[" + std::to_string(j) + "]";
         out += "<li><span class=\"swatch\" style=\"background:" +
                plot::primitive_colour(static_cast<int>(j)) + "\"></span><code>" + part +
-               "</code> " + kind_name(p.kind) + ", " + fmt("%.3f m", geometry::length(p)) +
+               "</code> " + kind_name(p.kind) + ", " + text::format("%.3f m", geometry::length(p)) +
                (layers::in_core(core, part) ? " <strong>(in the core)</strong>" : "") + "</li>\n";
     }
     return out + "</ul>\n";
@@ -254,7 +251,7 @@ std::string motion_data(const synth::Solution& s, const Frame& f) {
     const auto list = [](const auto& values, const char* format) {
         std::string out = "[";
         for (std::size_t i = 0; i < values.size(); ++i)
-            out += (i ? "," : "") + fmt(format, values[i]);
+            out += (i ? "," : "") + text::format(format, values[i]);
         return out + "]";
     };
     std::vector<double> t, q, ph, pr;
@@ -265,10 +262,10 @@ std::string motion_data(const synth::Solution& s, const Frame& f) {
         pr.push_back(x.primitive);
     }
     return "<script type=\"application/json\" id=\"motion-data\">{\"base\":[" +
-           fmt("%.9g", s.robot.base.x()) + "," + fmt("%.9g", s.robot.base.y()) +
+           text::format("%.9g", s.robot.base.x()) + "," + text::format("%.9g", s.robot.base.y()) +
            "],\"L\":" + list(s.robot.link_lengths, "%.9g") +
-           ",\"f\":{\"x0\":" + fmt("%.9g", f.min.x()) + ",\"y1\":" + fmt("%.9g", f.max.y()) +
-           ",\"s\":" + fmt("%.9g", f.scale) + ",\"p\":" + fmt("%.9g", f.pad) +
+           ",\"f\":{\"x0\":" + text::format("%.9g", f.min.x()) + ",\"y1\":" + text::format("%.9g", f.max.y()) +
+           ",\"s\":" + text::format("%.9g", f.scale) + ",\"p\":" + text::format("%.9g", f.pad) +
            "},\"t\":" + list(t, "%.6f") + ",\"q\":" + list(q, "%.6f") +
            ",\"ph\":" + list(ph, "%.0f") + ",\"pr\":" + list(pr, "%.0f") + "}</script>\n";
 }

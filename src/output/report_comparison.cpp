@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::output::comparison {
 namespace {
@@ -11,11 +12,6 @@ namespace {
 using geometry::Vec2;
 using plot::n2;
 
-std::string fmt(const char* format, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 std::string dot(const plot::Frame& f, const Vec2& p, const char* cls, double r) {
     const Vec2 c = f.px(p);
@@ -31,13 +27,13 @@ std::string row(const std::string& name, const std::string& ours, const std::str
 
 std::string length_text(const kinematics::Robot& r) {
     std::string s;
-    for (double l : r.link_lengths) s += (s.empty() ? "" : ", ") + fmt("%.1f", 1e3 * l);
-    return s + " mm (total " + fmt("%.1f", 1e3 * r.total_length()) + " mm)";
+    for (double l : r.link_lengths) s += (s.empty() ? "" : ", ") + text::format("%.1f", 1e3 * l);
+    return s + " mm (total " + text::format("%.1f", 1e3 * r.total_length()) + " mm)";
 }
 
 std::string reach_text(const baseline::Fidelity& f) {
     return f.whole_path_reachable() ? std::string("yes")
-                                    : "<strong>no</strong>: " + fmt("%.1f mm", 1e3 * f.outside_length) +
+                                    : "<strong>no</strong>: " + text::format("%.1f mm", 1e3 * f.outside_length) +
                                           " of the path outside";
 }
 
@@ -71,12 +67,12 @@ std::string section(const baseline::Comparison& c) {
     out += "<tr><th></th><th>modsynth</th><th>discretized, " + std::to_string(b.points.size()) +
            " points + RRT</th></tr>\n";
     out += row("Status", synth::to_string(s.status), baseline::to_string(b.status));
-    out += row("Time", fmt("%.3f s", c.solve_seconds), fmt("%.3f s", b.seconds));
+    out += row("Time", text::format("%.3f s", c.solve_seconds), text::format("%.3f s", b.seconds));
     out += row("Links", ours ? length_text(s.robot) : "-", theirs ? length_text(b.design.robot) : "-");
-    out += row("Max. EE deviation", f ? fmt("%.3f mm", 1e3 * f->max_deviation) : "-",
-               theirs ? fmt("%.3f mm", 1e3 * b.fidelity.max_deviation) : "-");
-    out += row("Path to EE trail", f ? fmt("%.3f mm", 1e3 * f->coverage_gap) : "-",
-               theirs ? fmt("%.3f mm", 1e3 * b.fidelity.coverage_gap) : "-");
+    out += row("Max. EE deviation", f ? text::format("%.3f mm", 1e3 * f->max_deviation) : "-",
+               theirs ? text::format("%.3f mm", 1e3 * b.fidelity.max_deviation) : "-");
+    out += row("Path to EE trail", f ? text::format("%.3f mm", 1e3 * f->coverage_gap) : "-",
+               theirs ? text::format("%.3f mm", 1e3 * b.fidelity.coverage_gap) : "-");
     out += row("Whole path reachable", f ? reach_text(*f) : "-", theirs ? reach_text(b.fidelity) : "-");
     out += "</table>\n<p class=\"note\">Baseline in the drawing: its design points (hollow), its arm at the "
            "first point (dashed), the path its motion really traces (dashed black) and the points of the "

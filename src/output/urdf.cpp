@@ -9,15 +9,12 @@
 
 #include <modsynth/geometry/vec.h>
 #include <modsynth/output/hardware.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::output {
 namespace {
 
-std::string num(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.6f", v);
-    return buf;
-}
+std::string num(double v) { return text::format("%.6f", v); }
 
 std::string xyz(double x, double y, double z) { return num(x) + " " + num(y) + " " + num(z); }
 

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include <modsynth/geometry/distance.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::smt {
 namespace {
@@ -17,11 +18,7 @@ namespace {
 // task numbers: a constraint is loosened, never tightened.
 constexpr double kSlack = 1e-7;
 
-std::string decimal(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.12f", v);
-    return buf;
-}
+std::string decimal(double v) { return text::format("%.12f", v); }
 
 double to_double(const z3::expr& e) {
     std::string s = e.get_decimal_string(12);

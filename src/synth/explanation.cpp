@@ -8,17 +8,13 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/synthesizer.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::synth {
 namespace {
 
 using geometry::Vec2;
 
-std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf, f, a, b, c);
-    return buf;
-}
 
 bool has(const std::vector<std::string>& v, const std::string& s) {
     return std::find(v.begin(), v.end(), s) != v.end();
@@ -79,11 +75,11 @@ std::string attempt(const task::Task& relaxed, double seconds) {
     const Solution s = synthesize(relaxed, options);
     if (s.status == Status::Solved) {
         std::string links;
-        for (double r : s.robot.link_lengths) links += fmt(links.empty() ? "%.3f" : " + %.3f", r);
+        for (double r : s.robot.link_lengths) links += text::format(links.empty() ? "%.3f" : " + %.3f", r);
         return "solved: " + std::to_string(s.robot.dof()) + " joints, links " + links + " m";
     }
     if (s.status == Status::Infeasible) return "still infeasible: " + s.explanation.message;
-    return "the conflict is gone, but no robot was found within " + fmt("%.0f s", seconds);
+    return "the conflict is gone, but no robot was found within " + text::format("%.0f s", seconds);
 }
 
 }  // namespace
@@ -142,7 +138,7 @@ std::string describe_conflict(const task::Task& task, const std::vector<std::str
     if (!traj.empty() && longest && obst.empty() && !shortest) {
         return listing(traj) + (traj.size() > 1 ? " cannot all be reached" : " is out of reach") +
                (base ? " from every allowed base position" : " from any base position") + " by " + arms +
-               fmt(" of at most %.2f m.", task.robot.max_link_length);
+               text::format(" of at most %.2f m.", task.robot.max_link_length);
     }
     if (traj.empty() && !obst.empty() && base && tube) {
         return listing(obst) + (obst.size() > 1 ? " cover" : " covers") +
@@ -150,14 +146,14 @@ std::string describe_conflict(const task::Task& task, const std::vector<std::str
     }
     if (!traj.empty() && !obst.empty() && tube && !base && !longest) {
         return listing(obst) + " lies closer to " + listing(traj) +
-               fmt(" than half the tube diameter (%.4f m): the last link, which ends on the path, would "
+               text::format(" than half the tube diameter (%.4f m): the last link, which ends on the path, would "
                    "touch it.",
                    task.robot.link_diameter / 2);
     }
     if (!traj.empty() && shortest) {
         return listing(traj) + " passes too close to " +
                (base ? std::string("every allowed base position") : std::string("the base")) +
-               fmt(" for links of at least %.2f m: the arm cannot fold that tightly.", task.robot.min_link_length);
+               text::format(" for links of at least %.2f m: the arm cannot fold that tightly.", task.robot.min_link_length);
     }
     return "These parts of the task cannot all be satisfied by " + arms + ": " + listing(core) + ".";
 }
@@ -167,32 +163,32 @@ std::string describe_part(const task::Task& task, const std::string& part) {
         const auto& p = task.trajectory.at(index_of(part));
         switch (p.kind) {
             case geometry::PrimitiveKind::Line:
-                return part + fmt(": a line from (%.3f, %.3f)", p.start.x(), p.start.y()) +
-                       fmt(" to (%.3f, %.3f)", p.end.x(), p.end.y());
+                return part + text::format(": a line from (%.3f, %.3f)", p.start.x(), p.start.y()) +
+                       text::format(" to (%.3f, %.3f)", p.end.x(), p.end.y());
             case geometry::PrimitiveKind::Arc:
-                return part + fmt(": an arc from (%.3f, %.3f)", p.start.x(), p.start.y()) +
-                       fmt(" to (%.3f, %.3f)", p.end.x(), p.end.y()) +
-                       fmt(" around (%.3f, %.3f)", p.center.x(), p.center.y());
+                return part + text::format(": an arc from (%.3f, %.3f)", p.start.x(), p.start.y()) +
+                       text::format(" to (%.3f, %.3f)", p.end.x(), p.end.y()) +
+                       text::format(" around (%.3f, %.3f)", p.center.x(), p.center.y());
             case geometry::PrimitiveKind::Circle:
-                return part + fmt(": a circle of radius %.3f m around (%.3f, %.3f)", p.radius, p.center.x(),
+                return part + text::format(": a circle of radius %.3f m around (%.3f, %.3f)", p.radius, p.center.x(),
                                   p.center.y());
         }
     }
     if (part.rfind("obstacles[", 0) == 0) {
         const auto& o = task.obstacles.at(index_of(part));
-        return part + fmt(": a disc of radius %.3f m at (%.3f, %.3f)", o.radius, o.center.x(), o.center.y());
+        return part + text::format(": a disc of radius %.3f m at (%.3f, %.3f)", o.radius, o.center.x(), o.center.y());
     }
     if (part == "base_regions") {
         std::string s = "base_regions: the base must stand in";
         for (std::size_t k = 0; k < task.base_regions.size(); ++k) {
             const auto& r = task.base_regions[k];
-            s += (k ? " or" : "") + fmt(" [%.3f, %.3f] x", r.min.x(), r.max.x()) + fmt(" [%.3f, %.3f]", r.min.y(), r.max.y());
+            s += (k ? " or" : "") + text::format(" [%.3f, %.3f] x", r.min.x(), r.max.x()) + text::format(" [%.3f, %.3f]", r.min.y(), r.max.y());
         }
         return s;
     }
-    if (part == "robot.max_link_length") return part + fmt(": links of at most %.3f m", task.robot.max_link_length);
-    if (part == "robot.min_link_length") return part + fmt(": links of at least %.3f m", task.robot.min_link_length);
-    if (part == "robot.link_diameter") return part + fmt(": tubes %.4f m thick", task.robot.link_diameter);
+    if (part == "robot.max_link_length") return part + text::format(": links of at most %.3f m", task.robot.max_link_length);
+    if (part == "robot.min_link_length") return part + text::format(": links of at least %.3f m", task.robot.min_link_length);
+    if (part == "robot.link_diameter") return part + text::format(": tubes %.4f m thick", task.robot.link_diameter);
     if (part == "robot.dof") return part + ": " + joint_counts(task) + " joints";
     return part;
 }
@@ -216,7 +212,7 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             });
             if (!v) continue;
             t.robot.max_link_length = std::ceil(*v * 100.0) / 100.0;
-            offer(part, fmt("robot.max_link_length >= %.2f m", t.robot.max_link_length) +
+            offer(part, text::format("robot.max_link_length >= %.2f m", t.robot.max_link_length) +
                             (traj.empty() ? "" : " would make " + listing(traj) + " reachable"),
                   t);
         } else if (part == "robot.min_link_length") {
@@ -226,7 +222,7 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             });
             if (!v) continue;
             t.robot.min_link_length = std::floor(-*v * 1000.0) / 1000.0;
-            offer(part, fmt("robot.min_link_length <= %.3f m", t.robot.min_link_length), t);
+            offer(part, text::format("robot.min_link_length <= %.3f m", t.robot.min_link_length), t);
         } else if (part == "robot.link_diameter") {
             const auto v = smallest(-task.robot.link_diameter, -1e-4, 0.0005, [&](double x) {
                 t.robot.link_diameter = -x;
@@ -234,7 +230,7 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             });
             if (!v) continue;
             t.robot.link_diameter = std::floor(-*v * 1000.0) / 1000.0;
-            offer(part, fmt("robot.link_diameter <= %.3f m", t.robot.link_diameter), t);
+            offer(part, text::format("robot.link_diameter <= %.3f m", t.robot.link_diameter), t);
         } else if (part == "base_regions" && !task.base_regions.empty()) {
             // Grow every region by d on all sides; the satisfied relaxation
             // then says where the base can stand, and the suggestion extends
@@ -268,7 +264,7 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             e.base_regions[nearest].max = e.base_regions[nearest].max.cwiseMax(b);
             offer(part,
                   "extend base_regions[" + std::to_string(nearest) + "]" +
-                      fmt(" by %.2f m towards (%.2f, %.2f)", gap, b.x(), b.y()),
+                      text::format(" by %.2f m towards (%.2f, %.2f)", gap, b.x(), b.y()),
                   e);
         } else if (part.rfind("obstacles[", 0) == 0) {
             const int o = index_of(part);
@@ -282,7 +278,7 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             });
             if (v) {
                 s.obstacles[o].radius = std::floor(-*v * 1000.0) / 1000.0;
-                offer(part, part + fmt(" with radius <= %.3f m", s.obstacles[o].radius), s);
+                offer(part, part + text::format(" with radius <= %.3f m", s.obstacles[o].radius), s);
             } else {
                 offer(part, "without " + part, t);
             }
@@ -307,7 +303,7 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
                                     [&](double d) { return conflict_free(moved(d), kCheck); });
             if (!v) continue;
             const double d = std::ceil(*v * 100.0) / 100.0;
-            offer(part, "move the path" + fmt(" %.2f m towards (%.2f, %.2f)", d, target.x(), target.y()) +
+            offer(part, "move the path" + text::format(" %.2f m towards (%.2f, %.2f)", d, target.x(), target.y()) +
                             " to bring " + part + " within reach",
                   moved(d));
         }

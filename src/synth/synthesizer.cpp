@@ -15,6 +15,7 @@
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/verify/verifier.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::synth {
 namespace {
@@ -25,11 +26,6 @@ double seconds_since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf, f, a, b, c);
-    return buf;
-}
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
     std::string s;
@@ -99,7 +95,7 @@ public:
 private:
     double remaining() const { return opt_.time_limit - seconds_since(start_); }
     void say(const std::string& line) const {
-        if (opt_.progress) opt_.progress(fmt("[%7.3fs] ", seconds_since(start_)) + line);
+        if (opt_.progress) opt_.progress(text::format("[%7.3fs] ", seconds_since(start_)) + line);
     }
     bool try_skeleton(const smt::Skeleton& skeleton, Solution& out, int guesses = 4);
     void shorten(const smt::Skeleton& found, Solution& out);
@@ -152,8 +148,8 @@ Solution Search::run() {
             const smt::Skeleton sk = front.skeleton();
             ++skeletons;
             ++stats_.skeletons;
-            say(fmt("%.0f joints: skeleton %.0f (elbow %+.0f,", dof, skeletons, sk.elbow) +
-                fmt(" base region %.0f)", sk.base_region));
+            say(text::format("%d joints: skeleton %d (elbow %+d, base region %d)", dof, skeletons, sk.elbow,
+                             sk.base_region));
             if (try_skeleton(sk, out)) {
                 shorten(sk, out);
                 return out;
@@ -164,7 +160,7 @@ Solution Search::run() {
             stats_.front_seconds += seconds_since(t1);
         }
         const bool exhausted = result != smt::FrontStage::Result::Sat;
-        tried_.push_back(fmt("%.0f joints: %.0f skeleton(s) searched", dof, skeletons) +
+        tried_.push_back(text::format("%d joints: %d skeleton(s) searched", dof, skeletons) +
                          (exhausted ? " (all of them) without a certified motion" : ""));
         if (exhausted) say(std::to_string(dof) + " joints: search exhausted");
     }
@@ -202,12 +198,11 @@ void Search::shorten(const smt::Skeleton& found, Solution& out) {
             smt::Skeleton variant = found;
             variant.base_region = region;
             variant.elbow = elbow;
-            say(fmt("%.0f joints: shorter robot with elbow %+.0f,", found.dof, elbow) +
-                fmt(" base region %.0f?", region));
+            say(text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof, elbow, region));
             Solution candidate = out;
             if (try_skeleton(variant, candidate, 1) &&
                 candidate.robot.total_length() < out.robot.total_length() - 1e-6) {
-                say(fmt("    shorter: total length %.4f m", candidate.robot.total_length()));
+                say(text::format("    shorter: total length %.4f m", candidate.robot.total_length()));
                 out = std::move(candidate);
             }
         }
@@ -218,9 +213,9 @@ bool Search::try_skeleton(const smt::Skeleton& skeleton, Solution& out, int coun
     const auto guesses = initial_guesses(task_, skeleton, count, opt_.seed);
     for (const auto& g : guesses) {
         if (remaining() <= 0.0) return false;
-        say(fmt("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(), g.robot.base.y(),
+        say(text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(), g.robot.base.y(),
                 g.robot.total_length()) +
-            fmt(", margin %.4f m", g.margin));
+            text::format(", margin %.4f m", g.margin));
         // SV^over bounds a 2-link arm; with three joints the proximal link
         // moves between primitives and the sampled model is used directly.
         if (skeleton.dof == 2 && !task_.obstacles.empty() && swept_over_plausible(task_, g.robot) &&
@@ -260,10 +255,9 @@ bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& star
         }
         const kinematics::Robot robot = nlp::robot_from(f, res.x);
         std::string links;
-        for (double r : robot.link_lengths) links += fmt(links.empty() ? "%.4f" : " + %.4f", r);
+        for (double r : robot.link_lengths) links += text::format(links.empty() ? "%.4f" : " + %.4f", r);
         say(std::string("    ") + name + ": candidate links " + links +
-            fmt(" m with %.0f points, %.0f variables", static_cast<double>(problem.points.size()),
-                f.program.num_variables()));
+            text::format(" m with %zu points, %d variables", problem.points.size(), f.program.num_variables()));
         const std::size_t before = problem.points.size();
         const int depth_before = problem.transition_depth;
         if (finish(robot, problem, out)) return true;
@@ -311,7 +305,7 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
         out.robot = robot;
         out.samples = std::move(*motion);
         out.certificate = std::move(cert);
-        say(fmt("    certified: clearance margin %.4f m, self margin %.4f m, deviation %.2g m",
+        say(text::format("    certified: clearance margin %.4f m, self margin %.4f m, deviation %.2g m",
                 out.certificate.min_clearance, out.certificate.min_self_clearance,
                 out.certificate.max_deviation));
         return true;

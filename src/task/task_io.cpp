@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/geometry/distance.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::task {
 
@@ -29,11 +30,7 @@ constexpr double kDegenerate = 1e-9;
 
 // ---------------------------------------------------------------- messages
 
-std::string fixed(double value, int decimals) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
-    return buf;
-}
+std::string fixed(double value, int decimals) { return text::format("%.*f", decimals, value); }
 
 /// A length for a message: 3 decimals, or as many as needed to show a tiny
 /// but non-zero value, so that a rejected 2e-6 m gap does not read "0.000 m".

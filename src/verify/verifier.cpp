@@ -8,6 +8,7 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::verify {
 namespace {
@@ -18,11 +19,6 @@ using geometry::Vec2;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kGeomEps = 1e-9;
 
-std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf, fmt, a, b, c);
-    return buf;
-}
 
 double segment_polygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& poly) {
     if (geometry::point_in_convex_polygon(a, poly) || geometry::point_in_convex_polygon(b, poly))
@@ -97,7 +93,7 @@ private:
             const double r = robot_.link_lengths[k];
             if (!(r >= task_.robot.min_link_length - kGeomEps && r <= task_.robot.max_link_length + kGeomEps))
                 violation(Violation::Kind::Structure, -1, 0.0,
-                          format("link %.0f length %.6f m is outside the allowed range", k + 1.0, r));
+                          text::format("link %d length %.6f m is outside the allowed range", k + 1, r));
         }
         if (robot_.link_diameter < task_.robot.link_diameter)
             violation(Violation::Kind::Structure, -1, 0.0, "link diameter below the task's");
@@ -105,7 +101,7 @@ private:
             std::none_of(task_.base_regions.begin(), task_.base_regions.end(),
                          [&](const task::BaseRegion& r) { return r.contains(robot_.base, kGeomEps); }))
             violation(Violation::Kind::Structure, -1, 0.0,
-                      format("base (%.6f, %.6f) lies in no base region", robot_.base.x(), robot_.base.y()));
+                      text::format("base (%.6f, %.6f) lies in no base region", robot_.base.x(), robot_.base.y()));
         if (samples_.empty()) violation(Violation::Kind::Structure, -1, 0.0, "no samples");
         for (std::size_t i = 0; i < samples_.size(); ++i) {
             if (static_cast<int>(samples_[i].q.size()) != n) {
@@ -139,7 +135,7 @@ private:
                 const double step = a.s - samples_[i - 1].s;
                 if (step < 0.0 || step > opt_.max_ee_step + 1e-12)
                     violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
-                              format("progress step %.6f m between samples", step));
+                              text::format("progress step %.6f m between samples", step));
             }
             const bool last = i + 1 == samples_.size() || samples_[i + 1].phase != a.phase ||
                               samples_[i + 1].primitive != a.primitive;
@@ -170,7 +166,7 @@ private:
         cert_.max_deviation = std::max(cert_.max_deviation, p.deviation);
         if (p.deviation > opt_.deviation_tolerance)
             violation(Violation::Kind::Deviation, i, p.deviation - opt_.deviation_tolerance,
-                      format("EE is %.6f m off the path", p.deviation));
+                      text::format("EE is %.6f m off the path", p.deviation));
         for (int k = 0; k < n; ++k) {
             for (std::size_t o = 0; o < task_.obstacles.size(); ++o) {
                 const task::Obstacle& ob = task_.obstacles[o];
@@ -178,8 +174,7 @@ private:
                     geometry::point_segment(ob.center, p.joints[k], p.joints[k + 1]) - ob.radius - diam / 2;
                 if (margin < 0.0)
                     violation(Violation::Kind::Clearance, i, -margin,
-                              format("link %.0f is %.6f m too close to obstacles[%.0f]", k + 1.0, -margin,
-                                     static_cast<double>(o)),
+                              text::format("link %d is %.6f m too close to obstacles[%zu]", k + 1, -margin, o),
                               static_cast<int>(o), k);
             }
             if (k < n - 1) {
@@ -187,7 +182,7 @@ private:
                     geometry::point_segment(p.joints[n], p.joints[k], p.joints[k + 1]) - diam;
                 if (margin < 0.0)
                     violation(Violation::Kind::SelfCollision, i, -margin,
-                              format("EE is %.6f m too close to link %.0f", -margin, k + 1.0), -1, k);
+                              text::format("EE is %.6f m too close to link %d", -margin, k + 1), -1, k);
             }
         }
     }
@@ -205,7 +200,7 @@ private:
         cert_.max_joint_step = std::max(cert_.max_joint_step, step);
         if (step > opt_.max_joint_step + 1e-12) {
             violation(Violation::Kind::JointStep, i, step - opt_.max_joint_step,
-                      format("a joint moves %.6f rad to the next sample", step));
+                      text::format("a joint moves %.6f rad to the next sample", step));
             return;  // the bounds below assume small steps
         }
         // E_k: bound on |p''| for any point of link k (certified-verification.md).
