@@ -43,8 +43,8 @@ Vec2 start_base(const task::Task& task, int region, const std::vector<PathSample
     return c / static_cast<double>(points.size());
 }
 
-// The initial pose at p: link 1 towards p, the rest folded to the requested
-// sides by two-link IK when it reaches, else bent by a fixed angle.
+// The initial pose at p: with three joints link 1 turned off the line to p
+// by a fixed angle, then the distal pair towards p on its requested side.
 std::vector<Vec2> start_joints(const Vec2& base, const std::vector<double>& r, const std::vector<int>& elbows,
                                const Vec2& p) {
     const int n = static_cast<int>(r.size());
@@ -56,15 +56,7 @@ std::vector<Vec2> start_joints(const Vec2& base, const std::vector<double>& r, c
         origin = base + r[0] * geometry::unit(toward - 0.4 * elbows[0]);
         joints.push_back(origin);
     }
-    const double a = r[n - 2], b = r[n - 1];
-    const int elbow = elbows.back();
-    if (auto ik = kinematics::inverse_two_link(origin, a, b, p, elbow)) {
-        joints.push_back(origin + a * geometry::unit(ik->phi1));
-    } else {
-        const Vec2 d = p - origin;
-        const Vec2 dir = d.norm() > 1e-12 ? Vec2(d.normalized()) : Vec2(1.0, 0.0);
-        joints.push_back(origin + a * (0.8 * dir - 0.6 * elbow * geometry::perp(dir)).normalized());
-    }
+    joints.push_back(kinematics::elbow_towards(origin, r[n - 2], r[n - 1], p, elbows.back()));
     return joints;
 }
 

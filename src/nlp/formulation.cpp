@@ -83,15 +83,7 @@ private:
     void distal_pair(const Point& o, const Vec2& p, const std::string& where) {
         const int r_a = f_.r[f_.dof - 2], r_b = f_.r[f_.dof - 1];
         const double a0 = p_.start.link_lengths[f_.dof - 2], b0 = p_.start.link_lengths[f_.dof - 1];
-        Vec2 e0;
-        if (auto ik = kinematics::inverse_two_link(o.value, a0, b0, p, f_.elbow)) {
-            e0 = o.value + a0 * geometry::unit(ik->phi1);
-        } else {
-            const Vec2 d = p - o.value;
-            const Vec2 dir = d.norm() > 1e-12 ? Vec2(d.normalized()) : Vec2(1.0, 0.0);
-            e0 = o.value + a0 * (0.8 * dir - 0.6 * f_.elbow * geometry::perp(dir)).normalized();
-        }
-        const Point e = new_point("elbow " + where, e0);
+        const Point e = new_point("elbow " + where, kinematics::elbow_towards(o.value, a0, b0, p, f_.elbow));
         const Point target = constant(p);
         link(o, e, r_a, "distal 1 " + where);
         link(e, target, r_b, "distal 2 " + where);

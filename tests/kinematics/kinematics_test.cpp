@@ -147,3 +147,19 @@ TEST_CASE("unwrapping keeps angles near the reference", "[kinematics]") {
         CHECK(turns == Approx(std::round(turns)).margin(1e-12));
     }
 }
+
+TEST_CASE("elbow_towards: the IK elbow in reach, a bent pose on the same side beyond it", "[kinematics]") {
+    const Vec2 o(0.1, -0.2);
+    for (int elbow : {1, -1}) {
+        const Vec2 near(0.5, 0.1);
+        const Vec2 e = elbow_towards(o, 0.3, 0.25, near, elbow);
+        CHECK((e - o).norm() == Approx(0.3));
+        CHECK((near - e).norm() == Approx(0.25));
+        CHECK(elbow_sign(std::atan2(cross(e - o, near - e), (e - o).dot(near - e))) == elbow);
+        const Vec2 far(2.0, 1.0);
+        const Vec2 f = elbow_towards(o, 0.3, 0.25, far, elbow);
+        CHECK((f - o).norm() == Approx(0.3));
+        // Bent to the requested side of the line towards the target.
+        CHECK(elbow * cross(f - o, far - o) > 0.0);
+    }
+}

@@ -35,6 +35,11 @@ struct TwoLinkAngles {
 std::optional<TwoLinkAngles> inverse_two_link(const Vec2& origin, double r1, double r2,
                                               const Vec2& target, int elbow);
 
+/// Where the elbow of a two-link arm hinged at origin goes to put its end at
+/// target on the given branch; when target is out of reach, a pose bent to
+/// that side and pointing towards it (a starting point for an optimiser).
+Vec2 elbow_towards(const Vec2& origin, double r1, double r2, const Vec2& target, int elbow);
+
 /// angle + 2*pi*k nearest to reference: keeps sampled joint angles continuous.
 double unwrap_near(double angle, double reference);
 
