@@ -22,21 +22,13 @@ struct BaselineArgs {
     baseline::BaselineOptions options;
 };
 
-void print_links(const kinematics::Robot& r) {
-    std::printf("%d joints, base (%.4f, %.4f), links", r.dof(), r.base.x(), r.base.y());
-    for (double l : r.link_lengths) std::printf(" %.4f", l);
-    std::printf(" m (total %.4f m)", r.total_length());
-}
-
 void print_result(const task::Task& task, const baseline::BaselineResult& r) {
     std::printf("%s: discretized baseline (%zu points): %s in %.3f s (design %.3f s, RRT %.3f s)\n",
                 task.name.c_str(), r.points.size(), baseline::to_string(r.status), r.seconds, r.design_seconds,
                 r.planning_seconds);
     if (!r.message.empty()) std::printf("  %s\n", r.message.c_str());
     if (!r.design.found) return;
-    std::printf("  robot: ");
-    print_links(r.design.robot);
-    std::printf("\n");
+    std::printf("  robot: %s\n", robot_summary(r.design.robot).c_str());
     const baseline::Fidelity& f = r.fidelity;
     std::printf("  executed EE strays up to %.2f mm from the path (mean %.2f mm, worst at (%.4f, %.4f));\n"
                 "  the path lies up to %.2f mm from the EE's trail\n",

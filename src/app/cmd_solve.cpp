@@ -8,6 +8,7 @@
 #include <modsynth/output/solution_io.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/task/task_io.h>
+#include <modsynth/text/format.h>
 
 #include "command.h"
 
@@ -38,9 +39,7 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
         return;
     }
     const auto& r = solution.robot;
-    std::printf("  robot: %d joints, base (%.4f, %.4f), links", r.dof(), r.base.x(), r.base.y());
-    for (double l : r.link_lengths) std::printf(" %.4f", l);
-    std::printf(" m (total %.4f m), elbow %+d\n", r.total_length(), r.elbow);
+    std::printf("  robot: %s\n", robot_summary(r).c_str());
     const auto& c = solution.certificate;
     std::printf("  certified over the whole motion: clearance margin %.4f m, self-collision margin "
                 "%.4f m, EE deviation <= %.2e m\n",
@@ -77,6 +76,13 @@ int run_solve(const SolveArgs& a) {
 }
 
 }  // namespace
+
+std::string robot_summary(const kinematics::Robot& r) {
+    std::string links;
+    for (double l : r.link_lengths) links += text::format(" %.4f", l);
+    return text::format("%d joints, base (%.4f, %.4f), links", r.dof(), r.base.x(), r.base.y()) + links +
+           text::format(" m (total %.4f m), elbow %+d", r.total_length(), r.elbow);
+}
 
 Command add_solve(CLI::App& parent) {
     auto a = std::make_shared<SolveArgs>();

@@ -3,10 +3,12 @@
 // executes it and returns the exit code. Exceptions escape to main, the one
 // place that maps them to exit codes.
 #include <functional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include <modsynth/baseline/baseline.h>
+#include <modsynth/kinematics/robot.h>
 #include <modsynth/output/exports.h>
 
 namespace modsynth::app {
@@ -30,6 +32,10 @@ Command add_compare(CLI::App& parent);
 
 /// --report, --urdf, --csv, --build-sheet: shared by solve and export.
 void add_export_options(CLI::App& sub, output::ExportPaths& paths);
+
+/// "2 joints, base (x, y), links a b m (total t m), elbow +1": the robot
+/// line of solve's summary, and of baseline's.
+std::string robot_summary(const kinematics::Robot& robot);
 
 /// --points, --seed, --baseline-time-limit, --rrt-iterations, --goal-bias,
 /// --no-shortcut: shared by baseline and compare.

@@ -4,12 +4,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "json_numbers.h"
+
 namespace modsynth::output {
 namespace {
-
-nlohmann::json finite_or_null(double v) {
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
 
 nlohmann::json robot_json(const kinematics::Robot& r) {
     return {{"dof", r.dof()},

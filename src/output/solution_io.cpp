@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "json_numbers.h"
+
 namespace modsynth::synth {
 const char* to_string(Status status) {
     switch (status) {
@@ -18,14 +20,6 @@ const char* to_string(Status status) {
 }  // namespace modsynth::synth
 
 namespace modsynth::output {
-namespace {
-
-// JSON has no infinity: an unconstrained margin is written as null.
-nlohmann::json finite_or_null(double v) {
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
-}  // namespace
 
 nlohmann::json to_json(const synth::Solution& s) {
     nlohmann::json doc;

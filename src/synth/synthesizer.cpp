@@ -199,7 +199,8 @@ void Search::shorten(const smt::Skeleton& found, Solution& out) {
             variant.base_region = region;
             variant.elbow = elbow;
             say(text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof, elbow, region));
-            Solution candidate = out;
+            Solution candidate;
+            candidate.task_name = out.task_name;
             if (try_skeleton(variant, candidate, 1) &&
                 candidate.robot.total_length() < out.robot.total_length() - 1e-6) {
                 say(text::format("    shorter: total length %.4f m", candidate.robot.total_length()));
