@@ -129,11 +129,8 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
 }
 
 std::vector<Start> starts(const task::Task& task, int dof) {
-    std::vector<int> regions;
-    for (int i = 0; i < static_cast<int>(task.base_regions.size()); ++i) regions.push_back(i);
-    if (regions.empty()) regions.push_back(-1);
     std::vector<Start> out;
-    for (int region : regions) {
+    for (int region : task::base_region_choices(task)) {
         for (int pattern = 0; pattern < (1 << (dof - 1)); ++pattern) {
             Start s{region, {}};
             for (int i = 0; i < dof - 1; ++i) s.elbows.push_back((pattern >> i) & 1 ? -1 : 1);

@@ -189,10 +189,7 @@ Solution Search::run() {
 // against 0.97 m). Each other elbow sign and base region gets one initial
 // guess; a fixed amount of work, so that solutions stay repeatable.
 void Search::shorten(const smt::Skeleton& found, Solution& out) {
-    std::vector<int> regions;
-    for (int i = 0; i < static_cast<int>(task_.base_regions.size()); ++i) regions.push_back(i);
-    if (regions.empty()) regions.push_back(-1);
-    for (int region : regions) {
+    for (int region : task::base_region_choices(task_)) {
         for (int elbow : {1, -1}) {
             if ((region == found.base_region && elbow == found.elbow) || remaining() <= 0.0) continue;
             smt::Skeleton variant = found;

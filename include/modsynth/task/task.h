@@ -54,6 +54,15 @@ struct Task {
     RobotSpec robot;
 };
 
+/// The base-region choices of a search: each index into base_regions, or
+/// just -1 (unconstrained) when the task has none.
+inline std::vector<int> base_region_choices(const Task& task) {
+    std::vector<int> out;
+    for (int i = 0; i < static_cast<int>(task.base_regions.size()); ++i) out.push_back(i);
+    if (out.empty()) out.push_back(-1);
+    return out;
+}
+
 /// Joint counts modsynth can synthesise.
 constexpr int kMinDof = 2;
 constexpr int kMaxDof = 3;
