@@ -78,6 +78,8 @@ function loadDocument(doc, tool) {
 }
 
 async function openFile(file) {
+  // Until the file's task is checked, the verdict shown is not about it.
+  document.body.dataset.validity = "checking";
   const text = await file.text();
   let doc;
   try {

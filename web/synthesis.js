@@ -147,6 +147,8 @@ export class Synthesis extends EventTarget {
     if (!this.job || job.id !== this.job.id || job.version < this.job.version) return;
     this.job = job;
     this.tick(job.elapsed);
+    // The clock and the stage change together, never one ahead of the other.
+    this.showClock();
     const phase = job.phase === "explain" ? "explaining: " : "";
     $("run-stage").textContent = job.done ? "finished: " + job.status : phase + job.stage;
     if (job.result && !this.shownResult) {

@@ -191,6 +191,11 @@ async function checkFigures(page) {
 async function loadFile(page, file) {
   const [chooser] = await Promise.all([page.waitForEvent("filechooser"), page.click("#open")]);
   await chooser.setFiles(file);
+  // The page reads the file asynchronously: wait until it holds that task,
+  // so that the verdicts waited for next are about it.
+  const trajectory = JSON.stringify(JSON.parse(fs.readFileSync(file, "utf8")).trajectory);
+  await page.waitForFunction((t) => JSON.stringify(window.modsynth.model.doc.trajectory) === t, trajectory,
+                             { timeout: 10_000 });
 }
 
 async function infeasibleTask(url) {
@@ -257,7 +262,18 @@ async function editAndCancel(url) {
   const log = await page.evaluate(() => window.modsynth.synthesis.job.log);
   check(log.some((line) => line.endsWith(stage)), "live progress shows the solver's latest stage: " + stage);
   check((await page.evaluate(() => document.body.dataset.synthesis)) === "running", "the solve runs on");
-  check(/of at most/.test(await text(page, "#run-clock")), "live progress shows the elapsed time");
+  // The clock shows the elapsed time and advances while the solve runs.
+  const clock = async () => {
+    const m = /^([0-9.]+) s of at most/.exec(await text(page, "#run-clock"));
+    return m ? parseFloat(m[1]) : null;
+  };
+  const first = await clock();
+  check(first !== null, "live progress shows the elapsed time: " + (await text(page, "#run-clock")));
+  const advanced = await page.waitForFunction((t0) => {
+    const m = /^([0-9.]+) s of at most/.exec(document.getElementById("run-clock").textContent);
+    return m && parseFloat(m[1]) >= t0 + 0.5;
+  }, first ?? 0, { timeout: 5_000 }).then(() => true, () => false);
+  check(advanced, "the elapsed time advances while the solve runs");
   const id = await page.evaluate(() => document.body.dataset.jobId);
   await page.click("#cancel");
   await page.waitForSelector('body[data-synthesis="cancelled"]', { timeout: 5_000 });
