@@ -76,7 +76,7 @@ TEST_CASE("a transition the distal pair cannot follow is reported", "[control]")
     CHECK(failure.message.find("transition after trajectory[0]") != std::string::npos);
 }
 
-TEST_CASE("path parameters recovered from joint angles match the planned ones", "[control]") {
+TEST_CASE("path parameters recovered from joint angles match the planned ones", "[control][slow]") {
     // The rose has lines, arcs and a full circle.
     const task::Task rose = task::load_task(testing::source_path("tasks/rose.json"));
     const synth::Solution s = synth::synthesize(rose, {});

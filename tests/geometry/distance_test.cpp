@@ -119,7 +119,7 @@ TEST_CASE("segment-segment distance: analytic cases", "[geometry]") {
     CHECK(segment_segment({0, 0}, {1, 1}, {3, 0}, {2, 0.5}) == Approx(std::sqrt(1.25)));
 }
 
-TEST_CASE("segment-segment distance agrees with dense sampling", "[geometry]") {
+TEST_CASE("segment-segment distance agrees with dense sampling", "[geometry][slow]") {
     std::mt19937 rng(11);
     constexpr int kSamples = 400;
     for (int i = 0; i < 300; ++i) {
@@ -188,7 +188,7 @@ TEST_CASE("segment-primitive distance: analytic cases", "[geometry]") {
     CHECK(segment_primitive({0.5, 0.5}, {0.5, 0.5}, circle) == Approx(1.0 - std::sqrt(0.5)));
 }
 
-TEST_CASE("segment-primitive distance agrees with dense sampling", "[geometry]") {
+TEST_CASE("segment-primitive distance agrees with dense sampling", "[geometry][slow]") {
     std::mt19937 rng(13);
     constexpr int kSamples = 600;
     for (int i = 0; i < 400; ++i) {

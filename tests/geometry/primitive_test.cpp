@@ -255,7 +255,7 @@ TEST_CASE("the tangent is the derivative of point_at", "[geometry]") {
     }
 }
 
-TEST_CASE("nearest agrees with dense sampling", "[geometry]") {
+TEST_CASE("nearest agrees with dense sampling", "[geometry][slow]") {
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> coord(-3.0, 3.0);
     constexpr int kSamples = 10000;
@@ -276,7 +276,7 @@ TEST_CASE("nearest agrees with dense sampling", "[geometry]") {
     }
 }
 
-TEST_CASE("critical points really minimise and maximise the distance", "[geometry]") {
+TEST_CASE("critical points really minimise and maximise the distance", "[geometry][slow]") {
     std::mt19937 rng(4);
     std::uniform_real_distribution<double> coord(-3.0, 3.0);
     constexpr int kSamples = 10000;

@@ -92,7 +92,7 @@ void check_derivatives(const nlp::QuadraticProgram& qp, unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("refinement derivatives agree with finite differences", "[nlp]") {
+TEST_CASE("refinement derivatives agree with finite differences", "[nlp][slow]") {
     for (auto swept : {nlp::SweptVolume::Sampled, nlp::SweptVolume::Over}) {
         const nlp::Formulation f = nlp::formulate(rose_problem(swept));
         INFO((swept == nlp::SweptVolume::Over ? "SV-over" : "sampled"));
@@ -136,7 +136,7 @@ TEST_CASE("an infeasible program is reported, not returned as a solution", "[nlp
     CHECK_FALSE(r.usable());
 }
 
-TEST_CASE("refinement of the rose finds a shorter robot that keeps its constraints", "[nlp]") {
+TEST_CASE("refinement of the rose finds a shorter robot that keeps its constraints", "[nlp][slow]") {
     nlp::ArmProblem p = rose_problem(nlp::SweptVolume::Sampled);
     p.horizon = 0.10;
     p.start.base = {-0.02, 0.007};  // a start clear of the obstacles

@@ -19,7 +19,7 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 
 }  // namespace
 
-TEST_CASE("front stage finds a skeleton whose coarse point meets the relaxation", "[smt]") {
+TEST_CASE("front stage finds a skeleton whose coarse point meets the relaxation", "[smt][slow]") {
     const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
     FrontStage fs(t, 2);
     REQUIRE(fs.check() == FrontStage::Result::Sat);
@@ -41,7 +41,7 @@ TEST_CASE("front stage finds a skeleton whose coarse point meets the relaxation"
     CHECK(s.primitives.size() == t.trajectory.size());
 }
 
-TEST_CASE("front stage proves an out-of-reach task infeasible with a minimal core", "[smt]") {
+TEST_CASE("front stage proves an out-of-reach task infeasible with a minimal core", "[smt][slow]") {
     const std::string dir = testing::source_path("tests/fixtures/planted");
     int checked = 0;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
@@ -75,7 +75,7 @@ TEST_CASE("front stage proves an out-of-reach task infeasible with a minimal cor
     CHECK(checked >= 3);
 }
 
-TEST_CASE("front stage answers sat on every planted feasible task", "[smt]") {
+TEST_CASE("front stage answers sat on every planted feasible task", "[smt][slow]") {
     // Soundness: the relaxation only states necessary conditions.
     const std::string dir = testing::source_path("tests/fixtures/planted");
     int checked = 0;

@@ -31,7 +31,7 @@ TEST_CASE("every hand-made infeasible task is proved with its expected core", "[
     CHECK(checked >= 4);
 }
 
-TEST_CASE("relaxations are the smallest change of one part, and they are re-checked", "[explain]") {
+TEST_CASE("relaxations are the smallest change of one part, and they are re-checked", "[explain][slow]") {
     const task::Task t = task::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
     const auto proof = synth::prove_infeasible(t, 10.0);
     REQUIRE(proof.proved);

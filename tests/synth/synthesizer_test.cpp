@@ -32,7 +32,7 @@ std::string stem_of(const std::string& task_path) {
 
 }  // namespace
 
-TEST_CASE("planted 2-joint tasks are solved and the motion re-certifies", "[synth]") {
+TEST_CASE("planted 2-joint tasks are solved and the motion re-certifies", "[synth][slow]") {
     const auto tasks = planted("p2-");
     REQUIRE(tasks.size() >= 5);
     for (const auto& path : tasks) {
@@ -125,7 +125,7 @@ TEST_CASE("progress is reported stage by stage", "[synth]") {
     CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) { return l.find("certified") != std::string::npos; }));
 }
 
-TEST_CASE("wipe-table and clean-table: 2 joints exhausted, then solved with 3", "[synth]") {
+TEST_CASE("wipe-table and clean-table: 2 joints exhausted, then solved with 3", "[synth][slow]") {
     for (const char* name : {"tasks/wipe-table.json", "tasks/clean-table.json"}) {
         INFO(name);
         const task::Task t = task::load_task(testing::source_path(name));
