@@ -7,6 +7,7 @@
 #include <string>
 
 #include <modsynth/geometry/primitive.h>
+#include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/nlp/bilinear.h>
 #include <modsynth/nlp/solver.h>
@@ -67,6 +68,7 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
     Built m;
     nlp::QuadraticProgram& qp = m.program;
     const task::RobotSpec& spec = task.robot;
+    const kinematics::ClearanceRule rule{spec.link_diameter};
     const Vec2 b0 = start_base(task, start.region, points);
     double bx_lo = -nlp::kInfinity, bx_hi = nlp::kInfinity, by_lo = -nlp::kInfinity, by_hi = nlp::kInfinity;
     if (start.region >= 0) {
@@ -109,12 +111,12 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
             for (int o = 0; o < static_cast<int>(task.obstacles.size()); ++o) {
                 const task::Obstacle& ob = task.obstacles[o];
                 add_keep_apart(qp, chain[i], chain[i + 1], constant(ob.center),
-                               ob.radius + spec.link_diameter / 2.0 + options.clearance_margin,
+                               rule.obstacle_distance(ob) + options.clearance_margin,
                                "obstacles[" + std::to_string(o) + "] link " + std::to_string(i + 1) + " " +
                                    where(k));
             }
             if (i + 1 < dof)
-                add_keep_apart(qp, chain[i], chain[i + 1], chain.back(), spec.link_diameter + options.self_margin,
+                add_keep_apart(qp, chain[i], chain[i + 1], chain.back(), rule.self_distance() + options.self_margin,
                                "EE to link " + std::to_string(i + 1) + " " + where(k));
         }
         if (!previous.empty()) {

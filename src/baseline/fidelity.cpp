@@ -55,7 +55,7 @@ Fidelity measure_fidelity(const task::Task& task, const kinematics::Robot& robot
             f.max_deviation = std::max(f.max_deviation, dev);
             f.worst_point = ee;
         }
-        f.min_clearance = std::min(f.min_clearance, kinematics::pose_clearance(task, robot, q).worst());
+        f.min_clearance = std::min(f.min_clearance, kinematics::pose_clearance(task.obstacles, robot, q).worst());
         f.trail.push_back(ee);
     };
     for (std::size_t w = 0; w < waypoints.size(); ++w) {

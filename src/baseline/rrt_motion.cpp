@@ -115,7 +115,7 @@ PlannedMotion plan_rrt(const task::Task& task, const kinematics::Robot& robot,
     });
     auto si = std::make_shared<ob::SpaceInformation>(space);
     si->setStateValidityChecker([&task, &robot, n](const ob::State* s) {
-        return kinematics::pose_clearance(task, robot, angles_of(s, n)).worst() >= 0.0;
+        return kinematics::pose_clearance(task.obstacles, robot, angles_of(s, n)).worst() >= 0.0;
     });
     si->setStateValidityCheckingResolution(options.resolution / space->getMaximumExtent());
     si->setup();

@@ -48,7 +48,7 @@ std::optional<std::vector<double>> configuration_at(const task::Task& task,
     if (robot.dof() == 2) return arm_configuration(robot, robot.base, 0.0, p, previous);
     if (robot.dof() != 3 || static_cast<int>(robot.proximal_angles.size()) <= j) return std::nullopt;
     const double q1 = robot.proximal_angles[j];
-    return arm_configuration(robot, robot.base + robot.link_lengths[0] * geometry::unit(q1), q1, p, previous);
+    return arm_configuration(robot, robot.tracing_origin(j), q1, p, previous);
 }
 
 std::optional<std::vector<double>> transition_configuration(const task::Task& task,
@@ -56,8 +56,7 @@ std::optional<std::vector<double>> transition_configuration(const task::Task& ta
                                                             double q1,
                                                             const std::vector<double>* previous) {
     if (robot.dof() != 3) return std::nullopt;
-    const geometry::Vec2 origin = robot.base + robot.link_lengths[0] * geometry::unit(q1);
-    return arm_configuration(robot, origin, q1, task.trajectory[j].end, previous);
+    return arm_configuration(robot, robot.distal_origin(q1), q1, task.trajectory[j].end, previous);
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <modsynth/geometry/distance.h>
+#include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/nlp/bilinear.h>
 
@@ -20,7 +21,7 @@ std::string part(const char* what, int i) { return std::string(what) + "[" + std
 class Builder {
 public:
     Builder(const ArmProblem& problem, Formulation& f)
-        : p_(problem), t_(*problem.task), f_(f), qp_(f.program) {}
+        : p_(problem), t_(*problem.task), f_(f), qp_(f.program), rule_{t_.robot.link_diameter} {}
 
     void build() {
         const kinematics::Robot& start = p_.start;
@@ -58,7 +59,7 @@ private:
     const Point& origin(int j) const { return f_.dof == 2 ? base_ : proximal_[j]; }
 
     double need_for(const task::Obstacle& ob) const {
-        return ob.radius + t_.robot.link_diameter / 2.0 + p_.margins.clearance;
+        return rule_.obstacle_distance(ob) + p_.margins.clearance;
     }
 
     Point new_point(const std::string& name, const Vec2& v) { return bilinear::new_point(qp_, name, v); }
@@ -93,13 +94,13 @@ private:
         // from the singular straight and folded poses, and the EE at least k
         // from that link (a lower bound on its distance from the segment).
         Quadratic side = scaled(cross(o, e, target), f_.elbow);
-        side.add(r_a, -(t_.robot.link_diameter + p_.margins.self));
+        side.add(r_a, -(rule_.self_distance() + p_.margins.self));
         qp_.add_constraint(side, 0.0, kInfinity, "elbow side " + where);
         keep_links_from_obstacles(o, e, f_.dof - 1, where);
         keep_links_from_obstacles(e, target, f_.dof, where);
         if (f_.dof == 3) {
             // eq. (9): the EE keeps a diameter away from the proximal link.
-            keep_apart(base_, o, target, t_.robot.link_diameter + p_.margins.self, "EE to link 1 " + where);
+            keep_apart(base_, o, target, rule_.self_distance() + p_.margins.self, "EE to link 1 " + where);
         }
     }
 
@@ -109,10 +110,9 @@ private:
     }
 
     void add_proximal_poses() {
-        const double r1 = p_.start.link_lengths[0];
         for (int j = 0; j < static_cast<int>(t_.trajectory.size()); ++j) {
             const double angle = p_.start.proximal_angles.at(j);
-            proximal_.push_back(new_point("proximal " + part("trajectory", j), p_.start.base + r1 * geometry::unit(angle)));
+            proximal_.push_back(new_point("proximal " + part("trajectory", j), p_.start.distal_origin(angle)));
             f_.proximal.push_back({proximal_.back().x.terms[0].first, proximal_.back().y.terms[0].first});
             link(base_, proximal_.back(), f_.r[0], "proximal " + part("trajectory", j));
             keep_links_from_obstacles(base_, proximal_.back(), 1, part("trajectory", j));
@@ -135,7 +135,7 @@ private:
                 double r1, int j) {
         if (depth <= 0) return;
         const double mid = 0.5 * (angle_a + angle_c);
-        const Vec2 t0 = p_.start.base + r1 * geometry::unit(mid);
+        const Vec2 t0 = p_.start.distal_origin(mid);
         const std::string where = "transition after " + part("trajectory", j) + " at " + std::to_string(mid);
         const Point t = new_point("proximal " + where, t0);
         const Affine sum = (a.x - base_.x) + (c.x - base_.x);
@@ -196,6 +196,7 @@ private:
     const task::Task& t_;
     Formulation& f_;
     QuadraticProgram& qp_;
+    const kinematics::ClearanceRule rule_;
     Point base_;
     std::vector<Point> proximal_;
 };

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <modsynth/geometry/distance.h>
+#include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 
 namespace modsynth::output {
@@ -11,8 +11,9 @@ namespace {
 
 bool link_clear(const std::vector<task::Obstacle>& obstacles, double diameter, const Vec2& a,
                 const Vec2& b) {
+    const kinematics::ClearanceRule rule{diameter};
     for (const auto& o : obstacles) {
-        if (geometry::point_segment(o.center, a, b) < o.radius + diameter / 2.0) return false;
+        if (rule.link_margin(o, a, b) < 0.0) return false;
     }
     return true;
 }
@@ -24,10 +25,11 @@ bool branch_clear(const DistalPair& arm, const std::vector<task::Obstacle>& obst
     const Vec2 knee = arm.origin + arm.r1 * geometry::unit(ik->phi1);
     if (!link_clear(obstacles, diameter, arm.origin, knee)) return false;
     if (!link_clear(obstacles, diameter, knee, p)) return false;
-    if (geometry::point_segment(p, arm.origin, knee) < diameter) return false;
+    const kinematics::ClearanceRule rule{diameter};
+    if (rule.self_margin(p, arm.origin, knee) < 0.0) return false;
     for (const auto& [a, b] : arm.fixed_links) {
         if (!link_clear(obstacles, diameter, a, b)) return false;
-        if (geometry::point_segment(p, a, b) < diameter) return false;
+        if (rule.self_margin(p, a, b) < 0.0) return false;
     }
     return true;
 }

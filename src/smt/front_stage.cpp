@@ -9,6 +9,7 @@
 #include <optional>
 
 #include <modsynth/geometry/distance.h>
+#include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/text/format.h>
 
 namespace modsynth::smt {
@@ -129,6 +130,7 @@ struct FrontStage::Impl {
     void encode() {
         const auto& rs = task.robot;
         const std::string diam = "robot.link_diameter";
+        const kinematics::ClearanceRule rule{rs.link_diameter};
         for (int k = 0; k < dof; ++k) {
             add_both(r[k] > 0);
             require({"robot.min_link_length"}, r[k] >= num(rs.min_link_length - kSlack));
@@ -136,7 +138,7 @@ struct FrontStage::Impl {
         }
         // The EE must stay a diameter away from the link before the last,
         // which it cannot do when the last link is shorter than that.
-        require({diam}, r[dof - 1] >= num(rs.link_diameter - kSlack));
+        require({diam}, r[dof - 1] >= num(rule.self_distance() - kSlack));
 
         if (!task.base_regions.empty()) {
             z3::expr_vector any(ctx);
@@ -154,7 +156,7 @@ struct FrontStage::Impl {
         for (std::size_t o = 0; o < task.obstacles.size(); ++o) {
             const task::Obstacle& ob = task.obstacles[o];
             const std::string name = "obstacles[" + std::to_string(o) + "]";
-            const double need = ob.radius + rs.link_diameter / 2 - kSlack;
+            const double need = rule.obstacle_distance(ob) - kSlack;
             // Link 1 starts at the base.
             require({name, diam}, dist2(ob.center) >= num(need * need));
             // The last link ends on the path.
@@ -197,7 +199,8 @@ struct FrontStage::Impl {
         const geometry::Primitive& p = task.trajectory[j];
         const std::string name = "trajectory[" + std::to_string(j) + "]";
         const std::string diam = "robot.link_diameter";
-        const double d2 = task.robot.link_diameter * task.robot.link_diameter - kSlack;
+        const kinematics::ClearanceRule rule{task.robot.link_diameter};
+        const double d2 = rule.self_distance() * rule.self_distance() - kSlack;
         const auto pts = sample_points(p, options.samples_per_primitive);
         for (const auto& v : pts) {
             const z3::expr dv = dist2(v);
@@ -235,7 +238,7 @@ struct FrontStage::Impl {
             fine.add(inside == (dc <= rc));
             const z3::expr gap = z3::ite(inside, rc - dc, dc - rc) + num(kSlack);
             require({name}, gap >= r[0] - r[1] && gap >= r[1] - r[0], true);
-            require({name, diam}, gap >= num(task.robot.link_diameter - kSlack), true);
+            require({name, diam}, gap >= num(rule.self_distance() - kSlack), true);
         }
     }
 

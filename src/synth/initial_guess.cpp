@@ -6,6 +6,7 @@
 #include <random>
 
 #include <modsynth/geometry/distance.h>
+#include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 
 namespace modsynth::synth {
@@ -30,20 +31,18 @@ std::vector<Vec2> path_points(const task::Task& task, double spacing) {
 // (base to origin) against the obstacles and the EE.
 double pose_margin(const task::Task& task, const Vec2& base, const Vec2& origin, double a, double c,
                    int elbow, bool proximal, const Vec2& p) {
-    const double diam = task.robot.link_diameter;
+    const kinematics::ClearanceRule rule{task.robot.link_diameter};
     const double d = (p - origin).norm();
     const double reach = std::min(a + c - d, d - std::abs(a - c));
     if (reach <= 0.0) return reach;
     const auto ik = kinematics::inverse_two_link(origin, a, c, p, elbow);
     if (!ik) return 0.0;
     const Vec2 e = origin + a * geometry::unit(ik->phi1);
-    double worst = std::abs(geometry::cross(e - origin, p - origin)) / a - diam;
-    if (proximal) worst = std::min(worst, geometry::point_segment(p, base, origin) - diam);
+    double worst = std::abs(geometry::cross(e - origin, p - origin)) / a - rule.self_distance();
+    if (proximal) worst = std::min(worst, rule.self_margin(p, base, origin));
     for (const auto& ob : task.obstacles) {
-        const double need = ob.radius + diam / 2;
-        worst = std::min({worst, geometry::point_segment(ob.center, origin, e) - need,
-                          geometry::point_segment(ob.center, e, p) - need});
-        if (proximal) worst = std::min(worst, geometry::point_segment(ob.center, base, origin) - need);
+        worst = std::min({worst, rule.link_margin(ob, origin, e), rule.link_margin(ob, e, p)});
+        if (proximal) worst = std::min(worst, rule.link_margin(ob, base, origin));
     }
     return worst;
 }
@@ -62,10 +61,10 @@ double margin_at(const task::Task& task, const kinematics::Robot& robot, const s
 double choose_proximal_angles(const task::Task& task, kinematics::Robot& robot,
                               const std::vector<std::vector<Vec2>>& per_primitive, int angles) {
     const int m = static_cast<int>(task.trajectory.size());
-    const double r1 = robot.link_lengths[0], a = robot.link_lengths[1], c = robot.link_lengths[2];
+    const double a = robot.link_lengths[1], c = robot.link_lengths[2];
     constexpr double kNone = -std::numeric_limits<double>::infinity();
     auto theta = [&](int k) { return geometry::kTau * k / angles; };
-    auto origin = [&](double q1) { return Vec2(robot.base + r1 * geometry::unit(q1)); };
+    auto origin = [&](double q1) { return robot.distal_origin(q1); };
     std::vector<std::vector<double>> trace(m, std::vector<double>(angles, kNone));
     for (int j = 0; j < m; ++j) {
         for (int k = 0; k < angles; ++k) {

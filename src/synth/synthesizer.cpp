@@ -75,10 +75,8 @@ void add_point(std::vector<nlp::PathPoint>& pts, int j, double s) {
 void add_critical_points(const task::Task& task, const kinematics::Robot& robot,
                          std::vector<nlp::PathPoint>& points) {
     for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
-        geometry::Vec2 origin = robot.base;
-        if (robot.dof() == 3 && j < static_cast<int>(robot.proximal_angles.size()))
-            origin += robot.link_lengths[0] * geometry::unit(robot.proximal_angles[j]);
-        const auto cp = geometry::critical_points(task.trajectory[j], origin);
+        const bool known = robot.dof() == 2 || j < static_cast<int>(robot.proximal_angles.size());
+        const auto cp = geometry::critical_points(task.trajectory[j], known ? robot.tracing_origin(j) : robot.base);
         add_point(points, j, cp.closest.s);
         add_point(points, j, cp.farthest.s);
     }

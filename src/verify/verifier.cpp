@@ -7,6 +7,7 @@
 
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
+#include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/text/format.h>
 
@@ -162,24 +163,21 @@ private:
     void check_sample(int i) {
         const Pose& p = poses_[i];
         const int n = robot_.dof();
-        const double diam = robot_.link_diameter;
+        const kinematics::ClearanceRule rule{robot_.link_diameter};
         cert_.max_deviation = std::max(cert_.max_deviation, p.deviation);
         if (p.deviation > opt_.deviation_tolerance)
             violation(Violation::Kind::Deviation, i, p.deviation - opt_.deviation_tolerance,
                       text::format("EE is %.6f m off the path", p.deviation));
         for (int k = 0; k < n; ++k) {
             for (std::size_t o = 0; o < task_.obstacles.size(); ++o) {
-                const task::Obstacle& ob = task_.obstacles[o];
-                const double margin =
-                    geometry::point_segment(ob.center, p.joints[k], p.joints[k + 1]) - ob.radius - diam / 2;
+                const double margin = rule.link_margin(task_.obstacles[o], p.joints[k], p.joints[k + 1]);
                 if (margin < 0.0)
                     violation(Violation::Kind::Clearance, i, -margin,
                               text::format("link %d is %.6f m too close to obstacles[%zu]", k + 1, -margin, o),
                               static_cast<int>(o), k);
             }
             if (k < n - 1) {
-                const double margin =
-                    geometry::point_segment(p.joints[n], p.joints[k], p.joints[k + 1]) - diam;
+                const double margin = rule.self_margin(p.joints[n], p.joints[k], p.joints[k + 1]);
                 if (margin < 0.0)
                     violation(Violation::Kind::SelfCollision, i, -margin,
                               text::format("EE is %.6f m too close to link %d", -margin, k + 1), -1, k);
@@ -193,7 +191,7 @@ private:
         const Pose& a = poses_[i];
         const Pose& b = poses_[i + 1];
         const int n = robot_.dof();
-        const double diam = robot_.link_diameter;
+        const kinematics::ClearanceRule rule{robot_.link_diameter};
 
         double step = 0.0;
         for (int k = 0; k < n; ++k) step = std::max(step, std::abs(sb.q[k] - sa.q[k]));
@@ -245,19 +243,19 @@ private:
             const std::vector<Vec2> hull = geometry::convex_hull(
                 {a.joints[k], a.joints[k + 1], b.joints[k], b.joints[k + 1]});
             for (const task::Obstacle& ob : task_.obstacles) {
-                const double need = ob.radius + diam / 2;
-                const double bound = geometry::point_convex_polygon(ob.center, hull) - e[k] / 8.0 - need;
+                const double bound =
+                    geometry::point_convex_polygon(ob.center, hull) - e[k] / 8.0 - rule.obstacle_distance(ob);
                 cert_.min_clearance = std::min(cert_.min_clearance, bound);
-                const bool ok = geometry::point_segment(ob.center, a.joints[k], a.joints[k + 1]) >= need &&
-                                geometry::point_segment(ob.center, b.joints[k], b.joints[k + 1]) >= need;
+                const bool ok = rule.link_margin(ob, a.joints[k], a.joints[k + 1]) >= 0.0 &&
+                                rule.link_margin(ob, b.joints[k], b.joints[k + 1]) >= 0.0;
                 settle(bound, ok);
             }
             if (k < n - 1) {
-                const double bound =
-                    segment_polygon(a.joints[n], b.joints[n], hull) - (e[n - 1] + e[k]) / 8.0 - diam;
+                const double bound = segment_polygon(a.joints[n], b.joints[n], hull) - (e[n - 1] + e[k]) / 8.0 -
+                                     rule.self_distance();
                 cert_.min_self_clearance = std::min(cert_.min_self_clearance, bound);
-                const bool ok = geometry::point_segment(a.joints[n], a.joints[k], a.joints[k + 1]) >= diam &&
-                                geometry::point_segment(b.joints[n], b.joints[k], b.joints[k + 1]) >= diam;
+                const bool ok = rule.self_margin(a.joints[n], a.joints[k], a.joints[k + 1]) >= 0.0 &&
+                                rule.self_margin(b.joints[n], b.joints[k], b.joints[k + 1]) >= 0.0;
                 settle(bound, ok);
             }
         }

@@ -29,7 +29,7 @@ void require_poses_reach_points(const task::Task& t, const baseline::PointDesign
         const auto joints = kinematics::forward(d.robot.base, d.robot.link_lengths, d.poses[k]);
         CHECK((joints.back() - points[k].point).norm() < 1e-6);
         // The design keeps a 3 mm clearance margin at its points.
-        CHECK(kinematics::pose_clearance(t, d.robot, d.poses[k]).worst() > 0.003 - 1e-6);
+        CHECK(kinematics::pose_clearance(t.obstacles, d.robot, d.poses[k]).worst() > 0.003 - 1e-6);
         // Elbow consistency: every pair bends to its design side or is straight.
         for (int i = 1; i < d.robot.dof(); ++i) CHECK(d.elbows[i - 1] * std::sin(d.poses[k][i]) > -1e-6);
     }

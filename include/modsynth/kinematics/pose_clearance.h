@@ -1,13 +1,11 @@
 #pragma once
-// How clear one pose of an arm is, by the rules of formats.md guarantees 3
-// and 4: every link keeps radius + diameter/2 from every obstacle centre,
-// and the end-effector keeps a diameter from every link but the last.
+// How clear one pose of an arm is, by the clearance rule (clearance_rule.h).
 #include <algorithm>
 #include <limits>
 #include <span>
 
+#include <modsynth/geometry/disc.h>
 #include <modsynth/kinematics/robot.h>
-#include <modsynth/task/task.h>
 
 namespace modsynth::kinematics {
 
@@ -18,6 +16,7 @@ struct PoseClearance {
     double worst() const { return std::min(obstacles, self); }
 };
 
-PoseClearance pose_clearance(const task::Task& task, const Robot& robot, std::span<const double> q);
+PoseClearance pose_clearance(std::span<const geometry::Disc> obstacles, const Robot& robot,
+                             std::span<const double> q);
 
 }  // namespace modsynth::kinematics

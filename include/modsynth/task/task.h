@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/geometry/disc.h>
 #include <modsynth/geometry/primitive.h>
 
 namespace modsynth::task {
@@ -11,10 +12,7 @@ namespace modsynth::task {
 using geometry::Primitive;
 using geometry::Vec2;
 
-struct Obstacle {
-    Vec2 center = Vec2::Zero();
-    double radius = 0.0;
-};
+using Obstacle = geometry::Disc;
 
 /// Axis-aligned rectangle where the base may stand.
 struct BaseRegion {
