@@ -8,7 +8,7 @@
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/kinematics/pose_clearance.h>
-#include <modsynth/output/reachable_space.h>
+#include <modsynth/kinematics/reachable_space.h>
 
 namespace modsynth::baseline {
 namespace {
@@ -31,11 +31,11 @@ double distance_to_trail(const std::vector<Vec2>& trail, const Vec2& p) {
 
 bool reachable(const task::Task& task, const kinematics::Robot& robot, const Vec2& p, int proximal_steps) {
     const double d = robot.link_diameter;
-    if (robot.dof() == 2) return output::reaches_clear(output::distal_pair(robot, {}), task.obstacles, d, p);
+    if (robot.dof() == 2) return kinematics::reaches_clear(kinematics::distal_pair(robot, {}), task.obstacles, d, p);
     std::vector<double> lead(robot.dof() - 2, 0.0);
     for (int i = 0; i < proximal_steps; ++i) {
         lead[0] = geometry::kTau * i / proximal_steps;
-        if (output::reaches_clear(output::distal_pair(robot, lead), task.obstacles, d, p)) return true;
+        if (kinematics::reaches_clear(kinematics::distal_pair(robot, lead), task.obstacles, d, p)) return true;
     }
     return false;
 }

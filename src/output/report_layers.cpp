@@ -6,13 +6,18 @@
 
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/kinematics/kinematics.h>
-#include <modsynth/output/reachable_space.h>
+#include <modsynth/kinematics/reachable_space.h>
 
 namespace modsynth::output::layers {
 namespace {
 
 using plot::n2;
 using plot::pt;
+using geometry::Vec2;
+using kinematics::distal_pair;
+using kinematics::DistalPair;
+using kinematics::reachable_space;
+using kinematics::ReachGrid;
 
 /// Pixels per reachable-space cell: fine enough to show the shape, coarse
 /// enough to keep the file small.

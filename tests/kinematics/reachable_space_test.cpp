@@ -2,12 +2,12 @@
 
 #include <vector>
 
-#include <modsynth/output/reachable_space.h>
+#include <modsynth/kinematics/reachable_space.h>
 
-using modsynth::output::DistalPair;
-using modsynth::output::reachable_space;
-using modsynth::output::reaches_clear;
-using modsynth::task::Obstacle;
+using modsynth::kinematics::DistalPair;
+using modsynth::kinematics::reachable_space;
+using modsynth::kinematics::reaches_clear;
+using Obstacle = modsynth::geometry::Disc;
 
 namespace {
 
@@ -57,7 +57,7 @@ TEST_CASE("a 3-joint arm's distal pair hinges at joint 2 behind a still link 1",
     robot.link_lengths = {0.25, 0.22, 0.20};
     robot.link_diameter = kDiameter;
     const std::vector<double> q{modsynth::geometry::kPi / 2, 0.0, 0.0};
-    const DistalPair pair = modsynth::output::distal_pair(robot, q);
+    const DistalPair pair = modsynth::kinematics::distal_pair(robot, q);
     CHECK(pair.origin.x() == Approx(0.1));
     CHECK(pair.origin.y() == Approx(0.25));
     CHECK(pair.r1 == 0.22);

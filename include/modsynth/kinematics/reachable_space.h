@@ -7,11 +7,11 @@
 #include <utility>
 #include <vector>
 
+#include <modsynth/geometry/disc.h>
 #include <modsynth/geometry/vec.h>
 #include <modsynth/kinematics/robot.h>
-#include <modsynth/task/task.h>
 
-namespace modsynth::output {
+namespace modsynth::kinematics {
 
 using geometry::Vec2;
 
@@ -27,12 +27,12 @@ struct DistalPair {
 
 /// The distal pair of a robot with its leading joints at `q` (only the
 /// first dof - 2 entries are used).
-DistalPair distal_pair(const kinematics::Robot& robot, std::span<const double> q);
+DistalPair distal_pair(const Robot& robot, std::span<const double> q);
 
 /// True when some elbow branch puts the end-effector at p with all links
 /// clear of the obstacles by half the diameter and the end-effector clear
 /// of all links but the last by the diameter.
-bool reaches_clear(const DistalPair& arm, const std::vector<task::Obstacle>& obstacles,
+bool reaches_clear(const DistalPair& arm, const std::vector<geometry::Disc>& obstacles,
                    double diameter, const Vec2& p);
 
 /// Cell centres min + (i + 1/2, j + 1/2) * cell, row-major from the bottom.
@@ -49,7 +49,7 @@ struct ReachGrid {
 };
 
 /// The grid over the rectangle [min, max] with square cells of side `cell`.
-ReachGrid reachable_space(const DistalPair& arm, const std::vector<task::Obstacle>& obstacles,
+ReachGrid reachable_space(const DistalPair& arm, const std::vector<geometry::Disc>& obstacles,
                           double diameter, const Vec2& min, const Vec2& max, double cell);
 
-}  // namespace modsynth::output
+}  // namespace modsynth::kinematics

@@ -1,4 +1,4 @@
-#include <modsynth/output/reachable_space.h>
+#include <modsynth/kinematics/reachable_space.h>
 
 #include <algorithm>
 #include <cmath>
@@ -6,26 +6,26 @@
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 
-namespace modsynth::output {
+namespace modsynth::kinematics {
 namespace {
 
-bool link_clear(const std::vector<task::Obstacle>& obstacles, double diameter, const Vec2& a,
+bool link_clear(const std::vector<geometry::Disc>& obstacles, double diameter, const Vec2& a,
                 const Vec2& b) {
-    const kinematics::ClearanceRule rule{diameter};
+    const ClearanceRule rule{diameter};
     for (const auto& o : obstacles) {
         if (rule.link_margin(o, a, b) < 0.0) return false;
     }
     return true;
 }
 
-bool branch_clear(const DistalPair& arm, const std::vector<task::Obstacle>& obstacles,
+bool branch_clear(const DistalPair& arm, const std::vector<geometry::Disc>& obstacles,
                   double diameter, const Vec2& p, int elbow) {
-    const auto ik = kinematics::inverse_two_link(arm.origin, arm.r1, arm.r2, p, elbow);
+    const auto ik = inverse_two_link(arm.origin, arm.r1, arm.r2, p, elbow);
     if (!ik) return false;
     const Vec2 knee = arm.origin + arm.r1 * geometry::unit(ik->phi1);
     if (!link_clear(obstacles, diameter, arm.origin, knee)) return false;
     if (!link_clear(obstacles, diameter, knee, p)) return false;
-    const kinematics::ClearanceRule rule{diameter};
+    const ClearanceRule rule{diameter};
     if (rule.self_margin(p, arm.origin, knee) < 0.0) return false;
     for (const auto& [a, b] : arm.fixed_links) {
         if (!link_clear(obstacles, diameter, a, b)) return false;
@@ -36,11 +36,11 @@ bool branch_clear(const DistalPair& arm, const std::vector<task::Obstacle>& obst
 
 }  // namespace
 
-DistalPair distal_pair(const kinematics::Robot& robot, std::span<const double> q) {
+DistalPair distal_pair(const Robot& robot, std::span<const double> q) {
     const int n = robot.dof();
     const std::vector<double> lengths(robot.link_lengths.begin(), robot.link_lengths.end() - 2);
     const std::vector<double> lead(q.begin(), q.begin() + (n - 2));
-    const std::vector<Vec2> joints = kinematics::forward(robot.base, lengths, lead);
+    const std::vector<Vec2> joints = forward(robot.base, lengths, lead);
     DistalPair arm;
     arm.origin = joints.back();
     arm.r1 = robot.link_lengths[n - 2];
@@ -50,7 +50,7 @@ DistalPair distal_pair(const kinematics::Robot& robot, std::span<const double> q
     return arm;
 }
 
-bool reaches_clear(const DistalPair& arm, const std::vector<task::Obstacle>& obstacles,
+bool reaches_clear(const DistalPair& arm, const std::vector<geometry::Disc>& obstacles,
                    double diameter, const Vec2& p) {
     return branch_clear(arm, obstacles, diameter, p, 1) ||
            branch_clear(arm, obstacles, diameter, p, -1);
@@ -63,7 +63,7 @@ double ReachGrid::fraction() const {
     return static_cast<double>(count) / static_cast<double>(reachable.size());
 }
 
-ReachGrid reachable_space(const DistalPair& arm, const std::vector<task::Obstacle>& obstacles,
+ReachGrid reachable_space(const DistalPair& arm, const std::vector<geometry::Disc>& obstacles,
                           double diameter, const Vec2& min, const Vec2& max, double cell) {
     ReachGrid g;
     g.min = min;
@@ -80,4 +80,4 @@ ReachGrid reachable_space(const DistalPair& arm, const std::vector<task::Obstacl
     return g;
 }
 
-}  // namespace modsynth::output
+}  // namespace modsynth::kinematics
