@@ -3,21 +3,13 @@
 // the server appear beside the field or part they name.
 
 import { dist, isPoint, lengthText, primitiveLength } from "./geometry.js";
-import { primitiveColour } from "./canvas.js";
-import { splitPart } from "./task_model.js";
+import { primitiveColour } from "./task_render.js";
+import { concerns, splitPart } from "./parts.js";
+import { DOCUMENT } from "./store.js";
+import { $, h } from "./dom.js";
 
-const $ = (id) => document.getElementById(id);
-
-function h(tag, attrs, ...children) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs || {})) {
-    if (k === "class") e.className = v;
-    else if (k.startsWith("on")) e.addEventListener(k.slice(2), v);
-    else if (v !== undefined && v !== null && v !== false) e.setAttribute(k, v === true ? "" : v);
-  }
-  for (const c of children.flat()) if (c !== null && c !== undefined) e.append(c);
-  return e;
-}
+const OBSTACLE_COLOUR = "#e45756";
+const REGION_COLOUR = "#888";
 
 const POINT_KEYS = {
   line: ["start", "end"],
@@ -28,29 +20,12 @@ const POINT_KEYS = {
 };
 
 export class Panel {
-  constructor(model, canvas) {
-    this.model = model;
-    this.canvas = canvas;
-    this.errors = new Map();
-    this.core = [];
-    model.addEventListener("change", () => this.render());
-    canvas.addEventListener("select", () => this.render());
+  constructor(store) {
+    this.store = store;
+    this.model = store.model;
+    for (const type of ["doc", "selection", "validation", "core"]) store.on(type, () => this.render());
     this.bindTaskFields();
     this.render();
-  }
-
-  setErrors(errors) { this.errors = errors; this.render(); }
-  setCore(core) { this.core = core || []; this.render(); }
-
-  /// Messages about a part itself or anything inside it.
-  errorsOf(part) {
-    const out = [];
-    for (const [p, m] of this.errors) if (p === part || p.startsWith(part + ".") || p.startsWith(part + "[")) out.push(m);
-    return out;
-  }
-
-  inCore(part) {
-    return this.core.includes(part) || this.core.includes(part.replace(/\[\d+\]$/, ""));
   }
 
   render() {
@@ -66,9 +41,9 @@ export class Panel {
     const list = $("parts");
     const rows = [];
     this.model.trajectory.forEach((p, j) => rows.push(this.partRow(`trajectory[${j}]`, primitiveColour(j), this.primitiveSummary(p))));
-    this.model.obstacles.forEach((o, i) => rows.push(this.partRow(`obstacles[${i}]`, "#e45756",
+    this.model.obstacles.forEach((o, i) => rows.push(this.partRow(`obstacles[${i}]`, OBSTACLE_COLOUR,
       o && isPoint(o.center) ? `disc at (${o.center.map((v) => v.toFixed(3)).join(", ")}), r ${lengthText(o.radius)}` : "malformed")));
-    this.model.regions.forEach((r, i) => rows.push(this.partRow(`base_regions[${i}]`, "#888",
+    this.model.regions.forEach((r, i) => rows.push(this.partRow(`base_regions[${i}]`, REGION_COLOUR,
       r && isPoint(r.min) && isPoint(r.max)
         ? `${lengthText(r.max[0] - r.min[0])} x ${lengthText(r.max[1] - r.min[1])}` : "malformed")));
     if (!rows.length) rows.push(h("li", { class: "note" }, "Empty: pick Line, Arc or Circle and click on the canvas."));
@@ -83,21 +58,16 @@ export class Panel {
   }
 
   partRow(part, colour, summary) {
-    const errors = this.errorsOf(part);
-    const cls = [part === this.canvas.selected ? "selected" : "", errors.length ? "has-error" : ""].join(" ");
-    return h("li", { class: cls, "data-part": part, onclick: () => this.canvas.select(part) },
+    const errors = this.store.errorsAbout(part);
+    const cls = [part === this.store.selection ? "selected" : "", errors.length ? "has-error" : ""].join(" ");
+    return h("li", { class: cls, "data-part": part, onclick: () => this.store.select(part) },
       h("span", { class: "swatch", style: `background:${colour}` }),
       h("span", { class: "part-name" }, part),
       h("span", { class: "summary" }, summary),
-      this.inCore(part) ? h("span", { class: "core-badge" }, "conflict") : null,
+      this.store.inCore(part) ? h("span", { class: "core-badge" }, "conflict") : null,
       h("button", { type: "button", class: "delete", title: "Delete " + part,
-                    onclick: (e) => { e.stopPropagation(); this.remove(part); } }, "×"),
+                    onclick: (e) => { e.stopPropagation(); this.store.remove(part); } }, "×"),
       errors.map((m) => h("span", { class: "part-error" }, m)));
-  }
-
-  remove(part) {
-    this.model.remove(part);
-    this.canvas.select(null);
   }
 
   // ------------------------------------------------------------ selection
@@ -106,7 +76,7 @@ export class Panel {
   /// message), so that typing and tabbing through it are not interrupted;
   /// otherwise only the values of the fields not being edited follow the task.
   renderSelection() {
-    const part = this.canvas.selected;
+    const part = this.store.selection;
     const item = part ? this.model.item(part) : undefined;
     const form = $("selection-form");
     $("selection-title").textContent = part ? "Selection: " + part : "Selection";
@@ -115,8 +85,7 @@ export class Panel {
       form.replaceChildren(h("p", { class: "note" }, "Click a part on the canvas or in the list below to edit its numbers."));
       return;
     }
-    const errors = [...this.errors].filter(([p]) => p === part || p.startsWith(part + "."));
-    const signature = JSON.stringify([part, item.type, errors]);
+    const signature = JSON.stringify([part, item.type, this.store.errorsAbout(part)]);
     if (form.dataset.signature !== signature) {
       const active = form.contains(document.activeElement) ? document.activeElement : null;
       form.dataset.signature = signature;
@@ -155,9 +124,9 @@ export class Panel {
         onchange: (e) => this.model.setField(part, "radius", parseFloat(e.target.value)) }));
       this.fieldErrors(grid, `${part}.radius`);
     }
-    const own = [...this.errors].filter(([p]) => p === part).map(([, m]) => m);
+    const own = [...this.store.errors].filter(([p]) => p === part).map(([, m]) => m);
     return [...own.map((m) => h("p", { class: "error-text" }, m)), grid,
-            h("button", { type: "button", onclick: () => this.remove(part) }, "Delete " + part)];
+            h("button", { type: "button", onclick: () => this.store.remove(part) }, "Delete " + part)];
   }
 
   refreshValues(form, item) {
@@ -178,9 +147,7 @@ export class Panel {
   }
 
   fieldErrors(grid, path) {
-    for (const [p, m] of this.errors) {
-      if (p === path || p.startsWith(path + "[")) grid.append(h("div", { class: "field-error" }, m));
-    }
+    for (const m of this.store.errorsAbout(path)) grid.append(h("div", { class: "field-error" }, m));
   }
 
   editPoint(part, key, grid) {
@@ -217,9 +184,9 @@ export class Panel {
     const messages = [];
     for (const e of document.querySelectorAll("#task-box [data-part]")) {
       const part = e.dataset.part;
-      const mine = [...this.errors].filter(([p]) => p === part || p.startsWith(part + "[")).map(([, m]) => m);
+      const mine = this.store.errorsAbout(part);
       e.classList.toggle("bad", mine.length > 0);
-      e.classList.toggle("core-field", this.core.includes(part));
+      e.classList.toggle("core-field", this.store.core.includes(part));
       messages.push(...mine);
     }
     $("robot-errors").textContent = messages.join("\n");
@@ -228,7 +195,7 @@ export class Panel {
   /// Messages about the whole document or a part the canvas cannot show.
   renderDocumentErrors() {
     const fields = [...document.querySelectorAll("#task-box [data-part]")].map((e) => e.dataset.part);
-    const shown = (p) => splitPart(p) || fields.some((f) => p === f || p.startsWith(f + "["));
-    $("document-errors").textContent = [...this.errors].filter(([p]) => !shown(p)).map(([, m]) => m).join("\n");
+    const shown = (p) => p !== DOCUMENT && (splitPart(p) || fields.some((f) => concerns(p, f)));
+    $("document-errors").textContent = [...this.store.errors].filter(([p]) => !shown(p)).map(([, m]) => m).join("\n");
   }
 }

@@ -5,24 +5,19 @@
 // its core, explanation and suggested changes. Closing the page closes the
 // stream, which cancels the solve on the server.
 
+import * as api from "./api.js";
 import { lengthText } from "./geometry.js";
+import { $, h } from "./dom.js";
 
-const $ = (id) => document.getElementById(id);
-
-function h(tag, attrs, ...children) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs || {})) {
-    if (k === "class") e.className = v;
-    else if (v !== undefined && v !== null) e.setAttribute(k, v);
-  }
-  for (const c of children.flat()) if (c !== null && c !== undefined) e.append(c);
-  return e;
-}
-
-const DOWNLOADS = [
-  ["solution.json", "solution JSON"], ["robot.urdf", "URDF"], ["trajectory.csv", "CSV"],
-  ["report.html", "report"], ["build-sheet.md", "build sheet"], ["solve.log", "log"],
-];
+// How the panel names the files a job offers, in the order it lists them
+// (the task itself is not offered: the page holds it).
+const DOWNLOAD_LABELS = {
+  "solution.json": "solution JSON", "robot.urdf": "URDF", "trajectory.csv": "CSV",
+  "report.html": "report", "build-sheet.md": "build sheet", "solve.log": "log",
+};
+// Results that come with the report's drawing.
+const REPORTED = ["solved", "infeasible", "unknown"];
+const CLOCK_MS = 100;
 
 /// The report is laid out for a page of its own; in the Result tab its plot
 /// (an SVG with a viewBox, so it scales) should fit the frame's height.
@@ -35,9 +30,9 @@ function fitReport(frame) {
   doc.head.append(style);
 }
 
-export class Synthesis extends EventTarget {
-  constructor() {
-    super();
+export class Synthesis {
+  constructor(store) {
+    this.store = store;
     this.job = null;
     this.events = null;
     this.clock = null;
@@ -47,10 +42,7 @@ export class Synthesis extends EventTarget {
 
   get running() { return this.job !== null && !this.job.done; }
 
-  setState(state) {
-    document.body.dataset.synthesis = state;
-    this.dispatchEvent(new CustomEvent("state", { detail: state }));
-  }
+  setState(state) { this.store.setSynthesis(state); }
 
   async start(doc, timeLimit) {
     if (this.running) return;
@@ -58,19 +50,16 @@ export class Synthesis extends EventTarget {
     $("run-box").hidden = false;
     $("run-stage").textContent = "starting";
     this.setState("starting");
-    let res, body;
+    let status, body;
     try {
-      const query = Number.isFinite(timeLimit) && timeLimit > 0 ? "?time_limit=" + timeLimit : "";
-      res = await fetch("/api/solve" + query, {
-        method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(doc) });
-      body = await res.json().catch(() => ({ error: res.statusText }));
+      ({ status, body } = await api.solve(doc, timeLimit));
     } catch (e) {
       return this.fail("the server cannot be reached: " + e.message);
     }
-    if (res.status !== 202) {
-      if (res.status === 422) this.dispatchEvent(new CustomEvent("invalid", { detail: body }));
-      const prefix = res.status === 429 ? "the server is busy: " : "";
-      return this.fail(prefix + (body.error || "HTTP " + res.status));
+    if (status !== 202) {
+      if (status === 422) this.store.setError(body.part, body.error);
+      const prefix = status === 429 ? "the server is busy: " : "";
+      return this.fail(prefix + (body.error || "HTTP " + status));
     }
     this.follow(body);
   }
@@ -84,7 +73,7 @@ export class Synthesis extends EventTarget {
     $("report").removeAttribute("src");
     $("run-bar").style.width = "0";
     $("run-clock").textContent = "";
-    this.dispatchEvent(new CustomEvent("core", { detail: [] }));
+    this.store.setCore([]);
   }
 
   fail(message, stage = "not started") {
@@ -117,15 +106,15 @@ export class Synthesis extends EventTarget {
       }
     });
     this.events.addEventListener("open", () => { $("run-error").textContent = ""; });
-    this.clock = setInterval(() => this.showClock(), 100);
+    this.clock = setInterval(() => this.showClock(), CLOCK_MS);
   }
 
   async cancel() {
     if (!this.running) return;
     $("cancel").disabled = true;
     try {
-      const res = await fetch(this.job.links.cancel, { method: "POST" });
-      if (res.ok) this.update(await res.json());
+      const job = await api.cancel(this.job);
+      if (job) this.update(job);
     } catch (e) {
       $("run-error").textContent = "cancel failed: " + e.message;
     }
@@ -165,7 +154,7 @@ export class Synthesis extends EventTarget {
     if (job.result && job.result.status === "infeasible") this.showSuggestions(job);
     if (job.status === "cancelled") $("run-error").textContent = job.cancel_reason;
     else if (!job.result) $("run-error").textContent = job.status;
-    else if (!["solved", "infeasible", "unknown"].includes(job.result.status)) $("run-error").textContent = job.result.message;
+    else if (!REPORTED.includes(job.result.status)) $("run-error").textContent = job.result.message;
     this.setState(job.status);
     this.buttons();
   }
@@ -197,10 +186,9 @@ export class Synthesis extends EventTarget {
     const table = h("table", { id: "summary-table" }, rows.map(([k, v]) => h("tr", {}, h("th", {}, k), h("td", {}, v))));
     $("result-summary").replaceChildren(table);
     if (r.status === "solved") this.addRobotRows(job, table);
-    const report = job.links.self + "/files/report.html";
-    if (["solved", "infeasible", "unknown"].includes(r.status)) this.showReport(report, r.status === "solved");
+    if (REPORTED.includes(r.status)) this.showReport(api.fileUrl(job, "report.html"), r.status === "solved");
     if (r.status !== "solved") {
-      this.dispatchEvent(new CustomEvent("core", { detail: r.core }));
+      this.store.setCore(r.core);
       this.showExplanation(r);
     }
   }
@@ -208,7 +196,7 @@ export class Synthesis extends EventTarget {
   /// Link lengths and base, from the solution itself.
   async addRobotRows(job, table) {
     try {
-      const s = await (await fetch(job.links.self + "/files/solution.json")).json();
+      const s = await (await fetch(api.fileUrl(job, "solution.json"))).json();
       const links = s.robot.link_lengths.map(lengthText).join(" + ");
       table.append(h("tr", {}, h("th", {}, "Links"), h("td", { id: "summary-links" }, links)),
                    h("tr", {}, h("th", {}, "Base"), h("td", {}, `(${s.robot.base.map((v) => v.toFixed(3)).join(", ")}) m`)));
@@ -224,7 +212,7 @@ export class Synthesis extends EventTarget {
     frame.onload = () => fitReport(frame);
     frame.src = url + (open ? "#t=0&play" : "");
     $("tab-result").disabled = false;
-    if (open) this.dispatchEvent(new CustomEvent("show", { detail: "result" }));
+    if (open) this.store.setView("result");
   }
 
   showExplanation(r) {
@@ -253,7 +241,7 @@ export class Synthesis extends EventTarget {
   }
 
   showDownloads(job) {
-    const links = DOWNLOADS.filter(([name]) => job.files[name]).map(([name, label]) =>
+    const links = Object.entries(DOWNLOAD_LABELS).filter(([name]) => job.files[name]).map(([name, label]) =>
       h("a", { href: job.files[name] + "?download=1", download: name, "data-file": name }, label));
     $("downloads").replaceChildren(...links);
   }
