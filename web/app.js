@@ -1,14 +1,16 @@
-// The editor page: one store holds the state; the canvas, the panel, the
-// toolbar, validation and synthesis each follow it and change it only
-// through its setters. This file makes them and gives the toolbar its
+// The editor page: one store holds the state; the canvas, the panel's
+// parts, the toolbar, validation and synthesis each follow it and change it
+// only through its setters. This file makes them and gives the toolbar its
 // commands.
 
 import * as api from "./api.js";
 import * as files from "./files.js";
 import { EditorCanvas } from "./canvas.js";
-import { Panel } from "./panel.js";
+import { PartList } from "./part_list.js";
+import { SelectionForm } from "./selection_form.js";
 import { Store } from "./store.js";
 import { Synthesis } from "./synthesis.js";
+import { TaskFields } from "./task_fields.js";
 import { TaskModel, emptyTask, exampleTask } from "./task_model.js";
 import { Toolbar } from "./toolbar.js";
 import { Validation } from "./validation.js";
@@ -19,9 +21,13 @@ const store = new Store(model);
 const canvas = new EditorCanvas($("canvas"), store, { hint: $("hint"), cursor: $("cursor") });
 const validation = new Validation(store);
 const synthesis = new Synthesis(store);
-new Panel(store);
+new SelectionForm(store);
+new PartList(store);
+new TaskFields(store);
 
 function setTool(tool) { store.setTool(tool); }
+
+const newTask = () => emptyTask(store.info ? store.info.robot_defaults : undefined);
 
 function loadDocument(doc, tool) {
   store.load(doc);
@@ -43,7 +49,7 @@ new Toolbar(store, {
   redo: () => model.redo(),
   fit: () => canvas.fit(),
   snap: (on) => canvas.setSnap(on),
-  newTask: () => loadDocument(emptyTask(), "line"),
+  newTask: () => loadDocument(newTask(), "line"),
   example: () => loadDocument(exampleTask()),
   open: openFile,
   save: () => files.save(store.doc),
@@ -55,16 +61,16 @@ new Toolbar(store, {
 });
 
 async function main() {
-  store.on("doc", () => files.keep(store.doc));
-  model.reset(files.restore() || emptyTask());
-  canvas.fit();
-  setTool(model.trajectory.length ? "select" : "line");
-  store.setSynthesis("idle");
   try {
     store.setInfo(await api.info());
   } catch (e) {
-    // The page works without: solves then get the server's own limit.
+    // The page works without: the server applies its own limits and defaults.
   }
+  store.on("doc", () => files.keep(store.doc));
+  model.reset(files.restore() || newTask());
+  canvas.fit();
+  setTool(model.trajectory.length ? "select" : "line");
+  store.setSynthesis("idle");
   // For scripts driving the page (the end-to-end test among them).
   window.modsynth = { store, model, canvas, synthesis, clientPoint: (p) => canvas.clientPoint(p), setTool, loadDocument };
   document.body.dataset.ready = "true";

@@ -7,16 +7,17 @@
 import { isPoint, primitiveEnd, roundPoint } from "./geometry.js";
 import { partName, splitPart } from "./parts.js";
 
-const DEFAULT_ROBOT = { dof: [2, 3], link_diameter: 0.03175, min_link_length: 0.05, max_link_length: 1.0 };
-
-export function emptyTask() {
+/// A task with nothing in it yet. `robot` is what its robot block starts
+/// as (the server's defaults, from GET /api/info); without it the block is
+/// empty and the server applies the same defaults.
+export function emptyTask(robot = {}) {
   return {
     format: "modsynth-task/1",
     name: "untitled",
     trajectory: [],
     obstacles: [],
     base_regions: [],
-    robot: { ...DEFAULT_ROBOT, dof: [...DEFAULT_ROBOT.dof] },
+    robot: JSON.parse(JSON.stringify(robot)),
   };
 }
 
@@ -32,7 +33,7 @@ export function exampleTask() {
     ],
     obstacles: [{ center: [0.30, 0.40], radius: 0.05 }],
     base_regions: [{ min: [-0.10, -0.10], max: [0.10, 0.10] }],
-    robot: { ...DEFAULT_ROBOT, dof: [2, 3] },
+    robot: { dof: [2, 3], link_diameter: 0.03175, min_link_length: 0.05, max_link_length: 1.0 },
   };
 }
 

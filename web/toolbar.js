@@ -21,7 +21,6 @@ export class Toolbar {
     store.on("validation", (v) => this.showValidity(v));
     store.on("view", (view) => this.showView(view));
     store.on("synthesis", (state) => { document.body.dataset.synthesis = state; });
-    store.on("info", (info) => this.showLimits(info));
   }
 
   bindButtons() {
@@ -85,14 +84,5 @@ export class Toolbar {
     $("editor-view").hidden = view !== "editor";
     $("result-view").hidden = view !== "result";
     for (const b of document.querySelectorAll("#tabs button")) b.setAttribute("aria-selected", String(b.dataset.view === view));
-  }
-
-  /// A solve may ask for at most the server's time limit, and gets it
-  /// unless it asks for less.
-  showLimits(info) {
-    const field = $("time-limit");
-    if (!Number.isFinite(info.time_limit)) return;
-    field.max = info.time_limit;
-    field.value = info.time_limit;
   }
 }

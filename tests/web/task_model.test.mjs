@@ -118,6 +118,16 @@ test("a loaded task serialises back to the same JSON", () => {
   assert.ok(!model.canUndo);
 });
 
+test("a new task's robot starts from the defaults it is given", () => {
+  const defaults = { dof: [2, 3], max_link_length: 1.0 };
+  const task = emptyTask(defaults);
+  assert.deepEqual(task.robot, defaults);
+  task.robot.dof.push(4);   // a copy: the defaults stay as they were
+  assert.deepEqual(defaults.dof, [2, 3]);
+  assert.deepEqual(emptyTask().robot, {});
+  assert.deepEqual(emptyTask().trajectory, []);
+});
+
 test("robot settings: set, and an empty value falls back to the default", () => {
   const model = new TaskModel();
   model.setRobot("max_link_length", 0.5);
