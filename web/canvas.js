@@ -92,7 +92,7 @@ export class EditorCanvas {
     el.addEventListener("pointermove", (e) => this.onMove(e));
     el.addEventListener("pointerup", (e) => this.onUp(e));
     el.addEventListener("pointerleave", () => {
-      this.drawTool.mouse = null;
+      this.drawTool.hover(null);
       this.drawTool.render();
       this.showCursor(null);
     });
@@ -135,7 +135,7 @@ export class EditorCanvas {
                      item: JSON.parse(JSON.stringify(item || {})), moved: false };
       return;
     }
-    this.press = { kind: "draw", from: q, points: this.drawTool.pending.length };
+    this.press = { kind: "draw", from: q, points: this.drawTool.clicks };
     this.drawTool.click(this.snap(w, q), e.shiftKey);
     this.showHint();
   }
@@ -143,7 +143,7 @@ export class EditorCanvas {
   onMove(e) {
     const q = this.local(e), w = this.view.toWorld(q);
     const mouse = this.store.tool === "select" ? w : this.snap(w, q);
-    this.drawTool.mouse = mouse;
+    this.drawTool.hover(mouse);
     this.showCursor(mouse);
     const press = this.press;
     if (press && (press.moved || dist(q, press.from) > DRAG_PIXELS)) {
@@ -165,7 +165,7 @@ export class EditorCanvas {
     this.svg.classList.remove("panning");
     if (!press || press.kind !== "draw" || !press.moved) return;
     // Press, drag, release draws an obstacle or region in one gesture.
-    if (["obstacle", "region"].includes(this.store.tool) && this.drawTool.pending.length === 1 && press.points === 0) {
+    if (["obstacle", "region"].includes(this.store.tool) && this.drawTool.clicks === 1 && press.points === 0) {
       const q = this.local(e);
       this.drawTool.click(this.snap(this.view.toWorld(q), q), e.shiftKey);
       this.showHint();

@@ -25,7 +25,11 @@ export class DrawTool {
   }
 
   get tool() { return this.store.tool; }
+  get clicks() { return this.pending.length; }
   get drawing() { return this.pending.length > 0; }
+
+  /// The cursor is at task point p (snapped), or off the canvas (null).
+  hover(p) { this.mouse = p; }
 
   /// Forgets the points clicked so far; false when there were none.
   cancel() {
