@@ -140,8 +140,7 @@ def test_page_and_info():
         status, headers, body = s.request("GET", "/")
         check(status == 200 and b"<svg id=\"canvas\"" in body, "GET / serves the editor page")
         check(headers.get("Content-Type", "").startswith("text/html"), "page is text/html")
-        for asset in ["index.html", "app.js", "canvas.js", "panel.js", "synthesis.js", "task_model.js",
-                      "geometry.js", "style.css"]:
+        for asset in sorted(os.listdir(os.path.join(ROOT, "web"))):
             status, _, body = s.request("GET", "/" + asset)
             check(status == 200 and len(body) > 100, "GET /%s" % asset)
             # Works offline: nothing fetched from elsewhere (the SVG namespace is a name, not a fetch).
@@ -150,6 +149,8 @@ def test_page_and_info():
         status, _, info = s.json("GET", "/api/info")
         check(status == 200 and info.get("max_solves") == 2 and info.get("max_body") == 1 << 20,
               "GET /api/info: %s" % info)
+        check(info.get("robot_defaults", {}).get("dof") == [2, 3] and info["robot_defaults"].get("max_link_length") == 1.0,
+              "GET /api/info names the robot defaults: %s" % info)
 
 
 def test_body_limit():

@@ -84,6 +84,21 @@ export function samplePrimitive(p) {
   return out;
 }
 
+/// Distance from p to the segment a-b.
+export function distToSegment(p, a, b) {
+  const dx = b[0] - a[0], dy = b[1] - a[1];
+  const len2 = dx * dx + dy * dy;
+  const t = len2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2)) : 0;
+  return dist(p, [a[0] + t * dx, a[1] + t * dy]);
+}
+
+/// Distance from p to a polyline; Infinity when it has no segment.
+export function distToPolyline(p, points) {
+  let best = Infinity;
+  for (let i = 1; i < points.length; ++i) best = Math.min(best, distToSegment(p, points[i - 1], points[i]));
+  return best;
+}
+
 /// The tangent direction at the end of a primitive's samples (for arrows).
 export function endDirection(points) {
   if (points.length < 2) return null;

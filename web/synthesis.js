@@ -1,43 +1,18 @@
-// Synthesis from the page: POST /api/solve, then the job's progress stream
-// (stage, elapsed time) until it ends, and its result: the report (robot
-// animated along the path, reachable space, swept regions) in the Result
-// tab, the figures and downloads in the panel, and for an infeasible task
-// its core, explanation and suggested changes. Closing the page closes the
-// stream, which cancels the solve on the server.
+// A solve from the page: POST /api/solve, then the job's progress stream
+// (stage, elapsed time) until it ends, with a Cancel button; its result
+// goes to the result view. Closing the page closes the stream, which
+// cancels the solve on the server.
 
-import { lengthText } from "./geometry.js";
+import * as api from "./api.js";
+import { REPORTED, ResultView } from "./result_view.js";
+import { $ } from "./dom.js";
 
-const $ = (id) => document.getElementById(id);
+const CLOCK_MS = 100;
 
-function h(tag, attrs, ...children) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs || {})) {
-    if (k === "class") e.className = v;
-    else if (v !== undefined && v !== null) e.setAttribute(k, v);
-  }
-  for (const c of children.flat()) if (c !== null && c !== undefined) e.append(c);
-  return e;
-}
-
-const DOWNLOADS = [
-  ["solution.json", "solution JSON"], ["robot.urdf", "URDF"], ["trajectory.csv", "CSV"],
-  ["report.html", "report"], ["build-sheet.md", "build sheet"], ["solve.log", "log"],
-];
-
-/// The report is laid out for a page of its own; in the Result tab its plot
-/// (an SVG with a viewBox, so it scales) should fit the frame's height.
-function fitReport(frame) {
-  const doc = frame.contentDocument;
-  if (!doc || !doc.head) return;
-  const style = doc.createElement("style");
-  style.textContent = "body { margin: 8px 14px; } h1 { font-size: 18px; } header .note { margin: 2px 0 6px; }" +
-    " #plot { width: auto; height: calc(100vh - 150px); min-height: 320px; max-width: 100%; }";
-  doc.head.append(style);
-}
-
-export class Synthesis extends EventTarget {
-  constructor() {
-    super();
+export class Synthesis {
+  constructor(store) {
+    this.store = store;
+    this.results = new ResultView(store);
     this.job = null;
     this.events = null;
     this.clock = null;
@@ -47,10 +22,7 @@ export class Synthesis extends EventTarget {
 
   get running() { return this.job !== null && !this.job.done; }
 
-  setState(state) {
-    document.body.dataset.synthesis = state;
-    this.dispatchEvent(new CustomEvent("state", { detail: state }));
-  }
+  setState(state) { this.store.setSynthesis(state); }
 
   async start(doc, timeLimit) {
     if (this.running) return;
@@ -58,19 +30,16 @@ export class Synthesis extends EventTarget {
     $("run-box").hidden = false;
     $("run-stage").textContent = "starting";
     this.setState("starting");
-    let res, body;
+    let status, body;
     try {
-      const query = Number.isFinite(timeLimit) && timeLimit > 0 ? "?time_limit=" + timeLimit : "";
-      res = await fetch("/api/solve" + query, {
-        method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(doc) });
-      body = await res.json().catch(() => ({ error: res.statusText }));
+      ({ status, body } = await api.solve(doc, timeLimit));
     } catch (e) {
       return this.fail("the server cannot be reached: " + e.message);
     }
-    if (res.status !== 202) {
-      if (res.status === 422) this.dispatchEvent(new CustomEvent("invalid", { detail: body }));
-      const prefix = res.status === 429 ? "the server is busy: " : "";
-      return this.fail(prefix + (body.error || "HTTP " + res.status));
+    if (status !== 202) {
+      if (status === 422) this.store.setError(body.part, body.error);
+      const prefix = status === 429 ? "the server is busy: " : "";
+      return this.fail(prefix + (body.error || "HTTP " + status));
     }
     this.follow(body);
   }
@@ -79,12 +48,11 @@ export class Synthesis extends EventTarget {
     this.closeStream();
     this.job = null;
     this.shownResult = false;
-    for (const id of ["run-error", "result-summary", "explanation", "downloads"]) $(id).replaceChildren();
-    $("tab-result").disabled = true;
-    $("report").removeAttribute("src");
+    $("run-error").replaceChildren();
+    this.results.clear();
     $("run-bar").style.width = "0";
     $("run-clock").textContent = "";
-    this.dispatchEvent(new CustomEvent("core", { detail: [] }));
+    this.store.setCore([]);
   }
 
   fail(message, stage = "not started") {
@@ -117,15 +85,15 @@ export class Synthesis extends EventTarget {
       }
     });
     this.events.addEventListener("open", () => { $("run-error").textContent = ""; });
-    this.clock = setInterval(() => this.showClock(), 100);
+    this.clock = setInterval(() => this.showClock(), CLOCK_MS);
   }
 
   async cancel() {
     if (!this.running) return;
     $("cancel").disabled = true;
     try {
-      const res = await fetch(this.job.links.cancel, { method: "POST" });
-      if (res.ok) this.update(await res.json());
+      const job = await api.cancel(this.job);
+      if (job) this.update(job);
     } catch (e) {
       $("run-error").textContent = "cancel failed: " + e.message;
     }
@@ -153,7 +121,7 @@ export class Synthesis extends EventTarget {
     $("run-stage").textContent = job.done ? "finished: " + job.status : phase + job.stage;
     if (job.result && !this.shownResult) {
       this.shownResult = true;
-      this.showResult(job);
+      this.results.showResult(job);
     }
     if (job.done) this.finish(job);
   }
@@ -161,11 +129,11 @@ export class Synthesis extends EventTarget {
   finish(job) {
     this.closeStream();
     this.showClock();
-    this.showDownloads(job);
-    if (job.result && job.result.status === "infeasible") this.showSuggestions(job);
+    this.results.showDownloads(job);
+    if (job.result && job.result.status === "infeasible") this.results.showSuggestions(job);
     if (job.status === "cancelled") $("run-error").textContent = job.cancel_reason;
     else if (!job.result) $("run-error").textContent = job.status;
-    else if (!["solved", "infeasible", "unknown"].includes(job.result.status)) $("run-error").textContent = job.result.message;
+    else if (!REPORTED.includes(job.result.status)) $("run-error").textContent = job.result.message;
     this.setState(job.status);
     this.buttons();
   }
@@ -180,81 +148,5 @@ export class Synthesis extends EventTarget {
   buttons() {
     $("cancel").disabled = !this.running;
     $("synthesize").disabled = this.running;
-  }
-
-  // -------------------------------------------------------------- results
-
-  showResult(job) {
-    const r = job.result;
-    const rows = [["Status", h("span", { class: "status-badge " + r.status }, r.status)]];
-    if (r.status === "solved") {
-      rows.push(["Joints", String(r.dof)], ["Total link length", lengthText(r.total_link_length)],
-                ["Clearance margin", r.clearance_margin === null ? "no obstacles" : lengthText(r.clearance_margin)]);
-    } else if (r.message) {
-      rows.push(["Why", r.message]);
-    }
-    rows.push(["Solve time", r.seconds.toFixed(2) + " s"]);
-    const table = h("table", { id: "summary-table" }, rows.map(([k, v]) => h("tr", {}, h("th", {}, k), h("td", {}, v))));
-    $("result-summary").replaceChildren(table);
-    if (r.status === "solved") this.addRobotRows(job, table);
-    const report = job.links.self + "/files/report.html";
-    if (["solved", "infeasible", "unknown"].includes(r.status)) this.showReport(report, r.status === "solved");
-    if (r.status !== "solved") {
-      this.dispatchEvent(new CustomEvent("core", { detail: r.core }));
-      this.showExplanation(r);
-    }
-  }
-
-  /// Link lengths and base, from the solution itself.
-  async addRobotRows(job, table) {
-    try {
-      const s = await (await fetch(job.links.self + "/files/solution.json")).json();
-      const links = s.robot.link_lengths.map(lengthText).join(" + ");
-      table.append(h("tr", {}, h("th", {}, "Links"), h("td", { id: "summary-links" }, links)),
-                   h("tr", {}, h("th", {}, "Base"), h("td", {}, `(${s.robot.base.map((v) => v.toFixed(3)).join(", ")}) m`)));
-    } catch (e) {
-      // The summary above already says the essentials.
-    }
-  }
-
-  /// The report's own drawing, animated when there is a motion ("#t=0&play":
-  /// a bare "#play" would scroll to the report's Play button).
-  showReport(url, open) {
-    const frame = $("report");
-    frame.onload = () => fitReport(frame);
-    frame.src = url + (open ? "#t=0&play" : "");
-    $("tab-result").disabled = false;
-    if (open) this.dispatchEvent(new CustomEvent("show", { detail: "result" }));
-  }
-
-  showExplanation(r) {
-    const items = (r.core || []).map((p) => h("li", { "data-part": p }, h("code", {}, p)));
-    $("explanation").replaceChildren(
-      h("p", { id: "explanation-message" }, r.message || "No robot was found."),
-      items.length ? h("p", {}, "The parts in conflict, outlined in red on the canvas:") : null,
-      items.length ? h("ul", { id: "core-list" }, items) : null,
-      r.status === "infeasible" ? h("p", { id: "suggestions-status", class: "note" }, "Looking for the smallest changes that remove the conflict…") : null);
-  }
-
-  showSuggestions(job) {
-    const box = $("explanation");
-    const status = $("suggestions-status");
-    if (status) status.remove();
-    const ex = job.explanation;
-    const suggestions = ex && Array.isArray(ex.suggestions) ? ex.suggestions : [];
-    if (suggestions.length) {
-      box.append(h("p", {}, "Changes that would remove the conflict (each re-checked):"),
-        h("ul", { id: "suggestions" }, suggestions.map((s) =>
-          h("li", { "data-part": s.part }, h("strong", {}, s.change), h("br"), h("span", { class: "note" }, "then: " + s.outcome)))));
-    } else {
-      box.append(h("p", { id: "suggestions", class: "note" },
-        job.explanation_note || "No single change of one part removes the conflict."));
-    }
-  }
-
-  showDownloads(job) {
-    const links = DOWNLOADS.filter(([name]) => job.files[name]).map(([name, label]) =>
-      h("a", { href: job.files[name] + "?download=1", download: name, "data-file": name }, label));
-    $("downloads").replaceChildren(...links);
   }
 }

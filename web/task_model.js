@@ -1,20 +1,23 @@
 // The task being edited: a modsynth-task/1 document kept as plain JSON, so
 // that what is saved, validated and solved is exactly what is shown. Every
 // edit goes through change(), which records the document before it for
-// undo. Listeners hear "change" after every edit, undo, redo and load.
+// undo. Listeners hear "change" after every edit, undo, redo and load (the
+// store passes it on to the page).
 
 import { isPoint, primitiveEnd, roundPoint } from "./geometry.js";
+import { partName, splitPart } from "./parts.js";
 
-const DEFAULT_ROBOT = { dof: [2, 3], link_diameter: 0.03175, min_link_length: 0.05, max_link_length: 1.0 };
-
-export function emptyTask() {
+/// A task with nothing in it yet. `robot` is what its robot block starts
+/// as (the server's defaults, from GET /api/info); without it the block is
+/// empty and the server applies the same defaults.
+export function emptyTask(robot = {}) {
   return {
     format: "modsynth-task/1",
     name: "untitled",
     trajectory: [],
     obstacles: [],
     base_regions: [],
-    robot: { ...DEFAULT_ROBOT, dof: [...DEFAULT_ROBOT.dof] },
+    robot: JSON.parse(JSON.stringify(robot)),
   };
 }
 
@@ -30,16 +33,24 @@ export function exampleTask() {
     ],
     obstacles: [{ center: [0.30, 0.40], radius: 0.05 }],
     base_regions: [{ min: [-0.10, -0.10], max: [0.10, 0.10] }],
-    robot: { ...DEFAULT_ROBOT, dof: [2, 3] },
+    robot: { dof: [2, 3], link_diameter: 0.03175, min_link_length: 0.05, max_link_length: 1.0 },
   };
 }
 
 const HISTORY_LIMIT = 200;
 
-/// "trajectory[2]" -> ["trajectory", 2]; null for other names.
-export function splitPart(part) {
-  const m = /^(trajectory|obstacles|base_regions)\[(\d+)\]/.exec(part || "");
-  return m ? [m[1], +m[2]] : null;
+/// Vertex k of a path is where primitive k starts and primitive k-1 ends.
+/// A circle starts and ends at one point, so its two vertices are one: the
+/// move carries through it.
+export function moveVertex(doc, k, p) {
+  const t = doc.trajectory;
+  let lo = k, hi = k;
+  while (lo > 0 && t[lo - 1] && t[lo - 1].type === "circle") --lo;
+  while (hi < t.length && t[hi] && t[hi].type === "circle") ++hi;
+  for (let j = lo; j <= hi; ++j) {
+    if (j < t.length && t[j]) t[j].start = [...p];
+    if (j > 0 && t[j - 1] && t[j - 1].type !== "circle") t[j - 1].end = [...p];
+  }
 }
 
 export class TaskModel extends EventTarget {
@@ -61,6 +72,14 @@ export class TaskModel extends EventTarget {
     this.redoStack = [];
     this.ensureLists();
     edit(this.doc);
+    this.notify();
+  }
+
+  /// Replaces the document with no way back: what the page starts from.
+  reset(doc) {
+    this.doc = JSON.parse(JSON.stringify(doc));
+    this.undoStack = [];
+    this.redoStack = [];
     this.notify();
   }
 
@@ -105,19 +124,19 @@ export class TaskModel extends EventTarget {
 
   addPrimitive(p) {
     this.change((d) => d.trajectory.push(p));
-    return "trajectory[" + (this.trajectory.length - 1) + "]";
+    return partName("trajectory", this.trajectory.length - 1);
   }
 
   addObstacle(center, radius) {
     this.change((d) => d.obstacles.push({ center: roundPoint(center), radius }));
-    return "obstacles[" + (this.obstacles.length - 1) + "]";
+    return partName("obstacles", this.obstacles.length - 1);
   }
 
   addRegion(a, b) {
     const min = roundPoint([Math.min(a[0], b[0]), Math.min(a[1], b[1])]);
     const max = roundPoint([Math.max(a[0], b[0]), Math.max(a[1], b[1])]);
     this.change((d) => d.base_regions.push({ min, max }));
-    return "base_regions[" + (this.regions.length - 1) + "]";
+    return partName("base_regions", this.regions.length - 1);
   }
 
   /// The object a part name refers to, or undefined.
@@ -136,7 +155,7 @@ export class TaskModel extends EventTarget {
     this.change((d) => {
       const [list, i] = s;
       if (list === "trajectory" && i + 1 < d.trajectory.length && isPoint(d.trajectory[i].start)) {
-        this.moveVertexIn(d, i + 1, d.trajectory[i].start);
+        moveVertex(d, i + 1, d.trajectory[i].start);
       }
       d[list].splice(i, 1);
     });
@@ -153,7 +172,7 @@ export class TaskModel extends EventTarget {
       const p = roundPoint(point);
       if (list === "trajectory" && (key === "start" || key === "end")) {
         const k = key === "start" || d.trajectory[i].type === "circle" ? i : i + 1;
-        this.moveVertexIn(d, k, p);
+        moveVertex(d, k, p);
       } else {
         d[list][i][key] = p;
       }
@@ -166,20 +185,6 @@ export class TaskModel extends EventTarget {
     const s = splitPart(part);
     if (!s) return;
     this.change((d) => { d[s[0]][s[1]][key] = value; });
-  }
-
-  /// Vertex k is where primitive k starts and primitive k-1 ends. A circle
-  /// starts and ends at one point, so its two vertices are one: the move
-  /// carries through it.
-  moveVertexIn(d, k, p) {
-    const t = d.trajectory;
-    let lo = k, hi = k;
-    while (lo > 0 && t[lo - 1] && t[lo - 1].type === "circle") --lo;
-    while (hi < t.length && t[hi] && t[hi].type === "circle") ++hi;
-    for (let j = lo; j <= hi; ++j) {
-      if (j < t.length && t[j]) t[j].start = [...p];
-      if (j > 0 && t[j - 1] && t[j - 1].type !== "circle") t[j - 1].end = [...p];
-    }
   }
 
   /// Sets a robot setting; an empty value removes it, so its default holds.

@@ -205,6 +205,9 @@ private:
 
     void info(Response& res) {
         const JobLimits& l = jobs_.limits();
+        // What a task's robot gets when it leaves a key out: the page starts
+        // a new task from these instead of keeping copies.
+        const task::RobotSpec d{};
         send_json(res, 200,
                   {{"name", "modsynth"},
                    {"version", MODSYNTH_VERSION},
@@ -213,7 +216,12 @@ private:
                    {"time_limit", l.time_limit},
                    {"grace", l.grace},
                    {"client_timeout", l.client_timeout},
-                   {"max_body", settings_.max_body}});
+                   {"max_body", settings_.max_body},
+                   {"robot_defaults",
+                    {{"dof", d.dof},
+                     {"link_diameter", d.link_diameter},
+                     {"min_link_length", d.min_link_length},
+                     {"max_link_length", d.max_link_length}}}});
     }
 
     static void validate(const Request& req, Response& res) {
