@@ -59,12 +59,32 @@ bool write_all(int fd, const std::string& text) {
     return true;
 }
 
+// A device or a pipe (-o /dev/stdout) cannot be replaced, only written to.
+void write_in_place(const std::string& path, const std::string& text) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    if (fd < 0) throw std::runtime_error(failure(path, "cannot open for writing", errno));
+    const bool written = write_all(fd, text);
+    const int err = errno;
+    ::close(fd);
+    if (!written) throw std::runtime_error(failure(path, "write failed", err));
+}
+
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::string& text) {
     if (path.empty()) throw std::runtime_error("cannot write a file with an empty name");
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
+    if (fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st))
+        return write_in_place(path, text);
+    // Renaming onto a symbolic link would replace the link, not its file.
+    fs::path target = path;
+    if (fs::is_symlink(fs::symlink_status(target, ec)) && fs::is_regular_file(st)) {
+        const fs::path real = fs::canonical(target, ec);
+        if (!ec) target = real;
+    }
     DeferTermination defer;
-    const std::string temp = temporary_name(fs::path(path));
+    const std::string temp = temporary_name(target);
     const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) throw std::runtime_error(failure(path, "cannot open for writing", errno));
     // fsync before rename: otherwise a power cut may leave the new name on
@@ -76,7 +96,7 @@ void write_file_atomically(const std::string& path, const std::string& text) {
         ::unlink(temp.c_str());
         throw std::runtime_error(failure(path, "write failed", err));
     }
-    if (::rename(temp.c_str(), path.c_str()) != 0) {
+    if (::rename(temp.c_str(), target.c_str()) != 0) {
         const int err = errno;
         ::unlink(temp.c_str());
         throw std::runtime_error(failure(path, "cannot replace", err));

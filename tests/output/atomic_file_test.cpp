@@ -126,3 +126,16 @@ TEST_CASE("SIGTERM during a write leaves the old or the new file whole, and no t
     CHECK((now == old || now == fresh));
     CHECK(names_in(dir.path) == std::vector<std::string>{"report.html"});
 }
+
+TEST_CASE("an atomic write keeps a symbolic link and writes through a device", "[output][atomic]") {
+    Folder dir;
+    const fs::path file = dir.path / "real.json", link = dir.path / "link.json";
+    write_file_atomically(file.string(), "old");
+    fs::create_symlink(file, link);
+    write_file_atomically(link.string(), "new");
+    CHECK(fs::is_symlink(link));
+    CHECK(read(file) == "new");
+    CHECK(names_in(dir.path) == std::vector<std::string>{"link.json", "real.json"});
+    write_file_atomically("/dev/null", "discarded");
+    CHECK(fs::is_character_file("/dev/null"));
+}

@@ -11,7 +11,8 @@ namespace modsynth::output {
 /// the rename is done, so that an interrupted write leaves no temporary file
 /// (only SIGKILL can: it is named ".NAME.tmp-PID-N"). Throws
 /// std::runtime_error naming the path on failure; the previous file is then
-/// untouched and the temporary file removed.
+/// untouched and the temporary file removed. A symbolic link's file is
+/// replaced, the link kept; a device or pipe (/dev/stdout) is written to.
 void write_file_atomically(const std::string& path, const std::string& text);
 
 }  // namespace modsynth::output
