@@ -82,6 +82,70 @@ for l in lines:
     assert l["status"] == "timeout" and l["exit_code"] == 137 and l["signal"] == 9, l
 EOF
 
+# Outputs are named after the path below the suite folder: tasks of the
+# same file name in two folders, and one whose name looks like a numbered
+# duplicate, keep apart.
+mkdir -p "$tmp/same/a" "$tmp/same/b"
+for t in a/x b/x a/x-2; do cp "$root/tasks/rose.json" "$tmp/same/$t.task.json"; done
+batch "$tmp/same" --jobs 2 --out "$tmp/same.jsonl" --solutions "$tmp/same-sol" --time-limit 30
+code=$?
+[ "$code" -eq 0 ] || fail "batch of same-named tasks: exit $code ($(tail -3 "$tmp/err"))"
+python3 - "$tmp/same.jsonl" "$tmp/same" "$tmp/same-sol" <<'EOF' || fail "same-named tasks share output files"
+import json, os, sys
+lines = [json.loads(l) for l in open(sys.argv[1])]
+suite, sol = sys.argv[2], sys.argv[3]
+got = {os.path.relpath(l["task"], suite): l["solution"] for l in lines}
+want = {t + ".task.json": os.path.join(sol, t + ".solution.json") for t in ("a/x", "a/x-2", "b/x")}
+assert got == want, got
+for path in want.values():
+    assert json.load(open(path))["status"] == "solved", path
+    assert os.path.isfile(path[: -len(".solution.json")] + ".log"), path
+EOF
+
+# A folder, a missing file and a task named in a list: two failed lines, the
+# task still solved.
+mkdir -p "$tmp/listed-folder"
+printf '%s\n' "$tmp/listed-folder" "$tmp/no-such.json" "$root/tasks/rose.json" >"$tmp/odd-list.txt"
+batch "$tmp/odd-list.txt" --jobs 2 --out "$tmp/odd.jsonl" --time-limit 30
+code=$?
+[ "$code" -eq 1 ] || fail "batch with a folder in its list: exit $code, expected 1 ($(tail -3 "$tmp/err"))"
+python3 - "$tmp/odd.jsonl" <<'EOF' || fail "a folder or a missing file in a list is not one failed line"
+import json, sys
+lines = {l["task"].rsplit("/", 1)[-1]: l for l in map(json.loads, open(sys.argv[1]))}
+assert len(lines) == 3, lines
+folder, missing, rose = lines["listed-folder"], lines["no-such.json"], lines["rose.json"]
+assert folder["status"] == "invalid" and "folder" in folder["message"], folder
+assert missing["status"] == "invalid" and "no such file" in missing["message"], missing
+assert rose["status"] == "solved", rose
+EOF
+
+# Children die with their parent, even one killed by SIGKILL.
+mkdir -p "$tmp/slow"
+for i in 1 2; do cp "$root/tasks/wipe-table.json" "$tmp/slow/wipe$i.json"; done  # ~15 s each
+"$bin" batch "$tmp/slow" --jobs 2 --out "$tmp/slow.jsonl" --solutions "$tmp/slow-sol" \
+    --time-limit 60 >/dev/null 2>&1 &
+parent=$!
+children=""
+for _ in $(seq 100); do
+    children=$(pgrep -P "$parent" | tr '\n' ' ')
+    [ -n "$children" ] && break
+    sleep 0.05
+done
+[ -n "$children" ] || fail "batch started no solve to kill"
+kill -KILL "$parent"
+wait "$parent" 2>/dev/null
+alive() {  # pids: those still running (a zombie is dead)
+    for pid in "$@"; do
+        state=$(ps -o stat= -p "$pid" 2>/dev/null) && [ "${state#Z}" = "$state" ] && echo "$pid"
+    done
+}
+for _ in $(seq 50); do
+    [ -z "$(alive $children)" ] && break
+    sleep 0.1
+done
+left=$(alive $children)
+[ -z "$left" ] || { fail "solves outlive a SIGKILLed batch: $left"; kill -KILL $left 2>/dev/null; }
+
 # Usage errors.
 batch "$tmp/suite" --out "$tmp/x.jsonl" --shard 3/2
 [ $? -eq 2 ] || fail "--shard 3/2 accepted"

@@ -96,6 +96,36 @@ if [ -f "$tmp/inf.json" ]; then
 fi
 expect_exit 1 "export to an unwritable file" "$bin" export "$root/tasks/rose.json" "$tmp/s.json" --csv "$tmp/no/such/dir/x.csv"
 
+# A stored certificate is never trusted: export verifies the motion again,
+# and an edited one is reported as not certified wherever it would claim it.
+python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1])); d["samples"][40]["q"][0] += 0.05
+json.dump(d, open(sys.argv[2], "w"))' "$tmp/s.json" "$tmp/edited.json"
+expect_exit 0 "export an edited solution" "$bin" export "$root/tasks/rose.json" "$tmp/edited.json" \
+    --report "$tmp/edited.html" --build-sheet "$tmp/edited.md"
+grep -qF "warning: $tmp/edited.json: not certified: samples[40]" "$tmp/err" ||
+    fail "no warning for an edited solution: $(cat "$tmp/err")"
+grep -qF "<strong>not certified</strong>: samples[40]" "$tmp/edited.html" ||
+    fail "the report of an edited solution does not say it is not certified"
+! grep -q ">Certified " "$tmp/edited.html" || fail "the report of an edited solution claims a certificate"
+grep -qF "**Warning:** not certified: samples\[40\]" "$tmp/edited.md" ||
+    fail "the build sheet of an edited solution does not say it is not certified"
+
+# A hostile task name is text in every output.
+python3 -c '
+import json, sys
+name = "<script>alert(1)</script> `x` | y\n]]> \"q\""
+t = json.load(open(sys.argv[1])); t["name"] = name; json.dump(t, open(sys.argv[3], "w"))
+s = json.load(open(sys.argv[2])); s["task"] = name; json.dump(s, open(sys.argv[4], "w"))' \
+    "$root/tasks/rose.json" "$tmp/s.json" "$tmp/hostile.task.json" "$tmp/hostile.json"
+expect_exit 0 "export with a hostile task name" "$bin" export "$tmp/hostile.task.json" "$tmp/hostile.json" \
+    --report "$tmp/h.html" --urdf "$tmp/h.urdf" --build-sheet "$tmp/h.md"
+! grep -q "<script>alert" "$tmp/h.html" "$tmp/h.urdf" "$tmp/h.md" || fail "a hostile task name is markup"
+head -1 "$tmp/h.md" | grep -qF '# Build sheet: &lt;script&gt;alert\(1\)&lt;\/script&gt; \`x\` \| y' ||
+    fail "build sheet title: $(head -1 "$tmp/h.md")"
+[ "$(sed -n 2p "$tmp/h.md")" = "" ] || fail "a line break in the task name ends the build sheet's title"
+
 # explain: the proof in words, the parts, and checked relaxations.
 far="$root/tasks/infeasible/table-too-far.task.json"
 expect_exit 3 "explain $far" "$bin" explain "$far" --solve-seconds 3

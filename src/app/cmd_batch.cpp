@@ -175,7 +175,10 @@ private:
 int run_batch(const BatchArgs& a) {
     const Shard shard = parse_shard(a.shard);
     const std::vector<std::string> all = all_tasks(a.input);
-    const std::vector<std::string> stems = unique_stems(all);
+    // Named after the path below the suite folder, so that a/x and b/x
+    // keep apart and a task's files keep their names as the suite grows.
+    const std::vector<std::string> names =
+        output_names(all, fs::is_directory(a.input) ? a.input : std::string());
     std::optional<TempDir> scratch;
     std::string dir = a.solutions;
     if (dir.empty()) {
@@ -188,7 +191,9 @@ int run_batch(const BatchArgs& a) {
     std::vector<SolveJob> jobs;
     for (std::size_t i : shard_positions(all.size(), shard)) {
         paths.push_back(all[i]);
-        const std::string base = (fs::path(dir) / stems[i]).string();
+        const fs::path base_path = fs::path(dir) / names[i];
+        fs::create_directories(base_path.parent_path());
+        const std::string base = base_path.string();
         jobs.push_back({all[i], base + ".solution.json", base + ".log"});
     }
     OrderedWriter writer(a.out, jobs.size());
@@ -242,7 +247,9 @@ Command add_batch(CLI::App& parent) {
         ->check(CLI::NonNegativeNumber);
     sub->add_option(
         "--solutions", a->solutions,
-        "keep each solution (NAME.solution.json) and run log (NAME.log) in this folder");
+        "keep each solution (NAME.solution.json) and run log (NAME.log) in this folder; NAME "
+        "is the task's path below the suite folder (or the listed tasks' common folder) "
+        "without .task.json or .json");
     sub->add_option("--seed", a->run.seed, "passed to every solve (default 0)");
     return {sub, [a] { return run_batch(*a); }};
 }

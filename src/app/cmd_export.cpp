@@ -3,10 +3,9 @@
 #include <string>
 
 #include <modsynth/output/exports.h>
+#include <modsynth/output/recertify.h>
 #include <modsynth/output/solution_reader.h>
 #include <modsynth/task/task_io.h>
-#include <modsynth/control/motion.h>
-#include <modsynth/verify/verifier.h>
 
 #include "command.h"
 
@@ -18,19 +17,6 @@ struct ExportArgs {
     output::ExportPaths exports;
 };
 
-/// A solution written by another tool may carry no certificate; the report
-/// then shows one computed here, and says so.
-output::ReportFigures figures_for(const task::Task& task, output::ParsedSolution& parsed) {
-    output::ReportFigures figures;
-    synth::Solution& s = parsed.solution;
-    if (s.status == synth::Status::Solved && !parsed.has_certificate) {
-        control::recover_parameters(task, s.robot, s.samples);
-        s.certificate = verify::certify(task, s.robot, s.samples);
-        figures.certificate_note = "computed by export: the solution file carries no certificate";
-    }
-    return figures;
-}
-
 int run_export(const ExportArgs& a) {
     if (!a.exports.any()) {
         std::fprintf(stderr,
@@ -40,8 +26,12 @@ int run_export(const ExportArgs& a) {
     }
     const task::Task task = task::load_task(a.task);
     output::ParsedSolution parsed = output::load_solution(a.solution);
-    output::check_solution_fits(task, parsed.solution);
-    const output::ReportFigures figures = figures_for(task, parsed);
+    output::ReportFigures figures;
+    figures.certificate_note = output::recertify(task, parsed);
+    const synth::Solution& s = parsed.solution;
+    if (s.status == synth::Status::Solved && !s.certificate.ok)
+        std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),
+                     output::uncertified_reason(s.certificate).c_str());
     const auto skipped = output::write_exports(task, parsed.solution, a.exports, figures);
     for (const auto& s : skipped) std::fprintf(stderr, "error: %s\n", s.c_str());
     return skipped.empty() ? kOk : kInvalid;

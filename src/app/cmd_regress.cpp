@@ -3,6 +3,7 @@
 // the worse (a status lost, a claim of infeasibility appearing or vanishing,
 // another core, a longer robot) exits 1; a change for the better is reported
 // and passes, since the figures are expected to improve with the solver.
+#include <modsynth/output/atomic_file.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/task/task_io.h>
 #include <modsynth/text/format.h>
@@ -109,9 +110,7 @@ std::optional<std::string> read_text(const std::string& path) {
 
 void write_text(const std::string& path, const std::string& text) {
     fs::create_directories(fs::path(path).parent_path());
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error(path + ": cannot write");
+    output::write_file_atomically(path, text);
 }
 
 // ------------------------------------------------------------- fresh figures

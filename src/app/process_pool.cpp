@@ -2,7 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -64,38 +64,47 @@ double seconds_since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+// The child's side of spawn(), between fork and exec: only async-signal-safe
+// calls. Exit code 127 when anything fails, as a shell reports a program it
+// could not start.
+[[noreturn]] void exec_child(const ProcessSpec& spec, char* const* argv, pid_t parent) {
+    // A batch killed with SIGKILL cannot kill its children itself: the kernel
+    // does it for it. The parent may already have died before prctl ran;
+    // then this process has been reparented and must not start the program.
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) _exit(127);
+    // A parent that blocks or ignores signals (a server does) must not pass
+    // that on: a child should die of SIGINT, SIGTERM and SIGPIPE as usual.
+    for (int sig : {SIGINT, SIGTERM, SIGPIPE}) signal(sig, SIG_DFL);
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    const char* log = spec.log_path.empty() ? "/dev/null" : spec.log_path.c_str();
+    const int in = open("/dev/null", O_RDONLY);
+    const int out = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = spec.stderr_path.empty()
+                        ? out
+                        : open(spec.stderr_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (in < 0 || out < 0 || err < 0 || dup2(in, STDIN_FILENO) < 0 ||
+        dup2(out, STDOUT_FILENO) < 0 || dup2(err, STDERR_FILENO) < 0)
+        _exit(127);
+    for (int fd : {in, out, err})
+        if (fd > STDERR_FILENO) close(fd);
+    execve(argv[0], argv, environ);
+    _exit(127);
+}
+
+// fork and exec rather than posix_spawn: only a child of fork can ask to
+// die with its parent before it runs the program. Everything the child
+// needs is prepared before the fork. The death signal is tied to the thread
+// that forks; the callers fork from threads that outlive their children.
 pid_t spawn(const ProcessSpec& spec) {
     std::vector<char*> argv;
     for (const auto& a : spec.argv) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    const char* log = spec.log_path.empty() ? "/dev/null" : spec.log_path.c_str();
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log, O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    if (spec.stderr_path.empty()) {
-        posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-    } else {
-        posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, spec.stderr_path.c_str(),
-                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    }
-    // A parent that blocks or ignores signals (a server does) must not pass
-    // that on: a child should die of SIGINT, SIGTERM and SIGPIPE as usual.
-    posix_spawnattr_t attr;
-    posix_spawnattr_init(&attr);
-    sigset_t none, defaults;
-    sigemptyset(&none);
-    sigemptyset(&defaults);
-    for (int sig : {SIGINT, SIGTERM, SIGPIPE}) sigaddset(&defaults, sig);
-    posix_spawnattr_setsigmask(&attr, &none);
-    posix_spawnattr_setsigdefault(&attr, &defaults);
-    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-    pid_t pid = -1;
-    const int err = posix_spawn(&pid, argv[0], &actions, &attr, argv.data(), environ);
-    posix_spawnattr_destroy(&attr);
-    posix_spawn_file_actions_destroy(&actions);
-    return err == 0 ? pid : -1;
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid == 0) exec_child(spec, argv.data(), parent);
+    return pid;
 }
 
 ProcessResult result_of(int status, const Running& r) {

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -28,10 +29,31 @@ ProcessSpec spec_for(const SolveJob& job, const SolveRunOptions& o, const std::s
 // Unparsable input yields an empty object: the caller then falls back to
 // what the exit code says.
 nlohmann::json read_json(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return nlohmann::json::object();
     std::ifstream in(path);
     if (!in) return nlohmann::json::object();
-    auto doc = nlohmann::json::parse(in, nullptr, false);
-    return doc.is_object() ? doc : nlohmann::json::object();
+    try {
+        auto doc = nlohmann::json::parse(in, nullptr, false);
+        return doc.is_object() ? doc : nlohmann::json::object();
+    } catch (const std::exception&) {
+        // A read error (the file vanished, an I/O error) is unparsable too.
+        return nlohmann::json::object();
+    }
+}
+
+/// Why a task path cannot be solved at all, or "" when it can be tried: a
+/// folder or a missing file named in a task list is one failed task, not
+/// the end of the batch.
+std::string unreadable_reason(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
+    if (!fs::exists(st)) return "no such file";
+    if (fs::is_directory(st)) return "is a folder, not a task file";
+    if (!fs::is_regular_file(st)) return "is not a regular file";
+    if (!std::ifstream(path)) return "cannot be read";
+    return "";
 }
 
 std::string last_error_line(const std::string& log_path) {
@@ -146,10 +168,26 @@ void run_solves(const std::vector<SolveJob>& jobs, const SolveRunOptions& option
                 const OutcomeHandler& on_done, const std::function<void()>& on_tick) {
     const std::string self = self_executable();
     std::vector<ProcessSpec> specs;
-    for (const auto& job : jobs) specs.push_back(spec_for(job, options, self));
+    std::vector<std::size_t> index_of;  // specs[k] runs jobs[index_of[k]]
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+        const std::string reason = unreadable_reason(jobs[i].task_path);
+        if (reason.empty()) {
+            specs.push_back(spec_for(jobs[i], options, self));
+            index_of.push_back(i);
+            continue;
+        }
+        SolveOutcome out;
+        out.status = "invalid";
+        out.exit_code = kInvalid;
+        out.name = task_stem(jobs[i].task_path);
+        out.message = jobs[i].task_path + ": " + reason;
+        on_done(i, out);
+    }
     run_processes(
         specs, options.jobs,
-        [&](std::size_t i, const ProcessResult& r) { on_done(i, outcome_of(jobs[i], r, options)); },
+        [&](std::size_t k, const ProcessResult& r) {
+            on_done(index_of[k], outcome_of(jobs[index_of[k]], r, options));
+        },
         on_tick);
 }
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 
 namespace modsynth::app {
 namespace {
@@ -74,13 +75,48 @@ std::string task_stem(const std::string& path) {
     return name;
 }
 
-std::vector<std::string> unique_stems(const std::vector<std::string>& paths) {
-    std::map<std::string, int> seen;
-    std::vector<std::string> out;
+namespace {
+
+/// The deepest folder holding every path.
+fs::path common_folder(const std::vector<fs::path>& paths) {
+    fs::path common = paths.front().parent_path();
     for (const auto& p : paths) {
-        const std::string stem = task_stem(p);
-        const int n = ++seen[stem];
-        out.push_back(n == 1 ? stem : stem + "-" + std::to_string(n));
+        const fs::path folder = p.parent_path();
+        fs::path shared;
+        for (auto a = common.begin(), b = folder.begin(); a != common.end() && b != folder.end() && *a == *b;
+             ++a, ++b)
+            shared /= *a;
+        common = shared;
+    }
+    return common;
+}
+
+}  // namespace
+
+std::vector<std::string> output_names(const std::vector<std::string>& paths, const std::string& root) {
+    if (paths.empty()) return {};
+    std::vector<fs::path> full;
+    for (const auto& p : paths) full.push_back(fs::absolute(p).lexically_normal());
+    const fs::path base = root.empty() ? common_folder(full) : fs::absolute(root).lexically_normal();
+    std::vector<fs::path> relative;
+    std::map<std::string, std::set<std::string>> uses;
+    for (const auto& p : full) {
+        fs::path r = p.lexically_relative(base);
+        if (r.empty() || *r.begin() == "..") r = p.filename();
+        relative.push_back(r);
+        uses[(r.parent_path() / task_stem(r.string())).generic_string()].insert(r.generic_string());
+    }
+    // x.json and x.task.json in one folder both shorten to x: then both keep
+    // their whole file name. The same path listed twice gets "~2", "~3", ...
+    std::vector<std::string> out;
+    std::map<std::string, int> taken;
+    for (const auto& r : relative) {
+        const std::string stem = (r.parent_path() / task_stem(r.string())).generic_string();
+        const std::string name = uses[stem].size() == 1 ? stem : r.generic_string();
+        std::string unique = name;
+        for (int n = 2; taken.count(unique); ++n) unique = name + "~" + std::to_string(n);
+        ++taken[unique];
+        out.push_back(unique);
     }
     return out;
 }

@@ -21,9 +21,14 @@ std::vector<std::string> read_task_list(const std::string& list_file);
 /// The file name without ".task.json" or ".json": "tasks/rose.json" -> "rose".
 std::string task_stem(const std::string& path);
 
-/// One stem per path (sorted input), made unique by appending "-2", "-3",
-/// ... to later duplicates, so that outputs named after them never clash.
-std::vector<std::string> unique_stems(const std::vector<std::string>& paths);
+/// A name per task path for the files made from it, unique and the same
+/// on every run: the path below `root` (the suite folder; when empty, the
+/// deepest folder holding every path) without ".task.json" or ".json", so
+/// "suite/a/x.task.json" -> "a/x". Where two tasks of one folder shorten to
+/// the same name both keep their whole file name ("a/x.json",
+/// "a/x.task.json"); a path given twice gets "~2", "~3", ... in order.
+std::vector<std::string> output_names(const std::vector<std::string>& paths,
+                                      const std::string& root = "");
 
 struct Shard {
     int index = 1;  ///< K, 1-based

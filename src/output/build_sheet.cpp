@@ -6,7 +6,9 @@
 #include <modsynth/geometry/vec.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/output/hardware.h>
+#include <modsynth/output/recertify.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/markdown.h>
 
 namespace modsynth::output {
 namespace {
@@ -120,10 +122,17 @@ std::string start_pose_section(const synth::Solution& solution) {
 
 std::string build_sheet(const task::Task& task, const synth::Solution& solution) {
     const auto& robot = solution.robot;
-    std::string s = "# Build sheet: " + (task.name.empty() ? std::string("task") : task.name) +
+    std::string s = "# Build sheet: " +
+                    (task.name.empty() ? std::string("task") : text::markdown_literal(task.name)) +
                     "\n\nA planar arm with " + std::to_string(robot.dof()) + " joints, links";
     for (double r : robot.link_lengths) s += " " + mm(r);
     s += " mm (axis to axis). Lengths in mm unless marked.\n\n";
+    // Hardware is built from this sheet: a motion that failed verification
+    // must say so before anything is cut.
+    if (!solution.certificate.ok)
+        s += "**Warning:** not certified: " +
+             text::markdown_literal(uncertified_reason(solution.certificate)) +
+             ". The motion may leave the path or collide.\n\n";
     return s + parts(task, robot) + cuts_section(task, robot) + stack_section(task, robot) +
            base_section(robot) + start_pose_section(solution);
 }

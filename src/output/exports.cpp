@@ -1,9 +1,9 @@
 #include <modsynth/output/exports.h>
 
-#include <fstream>
 #include <functional>
 #include <stdexcept>
 
+#include <modsynth/output/atomic_file.h>
 #include <modsynth/output/build_sheet.h>
 #include <modsynth/output/csv.h>
 #include <modsynth/output/urdf.h>
@@ -11,11 +11,7 @@
 namespace modsynth::output {
 
 void write_text_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    out << text;
-    out.close();
-    if (!out) throw std::runtime_error(path + ": write failed");
+    write_file_atomically(path, text);
 }
 
 std::vector<std::string> write_exports(const task::Task& task, const synth::Solution& solution,

@@ -105,7 +105,13 @@ std::string escape(const std::string& text) {
                 out += "&#39;";
                 break;
             default:
-                out += c;
+                // Control characters other than tab and line breaks are not
+                // allowed in HTML text.
+                if ((static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') ||
+                    c == '\x7f')
+                    out += "\xEF\xBF\xBD";
+                else
+                    out += c;
         }
     }
     return out;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include <modsynth/output/recertify.h>
 #include <modsynth/text/format.h>
 
 #include "plot.h"
@@ -79,8 +80,7 @@ std::string certificate_rows(const synth::Solution& s, const ReportFigures& figu
     out += row("fig-joint-step", "Max. joint step", text::format("%.4f rad", c.max_joint_step));
     if (!c.ok) {
         out += row("fig-certificate", "Certificate",
-                   "<strong>not certified</strong>: " + std::to_string(c.violations.size()) +
-                       " violations");
+                   "<strong>not certified</strong>: " + escape(uncertified_reason(c)));
     }
     if (!figures.certificate_note.empty()) {
         out += row("fig-certificate-note", "Certificate source", escape(figures.certificate_note));

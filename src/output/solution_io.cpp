@@ -1,10 +1,11 @@
 #include <modsynth/output/solution_io.h>
 
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+
+#include <modsynth/output/atomic_file.h>
 
 #include "json_numbers.h"
 
@@ -53,10 +54,7 @@ nlohmann::json to_json(const synth::Solution& s) {
 }
 
 void write_solution(const synth::Solution& solution, const std::string& path) {
-    std::ofstream out(path);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    out << to_json(solution).dump(1) << '\n';
-    if (!out) throw std::runtime_error(path + ": write failed");
+    write_file_atomically(path, to_json(solution).dump(1) + '\n');
 }
 
 }  // namespace modsynth::output

@@ -259,6 +259,9 @@ ParsedSolution parse_solution_text(std::string_view text) {
             nl == std::string_view::npos ? head.size() : head.size() - nl - 1;
         throw InputError(kDocument, "not valid JSON at line " + std::to_string(line) + ", column " +
                                         std::to_string(column));
+    } catch (const json::exception& e) {
+        // A number beyond double's range ("1e999") is an out_of_range error.
+        throw InputError(kDocument, std::string("not valid JSON: ") + task::json_error_detail(e));
     }
     return parse_solution(doc);
 }

@@ -424,6 +424,19 @@ std::string parse_detail(const nlohmann::json::parse_error& e) {
     return colon == std::string::npos ? what : what.substr(colon + 2);
 }
 
+}  // namespace
+
+std::string json_error_detail(const std::exception& e) {
+    std::string what = e.what();
+    const std::size_t close = what.find("] ");
+    if (close != std::string::npos) what = what.substr(close + 2);
+    // The offending token may be a whole file of digits.
+    constexpr std::size_t kMax = 120;
+    return what.size() <= kMax ? what : what.substr(0, kMax) + "...";
+}
+
+namespace {
+
 // ------------------------------------------------------------------ output
 
 json point_json(const Vec2& p) { return json::array({p.x(), p.y()}); }
@@ -477,6 +490,9 @@ Task parse_task_text(std::string_view text) {
         const auto [line, column] = line_column(text, e.byte);
         throw InputError(kDocument, "not valid JSON at line " + std::to_string(line) + ", column " +
                                         std::to_string(column) + ": " + parse_detail(e));
+    } catch (const json::exception& e) {
+        // A number beyond double's range ("1e999") is an out_of_range error.
+        throw InputError(kDocument, "not valid JSON: " + json_error_detail(e));
     }
     return parse_task(doc);
 }

@@ -105,6 +105,14 @@ private:
                       text::format("base (%.6f, %.6f) lies in no base region", robot_.base.x(), robot_.base.y()));
         if (samples_.empty()) violation(Violation::Kind::Structure, -1, 0.0, "no samples");
         for (std::size_t i = 0; i < samples_.size(); ++i) {
+            if (samples_[i].primitive < 0 ||
+                samples_[i].primitive >= static_cast<int>(task_.trajectory.size())) {
+                violation(Violation::Kind::Structure, static_cast<int>(i), 0.0,
+                          "primitive " + std::to_string(samples_[i].primitive) + " is not in the task");
+                break;
+            }
+        }
+        for (std::size_t i = 0; i < samples_.size(); ++i) {
             if (static_cast<int>(samples_[i].q.size()) != n) {
                 violation(Violation::Kind::Structure, static_cast<int>(i), 0.0,
                           "sample has the wrong number of joint angles");

@@ -140,3 +140,25 @@ TEST_CASE("modules and tubes stack in z, the rod reaching the table", "[output]"
     CHECK(modsynth::output::tube_axis_height(spec, d, 1) == Approx(2 * h + d + d / 2));
     CHECK(modsynth::output::ee_rod_length(spec, d, 2) == Approx(2 * h + 2 * d));
 }
+
+TEST_CASE("the build sheet shows a hostile task name as text, never as markup",
+          "[output][escape]") {
+    auto task = testing::two_joint_task();
+    task.name = "<script>alert('x')</script> `rm -rf` | a | b\n# Injected\r\n]]> \"q\" [l](u) *e* &amp;\x01";
+    const auto s = testing::two_joint_solution(task);
+    const std::string sheet = modsynth::output::build_sheet(task, s);
+    const std::string title = sheet.substr(0, sheet.find('\n'));
+    CHECK(title.rfind("# Build sheet: ", 0) == 0);
+    // Every character of the name survives, escaped, on the title line.
+    CHECK(title.find("&lt;script&gt;alert(") == std::string::npos);
+    CHECK(title.find("&lt;script&gt;alert\\(&#39;x&#39;\\)&lt;\\/script&gt;") != std::string::npos);
+    CHECK(title.find("\\`rm \\-rf\\` \\| a \\| b") != std::string::npos);
+    CHECK(title.find("\\]\\]&gt; &quot;q&quot; \\[l\\]\\(u\\) \\*e\\* &amp;amp\\;") != std::string::npos);
+    CHECK(sheet.find("<script") == std::string::npos);
+    CHECK(sheet.find("\n# Injected") == std::string::npos);
+    CHECK(sheet.find('\r') == std::string::npos);
+    CHECK(sheet.find('\x01') == std::string::npos);
+    for (std::size_t i = sheet.find('`'); i != std::string::npos; i = sheet.find('`', i + 1))
+        CHECK(sheet[i - 1] == '\\');
+    CHECK(title.find(" | a") == std::string::npos);
+}

@@ -160,3 +160,17 @@ TEST_CASE("the report of an infeasible task highlights the core and explains", "
     CHECK_FALSE(has(html, "id=\"motion-data\""));
     CHECK_FALSE(has(html, "<g id=\"robot\">"));
 }
+
+TEST_CASE("the report shows a hostile task name as text, never as markup", "[output][escape]") {
+    auto task = testing::two_joint_task();
+    task.name = "<script>alert('x')</script> `b` | c\n]]> \"qq7\" &amp;\x01";
+    const auto s = testing::two_joint_solution(task);
+    const std::string html = html_report(task, s, ReportFigures{});
+    CHECK_FALSE(has(html, "<script>alert"));
+    CHECK_FALSE(has(html, "\"qq7\""));
+    CHECK_FALSE(has(html, "\x01"));
+    const std::string shown =
+        "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; `b` | c\n]]&gt; &quot;qq7&quot; &amp;amp;\xEF\xBF\xBD";
+    CHECK(has(html, "<title>modsynth: " + shown + "</title>"));
+    CHECK(has(html, "<h1>" + shown + " <span"));
+}

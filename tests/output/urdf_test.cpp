@@ -213,3 +213,12 @@ TEST_CASE("URDF names are sanitised", "[output]") {
     const std::string urdf = modsynth::output::robot_urdf(task, testing::two_joint_solution(task));
     CHECK(urdf.find("<robot name=\"my_task__1_\">") != std::string::npos);
 }
+
+TEST_CASE("a hostile task name cannot break out of the URDF", "[output][escape]") {
+    auto task = testing::two_joint_task();
+    task.name = "x\"/><link name=\"evil\"/><!-- ]]> `|` \n'";
+    const std::string urdf = modsynth::output::robot_urdf(task, testing::two_joint_solution(task));
+    CHECK(urdf.find("<robot name=\"x____link_name__evil_____--___________\">") != std::string::npos);
+    CHECK(urdf.find("evil\"") == std::string::npos);
+    CHECK(urdf.find("]]>") == std::string::npos);
+}

@@ -29,7 +29,8 @@ struct ExportPaths {
 std::vector<std::string> write_exports(const task::Task& task, const synth::Solution& solution,
                                        const ExportPaths& paths, const ReportFigures& figures);
 
-/// Writes text to a file; throws std::runtime_error naming the path on failure.
+/// Writes text to a file atomically (atomic_file.h); throws std::runtime_error
+/// naming the path on failure.
 void write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace modsynth::output

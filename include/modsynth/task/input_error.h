@@ -22,4 +22,8 @@ private:
 /// ("task", "solution").
 std::string read_input_file(const std::string& path, const std::string& what);
 
+/// A JSON library error other than a syntax error (a number beyond the range
+/// of a double) in a few words, without the library's error id.
+std::string json_error_detail(const std::exception& e);
+
 }  // namespace modsynth::task

@@ -1,0 +1,25 @@
+#pragma once
+// A solution read back from a file is verified again before anything is
+// derived from it. Its samples may have been edited since its certificate
+// was computed, so a stored certificate proves nothing: only the verifier's
+// verdict on the motion as it now stands may be called certified.
+#include <string>
+
+#include <modsynth/output/solution_reader.h>
+#include <modsynth/task/task.h>
+#include <modsynth/verify/verifier.h>
+
+namespace modsynth::output {
+
+/// Checks that the solution fits the task (check_solution_fits, which
+/// throws InputError) and, for a solved one, replaces its certificate with
+/// the verifier's. Returns the report's "Certificate source" note: set when
+/// the file carried no certificate to compare with, else "".
+std::string recertify(const task::Task& task, ParsedSolution& parsed);
+
+/// Why a certificate is not ok, in one line naming the first offending
+/// sample ("samples[3]: EE is 0.052000 m off the path (and 4 more)"), or
+/// "" when it is ok.
+std::string uncertified_reason(const verify::Certificate& certificate);
+
+}  // namespace modsynth::output
