@@ -13,6 +13,7 @@
 #include <modsynth/text/format.h>
 
 #include "command.h"
+#include "number_checks.h"
 
 namespace modsynth::app {
 namespace {
@@ -114,7 +115,7 @@ Command add_compare(CLI::App& parent) {
         "compare", "Solve a task with modsynth and with the discretized baseline; print both side by side");
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file")->required();
     sub->add_option("--time-limit", a->time_limit, "seconds for modsynth's run (default 60)")
-        ->check(CLI::PositiveNumber);
+        ->check(seconds());
     sub->add_option("--report", a->report, "write an HTML report that shows both robots");
     sub->add_flag("--json", a->json, "print one JSON object (modsynth-comparison/1) instead of the table");
     sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");
