@@ -92,6 +92,12 @@ with tempfile.TemporaryDirectory() as tmp:
         except ValueError:
             fail(f"explain --json printed no JSON: {out[:300]}")
 
+    code, out, err, wall, rss = run(["compare", big, "--time-limit", "2", "--baseline-time-limit", "2",
+                                     "--quiet"])
+    print(f"compare with 2 + 2 s, 3000 primitives: exit {code}, {wall:.2f} s")
+    if wall >= 6.0:
+        fail(f"compare with 2 + 2 s took {wall:.2f} s")
+
     # Past the cap: exit 2 naming the part and the cap, at once.
     with open(big, "w") as f:
         json.dump(zigzag_task(5001, "zigzag-5001"), f)
