@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include <modsynth/text/format.h>
+#include <modsynth/text/printable.h>
 
 namespace modsynth::app {
 
@@ -21,7 +22,7 @@ inline CLI::Validator finite_in(double lo, double hi, bool open_lo, const std::s
         [=](std::string& input) -> std::string {
             double v = 0.0;
             if (!CLI::detail::lexical_cast(input, v) || !std::isfinite(v))
-                return "expected a finite number, got '" + input.substr(0, 40) + "'";
+                return "expected a finite number, got '" + text::printable(input) + "'";
             if (open_lo ? v <= lo : v < lo)
                 return text::format("must be %s %g, got %g", open_lo ? "greater than" : "at least", lo, v);
             if (v > hi) return text::format("must be at most %g, got %g", hi, v);
