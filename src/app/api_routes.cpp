@@ -1,6 +1,7 @@
 #include "api_routes.h"
 
 #include <modsynth/task/task_io.h>
+#include <modsynth/text/printable.h>
 
 #include <algorithm>
 #include <cmath>
@@ -124,7 +125,7 @@ std::optional<double> query_number(const Request& req, const char* name) {
         used = 0;
     }
     if (used != text.size() || !std::isfinite(v) || v <= 0.0)
-        throw task::InputError(name, "not a positive number: '" + text + "'");
+        throw task::InputError(name, "not a positive number: '" + modsynth::text::printable(text) + "'");
     return v;
 }
 

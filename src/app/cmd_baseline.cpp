@@ -12,6 +12,7 @@
 #include <modsynth/task/task_io.h>
 
 #include "command.h"
+#include "number_checks.h"
 
 namespace modsynth::app {
 namespace {
@@ -64,12 +65,12 @@ void add_baseline_options(CLI::App& sub, baseline::BaselineOptions& o) {
     sub.add_option("--baseline-seed", o.planner.seed, "seed of the RRT samples (default 0)");
     sub.add_option("--baseline-time-limit", o.time_limit,
                    "seconds for the baseline's design and planning (default 120)")
-        ->check(CLI::PositiveNumber);
+        ->check(seconds());
     sub.add_option("--rrt-iterations", o.planner.max_iterations,
                    "RRT iterations allowed per pair of points (default 20000)")
         ->check(CLI::PositiveNumber);
     sub.add_option("--goal-bias", o.planner.goal_bias, "chance an RRT sample is the next point (default 0.1)")
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(within(0.0, 1.0));
     sub.add_flag("!--no-shortcut", o.planner.shortcut, "keep RRT's path as found, without shortcutting");
 }
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "command.h"
+#include "number_checks.h"
 #include "process_pool.h"
 #include "solve_runner.h"
 #include "task_files.h"
@@ -241,10 +242,10 @@ Command add_batch(CLI::App& parent) {
     sub->add_option("--shard", a->shard,
                     "K/N: of the tasks sorted by path, take every N-th starting at the K-th");
     sub->add_option("--time-limit", a->run.time_limit, "seconds per task (default 60)")
-        ->check(CLI::PositiveNumber);
+        ->check(seconds());
     sub->add_option("--grace", a->run.grace,
                     "seconds past the time limit before a run is killed (default 10)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(seconds_or_zero());
     sub->add_option(
         "--solutions", a->solutions,
         "keep each solution (NAME.solution.json) and run log (NAME.log) in this folder; NAME "

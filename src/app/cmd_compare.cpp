@@ -13,6 +13,8 @@
 #include <modsynth/text/format.h>
 
 #include "command.h"
+#include "watchdog.h"
+#include "number_checks.h"
 
 namespace modsynth::app {
 namespace {
@@ -82,16 +84,28 @@ void print_table(const baseline::Comparison& c, int points) {
     if (!b.message.empty()) std::printf("discretized: %s\n", b.message.c_str());
 }
 
+// The two runs take their own limits one after the other; past their sum
+// by this much (measuring both motions included), the watchdog answers.
+constexpr double kWatchdogMargin = 1.0;
+
 int run_compare(CompareArgs& a) {
     const task::Task task = task::load_task(a.task);
+    const double limit = a.time_limit + a.options.time_limit;
+    Watchdog watchdog(limit + kWatchdogMargin, [&] {
+        std::fprintf(stderr, "compare: stopped after %.3g s (the two time limits) while: %s\n", limit,
+                     watchdog.stage().c_str());
+        return int{kUnknown};
+    });
     synth::SynthesisOptions ours;
     ours.time_limit = a.time_limit;
-    if (!a.quiet) {
-        auto say = [](const std::string& line) { std::cerr << line << std::endl; };
-        ours.progress = say;
-        a.options.progress = say;
-    }
+    auto say = [&, quiet = a.quiet](const std::string& line) {
+        watchdog.set_stage(line);
+        if (!quiet) std::cerr << line << std::endl;
+    };
+    ours.progress = say;
+    a.options.progress = say;
     const baseline::Comparison c = baseline::compare_methods(task, ours, a.options);
+    watchdog.claim();
     if (!a.report.empty()) {
         output::ReportFigures figures;
         figures.comparison = &c;
@@ -114,7 +128,7 @@ Command add_compare(CLI::App& parent) {
         "compare", "Solve a task with modsynth and with the discretized baseline; print both side by side");
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file")->required();
     sub->add_option("--time-limit", a->time_limit, "seconds for modsynth's run (default 60)")
-        ->check(CLI::PositiveNumber);
+        ->check(seconds());
     sub->add_option("--report", a->report, "write an HTML report that shows both robots");
     sub->add_flag("--json", a->json, "print one JSON object (modsynth-comparison/1) instead of the table");
     sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");

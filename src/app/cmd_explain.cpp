@@ -1,4 +1,7 @@
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <mutex>
 #include <memory>
 #include <string>
 
@@ -9,6 +12,8 @@
 #include <modsynth/task/task_io.h>
 
 #include "command.h"
+#include "watchdog.h"
+#include "number_checks.h"
 
 namespace modsynth::app {
 namespace {
@@ -20,16 +25,41 @@ struct ExplainArgs {
     bool json = false;
 };
 
+// Past the time limit by this much, the watchdog answers for the run.
+constexpr double kWatchdogMargin = 0.6;
+
+// --time-limit bounds the whole command: the proof, or the full run when
+// there is none, and then the suggestions.
 int run_explain(const ExplainArgs& a) {
+    const auto t0 = std::chrono::steady_clock::now();
     const task::Task task = task::load_task(a.task);
+    const auto left = [&] {
+        return a.time_limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
+    std::mutex mutex;  // `out` is shared with the watchdog
     nlohmann::json out;
     out["task"] = task.name;
-    const synth::InfeasibilityProof proof = synth::prove_infeasible(task, std::min(10.0, a.time_limit));
+    out["status"] = "unknown";
+    Watchdog watchdog(left() + kWatchdogMargin, [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        const std::string note = "stopped at the time limit while " + watchdog.stage();
+        if (a.json) {
+            out["note"] = note;
+            std::printf("%s\n", out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+        } else {
+            std::printf("%s%s\n", out["status"] == "infeasible" ? "  " : "", note.c_str());
+        }
+        return out["status"] == "infeasible" ? int{kInfeasible} : int{kUnknown};
+    });
+    watchdog.set_stage("proving infeasibility");
+    const synth::InfeasibilityProof proof = synth::prove_infeasible(task, std::min(10.0, left()));
     if (!proof.proved) {
         // Not proved infeasible: say what a full run finds.
+        watchdog.set_stage("solving the task");
         synth::SynthesisOptions options;
-        options.time_limit = a.time_limit;
+        options.time_limit = std::max(0.0, left());
         const synth::Solution s = synth::synthesize(task, options);
+        watchdog.claim();
         out["status"] = synth::to_string(s.status);
         const std::string message =
             s.status == synth::Status::Solved
@@ -38,30 +68,35 @@ int run_explain(const ExplainArgs& a) {
         out["message"] = message;
         out["core"] = s.explanation.core;
         if (a.json) {
-            std::printf("%s\n", out.dump(1).c_str());
+            std::printf("%s\n", out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
         } else {
             std::printf("%s\n", message.c_str());
         }
         return s.status == synth::Status::Solved ? kOk : s.status == synth::Status::Infeasible ? kInfeasible : kUnknown;
     }
     const std::string message = "Proved infeasible: " + synth::describe_conflict(task, proof.core);
-    out["status"] = "infeasible";
-    out["message"] = message;
-    out["core"] = proof.core;
-    if (!a.json) {
-        std::printf("%s\n\nThe conflicting parts:\n", message.c_str());
-        for (const auto& part : proof.core) std::printf("  - %s\n", synth::describe_part(task, part).c_str());
-        std::printf("\nSmallest changes that remove the conflict (each re-checked):\n");
-        std::fflush(stdout);
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        out["status"] = "infeasible";
+        out["message"] = message;
+        out["core"] = proof.core;
+        out["suggestions"] = nlohmann::json::array();
+        if (!a.json) {
+            std::printf("%s\n\nThe conflicting parts:\n", message.c_str());
+            for (const auto& part : proof.core) std::printf("  - %s\n", synth::describe_part(task, part).c_str());
+            std::printf("\nSmallest changes that remove the conflict (each re-checked):\n");
+            std::fflush(stdout);
+        }
     }
-    const auto relaxations = synth::suggest_relaxations(task, proof.core, a.solve_seconds);
-    out["suggestions"] = nlohmann::json::array();
+    watchdog.set_stage("looking for the smallest changes");
+    const auto relaxations = synth::suggest_relaxations(task, proof.core, a.solve_seconds, left());
+    watchdog.claim();
     for (const auto& r : relaxations) {
         out["suggestions"].push_back({{"part", r.part}, {"change", r.change}, {"outcome", r.outcome}});
         if (!a.json) std::printf("  - %s\n      then: %s\n", r.change.c_str(), r.outcome.c_str());
     }
     if (a.json) {
-        std::printf("%s\n", out.dump(1).c_str());
+        std::printf("%s\n", out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
     } else if (relaxations.empty()) {
         std::printf("  (none found by changing one part alone)\n");
     }
@@ -75,11 +110,11 @@ Command add_explain(CLI::App& parent) {
     CLI::App* sub = parent.add_subcommand(
         "explain", "Say why a task cannot be done, and the smallest changes that would fix it");
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file")->required();
-    sub->add_option("--time-limit", a->time_limit, "seconds for the proof or the full run (default 60)")
-        ->check(CLI::PositiveNumber);
+    sub->add_option("--time-limit", a->time_limit, "seconds for the whole command: the proof or the full run, then the suggestions (default 60)")
+        ->check(seconds());
     sub->add_option("--solve-seconds", a->solve_seconds,
                     "seconds of full synthesis to try on each relaxed task (default 10)")
-        ->check(CLI::PositiveNumber);
+        ->check(seconds());
     sub->add_flag("--json", a->json, "print one JSON object instead of text");
     return {sub, [a] { return run_explain(*a); }};
 }

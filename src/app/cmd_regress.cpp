@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "command.h"
+#include "number_checks.h"
 #include "solve_runner.h"
 #include "task_files.h"
 #include "temp_dir.h"
@@ -585,9 +586,9 @@ Command add_regress(CLI::App& parent) {
     enc->add_option("--tasks", a->tasks, "the task folder, searched recursively (default tasks)");
     enc->add_option("--tolerance", a->tolerance,
                     "relative change of total link length that counts (default 0.05)")
-        ->check(CLI::Range(0.0, 10.0));
+        ->check(within(0.0, 10.0));
     enc->add_option("--time-limit", a->run.time_limit, "seconds per solve (default 60)")
-        ->check(CLI::PositiveNumber);
+        ->check(seconds());
     enc->add_option("-j,--jobs", a->run.jobs, "solves at once (default 1)")
         ->check(CLI::Range(1, 4096));
     enc->add_flag("--regenerate", a->regenerate,

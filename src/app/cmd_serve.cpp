@@ -1,6 +1,7 @@
 #include <memory>
 
 #include "command.h"
+#include "number_checks.h"
 #include "server.h"
 
 namespace modsynth::app {
@@ -19,14 +20,14 @@ Command add_serve(CLI::App& parent) {
         ->check(CLI::Range(1, 64));
     sub->add_option("--time-limit", o->jobs.time_limit,
                     "seconds per solve: the default and the most a request may ask (default 60)")
-        ->check(CLI::PositiveNumber);
+        ->check(seconds());
     sub->add_option("--grace", o->jobs.grace,
                     "seconds past the time limit before a solve is killed (default 5)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(seconds_or_zero());
     sub->add_option("--client-timeout", o->jobs.client_timeout,
                     "a solve whose client asks nothing for this many seconds is cancelled "
                     "(default 15)")
-        ->check(CLI::PositiveNumber);
+        ->check(seconds());
     return {sub, [o] {
                 o->api.loopback_only = is_loopback_host(o->host);
                 return run_server(*o);

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -9,8 +10,11 @@
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/task/task_io.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/printable.h>
 
 #include "command.h"
+#include "watchdog.h"
+#include "number_checks.h"
 
 namespace modsynth::app {
 namespace {
@@ -27,7 +31,7 @@ struct SolveArgs {
 void print_summary(const task::Task& task, const synth::Solution& solution, double seconds,
                    const synth::SynthesisStats& stats, const std::string& output) {
     std::printf("%s: %s in %.3f s (front stage %.3f s, refinement %.3f s, verification %.3f s)\n",
-                task.name.c_str(), synth::to_string(solution.status), seconds, stats.front_seconds,
+                text::printable(task.name, 80).c_str(), synth::to_string(solution.status), seconds, stats.front_seconds,
                 stats.refine_seconds, stats.verify_seconds);
     if (solution.status != synth::Status::Solved) {
         std::printf("  %s\n", solution.explanation.message.c_str());
@@ -48,18 +52,40 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
                 solution.samples.back().t, output.c_str());
 }
 
+// Past the time limit by this much, the watchdog answers for the run.
+constexpr double kWatchdogMargin = 0.6;
+
 int run_solve(const SolveArgs& a) {
+    const auto t0 = std::chrono::steady_clock::now();
     const task::Task task = task::load_task(a.task);
+    const auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
+    Watchdog watchdog(a.time_limit + kWatchdogMargin - elapsed(), [&] {
+        synth::Solution unknown;
+        unknown.task_name = task.name;
+        unknown.status = synth::Status::Unknown;
+        unknown.explanation.message =
+            text::format("No certified robot found within the time limit (%.3g s); the last stage reached: ",
+                         a.time_limit) +
+            text::printable(watchdog.stage(), 200) + ".";
+        output::write_solution(unknown, a.output);
+        print_summary(task, unknown, elapsed(), {}, a.output);
+        return int{kUnknown};
+    });
     synth::SynthesisOptions options;
-    options.time_limit = a.time_limit;
+    options.time_limit = std::max(0.0, a.time_limit - elapsed());
     options.seed = a.seed;
     options.motion.ee_speed = a.ee_speed;
     options.motion.joint_speed = a.joint_speed;
-    if (!a.quiet) options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
+    options.progress = [&](const std::string& line) {
+        watchdog.set_stage(line.size() > 11 ? line.substr(11) : line);  // without the clock
+        if (!a.quiet) std::cerr << line << std::endl;
+    };
     synth::SynthesisStats stats;
-    const auto t0 = std::chrono::steady_clock::now();
     const synth::Solution solution = synth::synthesize(task, options, &stats);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds = elapsed();
+    watchdog.claim();
     output::write_solution(solution, a.output);
     for (const auto& note : output::write_exports(
              task, solution, a.exports,
@@ -90,12 +116,12 @@ Command add_solve(CLI::App& parent) {
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file")->required();
     sub->add_option("-o,--output", a->output, "where to write the modsynth-solution/1 JSON")->required();
     sub->add_option("--time-limit", a->time_limit, "seconds for the whole run (default 60)")
-        ->check(CLI::PositiveNumber);
+        ->check(seconds());
     sub->add_option("--seed", a->seed, "varies initial guesses; same seed, same output (default 0)");
     sub->add_option("--ee-speed", a->ee_speed, "end-effector speed along the path, m/s (default 0.05)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive());
     sub->add_option("--joint-speed", a->joint_speed, "joint speed limit, rad/s (default 1)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive());
     sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");
     add_export_options(*sub, a->exports);
     return {sub, [a] { return run_solve(*a); }};

@@ -4,6 +4,8 @@
 
 #include <modsynth/task/task_io.h>
 
+#include <modsynth/text/printable.h>
+
 #include "command.h"
 
 namespace modsynth::app {
@@ -15,7 +17,7 @@ Command add_validate(CLI::App& parent) {
     return {sub, [path] {
                 const task::Task t = task::load_task(*path);
                 std::printf("%s: valid task '%s': %zu primitives, %zu obstacles, %zu base regions\n",
-                            path->c_str(), t.name.c_str(), t.trajectory.size(), t.obstacles.size(),
+                            path->c_str(), text::printable(t.name, 80).c_str(), t.trajectory.size(), t.obstacles.size(),
                             t.base_regions.size());
                 return int{kOk};
             }};

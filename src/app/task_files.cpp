@@ -1,6 +1,7 @@
 #include "task_files.h"
 
 #include <modsynth/task/input_error.h>
+#include <modsynth/text/printable.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -125,10 +126,10 @@ Shard parse_shard(const std::string& text) {
     static const std::regex form(R"(\s*([0-9]{1,6})\s*/\s*([0-9]{1,6})\s*)");
     std::smatch m;
     if (!std::regex_match(text, m, form))
-        throw task::InputError("--shard", "expected K/N (e.g. 2/8), got '" + text + "'");
+        throw task::InputError("--shard", "expected K/N (e.g. 2/8), got '" + modsynth::text::printable(text) + "'");
     Shard s{std::stoi(m[1]), std::stoi(m[2])};
     if (s.count < 1 || s.index < 1 || s.index > s.count)
-        throw task::InputError("--shard", "K/N needs 1 <= K <= N, got '" + text + "'");
+        throw task::InputError("--shard", "K/N needs 1 <= K <= N, got '" + modsynth::text::printable(text) + "'");
     return s;
 }
 

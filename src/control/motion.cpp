@@ -64,12 +64,20 @@ namespace {
 // Walks a parameter from `from` to `to`, each step as long as the joints
 // allow, appending a sample per step (the first one excluded).
 // On failure, *failed_at is the parameter that could not be reached.
+// Stops (returning false with *gave_up set) at the sample cap or the deadline.
 template <typename ConfigAt>
-bool walk(double from, double to, double first_step, double max_joint_step, Phase phase, int j,
-          std::vector<Sample>& out, double* failed_at, ConfigAt config_at) {
+bool walk(double from, double to, double first_step, const MotionOptions& options, Phase phase, int j,
+          std::vector<Sample>& out, double* failed_at, bool* gave_up, ConfigAt config_at) {
+    const double max_joint_step = options.max_joint_step;
     const double dir = to >= from ? 1.0 : -1.0;
     double u = from, du = first_step;
     while (dir * (to - u) > 1e-12) {
+        if (out.size() >= options.max_samples ||
+            (out.size() % 1024 == 0 && std::chrono::steady_clock::now() >= options.deadline)) {
+            *gave_up = true;
+            *failed_at = u;
+            return false;
+        }
         du = std::min(2.0 * du, first_step);
         std::optional<std::vector<double>> next;
         double candidate = u;
@@ -100,8 +108,16 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                                                const MotionOptions& options, MotionFailure* failure) {
     std::vector<Sample> out;
     double failed_at = 0.0;
+    bool gave_up = false;
     auto fail = [&](int j, bool transition, double s) -> std::optional<std::vector<Sample>> {
-        if (failure) *failure = {j, transition, s, transition ? transition_name(j) : point_name(j, s)};
+        if (failure) {
+            *failure = {j, transition, s, gave_up, transition ? transition_name(j) : point_name(j, s)};
+            if (gave_up) {
+                failure->message = out.size() >= options.max_samples
+                                       ? text::format("%zu samples, the most a motion may have", out.size())
+                                       : std::string("the time limit");
+            }
+        }
         return std::nullopt;
     };
     const int m = static_cast<int>(task.trajectory.size());
@@ -112,8 +128,8 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             const double from = out.back().q[0];
             const double to = from + std::remainder(robot.proximal_angles[j] - from, geometry::kTau);
             const std::size_t before = out.size();
-            const bool ok = walk(from, to, options.max_joint_step, options.max_joint_step, Phase::Transition,
-                                 j - 1, out, &failed_at, [&](double q1, const std::vector<double>* prev) {
+            const bool ok = walk(from, to, options.max_joint_step, options, Phase::Transition,
+                                 j - 1, out, &failed_at, &gave_up, [&](double q1, const std::vector<double>* prev) {
                                      return transition_configuration(task, robot, j - 1, q1, prev);
                                  });
             if (!ok) return fail(j - 1, true, failed_at);
@@ -124,8 +140,8 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
         if (!q) return fail(j, false, 0.0);
         out.push_back({0.0, Phase::Trace, j, 0.0, *q});
         const double length = geometry::length(task.trajectory[j]);
-        const bool ok = walk(0.0, length, options.max_ee_step, options.max_joint_step, Phase::Trace, j, out,
-                             &failed_at, [&](double s, const std::vector<double>* p) {
+        const bool ok = walk(0.0, length, options.max_ee_step, options, Phase::Trace, j, out,
+                             &failed_at, &gave_up, [&](double s, const std::vector<double>* p) {
                                  return configuration_at(task, robot, j, s, p);
                              });
         if (!ok) return fail(j, false, failed_at);

@@ -124,7 +124,11 @@ Primitive make_arc(const Vec2& start, const Vec2& end, const Vec2& center, bool 
     p.radius = (start - center).norm();
     p.start_angle = polar_angle(start - center);
     const double end_angle = polar_angle(end - center);
-    p.end = center + p.radius * unit(end_angle);
+    // An end already on the circle up to rounding is kept as given: the
+    // projection of a projected end can differ from it in the last bit, and
+    // a task written back and read again must not drift.
+    const double rounding = 1e-13 * (1.0 + center.cwiseAbs().maxCoeff() + p.radius);
+    p.end = std::abs((end - center).norm() - p.radius) <= rounding ? end : center + p.radius * unit(end_angle);
     // The projected end may coincide with the start even when the given end
     // does not (same ray, other radius).
     if ((p.end - start).norm() <= kSamePoint) return make_circle(start, center, ccw);

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/text/printable.h>
 
 namespace modsynth::output {
 namespace {
@@ -30,9 +31,7 @@ std::string describe(const json& j) {
     if (j.is_array()) return "a list";
     if (j.is_object()) return "an object";
     if (j.is_null()) return "null";
-    std::string s = j.dump();
-    if (s.size() > 40) s = s.substr(0, 37) + "...";
-    return s;
+    return text::printable(j.dump());
 }
 
 const json& required(const json& obj, const std::string& part, const char* key) {
@@ -106,7 +105,7 @@ synth::Status parse_status(const json& doc) {
     if (s == "infeasible") return synth::Status::Infeasible;
     if (s == "unknown") return synth::Status::Unknown;
     throw InputError("status",
-                     "expected \"solved\", \"infeasible\" or \"unknown\", got \"" + s + "\"");
+                     "expected \"solved\", \"infeasible\" or \"unknown\", got \"" + text::printable(s) + "\"");
 }
 
 synth::Explanation parse_explanation(const json& doc) {
@@ -155,7 +154,7 @@ control::Phase parse_phase(const json& j, const std::string& part) {
     const std::string p = text(j, part);
     if (p == "trace") return control::Phase::Trace;
     if (p == "transition") return control::Phase::Transition;
-    throw InputError(part, "expected \"trace\" or \"transition\", got \"" + p + "\"");
+    throw InputError(part, "expected \"trace\" or \"transition\", got \"" + text::printable(p) + "\"");
 }
 
 control::Sample parse_sample(const json& j, const std::string& part, int dof) {

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include <modsynth/geometry/distance.h>
+#include <modsynth/geometry/polygon.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/text/format.h>
 
@@ -18,6 +19,18 @@ namespace {
 // Slack that keeps the relaxation sound despite the decimal rounding of
 // task numbers: a constraint is loosened, never tightened.
 constexpr double kSlack = 1e-7;
+// Up to this many primitives every pair gets its span; beyond, each
+// primitive gets the span to its farthest partner only, which keeps the
+// encoding linear in the path (the spans are implied constraints either way).
+constexpr int kAllSpanPairs = 64;
+// Hull vertices searched for farthest partners: any sampled path point gives
+// a sound span, so a subsample of the hull bounds the work at the cap.
+constexpr std::size_t kHullProbe = 256;
+// Sampled points encoded over the whole path: a long path gets fewer per
+// primitive (never fewer than its ends), which keeps the encoding, and the
+// time Z3 takes to build and tear it down, within a time limit. Fewer
+// samples only weaken the relaxation: it stays sound.
+constexpr int kEncodedPoints = 4000;
 
 std::string decimal(double v) { return text::format("%.12f", v); }
 
@@ -55,8 +68,10 @@ struct FrontStage::Impl {
     std::vector<std::string> names;  // assumption literals, in creation order
     std::map<std::string, z3::expr> literal_of;
     bool unsat_refined = false;  // the last Unsat came from `fine`
+    bool incomplete = false;     // encoding stopped at the deadline
     std::optional<z3::model> model;
     int blocked = 0;
+    int samples = 1;  // intervals sampled per primitive
 
     Impl(const task::Task& t, int d, const FrontStageOptions& o)
         : task(t),
@@ -70,6 +85,8 @@ struct FrontStage::Impl {
         // Core tracking must be on before the first assertion.
         set_timeout(solver, options.time_limit);
         set_timeout(fine, options.refined_time_limit);
+        const int m = static_cast<int>(task.trajectory.size());
+        samples = std::clamp(kEncodedPoints / std::max(1, m), 1, std::max(1, options.samples_per_primitive));
         for (int k = 0; k < dof; ++k) {
             std::string name = "r";
             name += std::to_string(k + 1);  // (GCC 12 warns falsely on "r" + string)
@@ -78,10 +95,18 @@ struct FrontStage::Impl {
         encode();
     }
 
+    double seconds_left() const {
+        if (options.deadline == std::chrono::steady_clock::time_point::max()) return 1e9;
+        return std::chrono::duration<double>(options.deadline - std::chrono::steady_clock::now()).count();
+    }
+    bool expired() const { return seconds_left() <= 0.0; }
+
+    // The timeout ends at the deadline, whatever the per-check budget.
     void set_timeout(z3::solver& s, double seconds) {
         z3::params p(ctx);
         p.set("unsat_core", true);
-        p.set("timeout", static_cast<unsigned>(std::max(1.0, seconds * 1000.0)));
+        const double ms = std::min({seconds, seconds_left(), 1e6}) * 1000.0;
+        p.set("timeout", static_cast<unsigned>(std::max(1.0, ms)));
         s.set(p);
     }
 
@@ -167,7 +192,13 @@ struct FrontStage::Impl {
         }
 
         const z3::expr R = reach();
-        for (std::size_t j = 0; j < task.trajectory.size(); ++j) encode_primitive(static_cast<int>(j), R);
+        for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
+            if (j % 64 == 0 && expired()) {
+                incomplete = true;
+                return;
+            }
+            encode_primitive(static_cast<int>(j), R);
+        }
         encode_spans(R);
     }
 
@@ -178,7 +209,11 @@ struct FrontStage::Impl {
     void encode_spans(const z3::expr& R) {
         const int m = static_cast<int>(task.trajectory.size());
         std::vector<std::vector<geometry::Vec2>> pts;
-        for (const auto& p : task.trajectory) pts.push_back(sample_points(p, options.samples_per_primitive));
+        for (const auto& p : task.trajectory) pts.push_back(sample_points(p, samples));
+        if (m > kAllSpanPairs) {
+            encode_farthest_spans(R, pts);
+            return;
+        }
         for (int j = 0; j < m; ++j) {
             for (int k = j; k < m; ++k) {
                 double span = 0.0;
@@ -195,13 +230,53 @@ struct FrontStage::Impl {
         }
     }
 
+    // One span per primitive: to the primitive owning the hull vertex
+    // farthest from it. The widest pair of the path is among these.
+    void encode_farthest_spans(const z3::expr& R, const std::vector<std::vector<geometry::Vec2>>& pts) {
+        std::vector<geometry::Vec2> all;
+        for (const auto& v : pts) all.insert(all.end(), v.begin(), v.end());
+        std::vector<geometry::Vec2> hull = geometry::convex_hull(all);
+        if (hull.size() > kHullProbe) {
+            std::vector<geometry::Vec2> probe;
+            for (std::size_t i = 0; i < kHullProbe; ++i) probe.push_back(hull[i * hull.size() / kHullProbe]);
+            hull = std::move(probe);
+        }
+        // Which primitive a hull vertex came from.
+        std::vector<int> owner;
+        for (const auto& h : hull) {
+            int found = 0;
+            double best = 1e300;
+            for (std::size_t j = 0; j < pts.size(); ++j)
+                for (const auto& a : pts[j])
+                    if ((a - h).squaredNorm() < best) best = (a - h).squaredNorm(), found = static_cast<int>(j);
+            owner.push_back(found);
+        }
+        for (std::size_t j = 0; j < pts.size(); ++j) {
+            if (j % 64 == 0 && expired()) {
+                incomplete = true;
+                return;
+            }
+            double span = 0.0;
+            int partner = static_cast<int>(j);
+            for (std::size_t h = 0; h < hull.size(); ++h)
+                for (const auto& a : pts[j])
+                    if ((a - hull[h]).norm() > span) span = (a - hull[h]).norm(), partner = owner[h];
+            const std::string pj = "trajectory[" + std::to_string(j) + "]";
+            if (partner == static_cast<int>(j)) {
+                require({pj}, 2 * R >= num(span - kSlack));
+            } else {
+                require({pj, "trajectory[" + std::to_string(partner) + "]"}, 2 * R >= num(span - kSlack));
+            }
+        }
+    }
+
     void encode_primitive(int j, const z3::expr& R) {
         const geometry::Primitive& p = task.trajectory[j];
         const std::string name = "trajectory[" + std::to_string(j) + "]";
         const std::string diam = "robot.link_diameter";
         const kinematics::ClearanceRule rule{task.robot.link_diameter};
         const double d2 = rule.self_distance() * rule.self_distance() - kSlack;
-        const auto pts = sample_points(p, options.samples_per_primitive);
+        const auto pts = sample_points(p, samples);
         for (const auto& v : pts) {
             const z3::expr dv = dist2(v);
             require({name}, dv <= R * R + num(kSlack));
@@ -269,6 +344,7 @@ struct FrontStage::Impl {
     }
 
     FrontStage::Result check() {
+        if (incomplete || expired()) return Result::Unknown;
         set_timeout(solver, options.time_limit);
         const z3::check_result coarse = solver.check(assumptions());
         if (coarse != z3::sat) {
@@ -276,7 +352,7 @@ struct FrontStage::Impl {
             return coarse == z3::unsat ? Result::Unsat : Result::Unknown;
         }
         model = solver.get_model();
-        if (dof != 2) return Result::Sat;  // no refined families for these joint counts
+        if (dof != 2 || expired()) return Result::Sat;  // no refined families for these joint counts
         set_timeout(fine, std::min(options.time_limit, options.refined_time_limit));
         const z3::check_result refined = fine.check(assumptions());
         if (refined == z3::unsat) {
@@ -310,6 +386,8 @@ bool FrontStage::exhausted_by_blocking() const { return impl_->blocked > 0; }
 std::vector<std::string> FrontStage::minimal_core() {
     Impl& m = *impl_;
     z3::solver& s = m.unsat_refined ? m.fine : m.solver;
+    if (m.expired()) return {};
+    m.set_timeout(s, m.unsat_refined ? m.options.refined_time_limit : m.options.time_limit);
     // Other calls (conflicts) may have run checks since: re-establish the
     // conflict so the core below is this one's.
     if (s.check(m.assumptions()) != z3::unsat) return {};
@@ -318,7 +396,10 @@ std::vector<std::string> FrontStage::minimal_core() {
     for (unsigned i = 0; i < core.size(); ++i) kept.push_back(core[i]);
     // Deletion-based minimisation: drop each literal whose absence keeps the
     // conflict. Unsat answers of this relaxation are fast.
-    for (std::size_t i = 0; i < kept.size();) {
+    // At the deadline the core found so far is returned: a conflict, if
+    // not a minimal one.
+    for (std::size_t i = 0; i < kept.size() && !m.expired();) {
+        m.set_timeout(s, m.unsat_refined ? m.options.refined_time_limit : m.options.time_limit);
         z3::expr_vector trial(m.ctx);
         for (std::size_t k = 0; k < kept.size(); ++k)
             if (k != i) trial.push_back(kept[k]);
@@ -354,6 +435,7 @@ bool FrontStage::conflicts(const std::vector<std::string>& parts) {
         auto it = m.literal_of.find(part);
         if (it != m.literal_of.end()) a.push_back(it->second);
     }
+    if (m.incomplete || m.expired()) return false;
     m.set_timeout(m.solver, m.options.time_limit);
     if (m.solver.check(a) == z3::unsat) return true;
     if (m.dof != 2) return false;
@@ -372,6 +454,10 @@ std::string FrontStage::smtlib() const {
     return s + "))\n";
 }
 
-std::string FrontStage::reason_unknown() const { return impl_->solver.reason_unknown(); }
+std::string FrontStage::reason_unknown() const {
+    if (impl_->incomplete) return "time limit reached while encoding";
+    if (impl_->expired()) return "time limit reached";
+    return impl_->solver.reason_unknown();
+}
 
 }  // namespace modsynth::smt

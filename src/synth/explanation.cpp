@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <chrono>
 #include <optional>
 
 #include <modsynth/geometry/distance.h>
@@ -14,6 +15,16 @@ namespace modsynth::synth {
 namespace {
 
 using geometry::Vec2;
+using Clock = std::chrono::steady_clock;
+
+Clock::time_point after(double seconds) {
+    return Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                              std::chrono::duration<double>(std::min(seconds, 1e6)));
+}
+
+double seconds_until(Clock::time_point t) {
+    return std::chrono::duration<double>(t - Clock::now()).count();
+}
 
 
 bool has(const std::vector<std::string>& v, const std::string& s) {
@@ -47,10 +58,11 @@ std::string joint_counts(const task::Task& task) {
 
 // Front stage verdict over every allowed joint count: true when some count
 // is satisfiable (the conflict is gone), false when all are unsat or undecided.
-bool conflict_free(const task::Task& task, double time_limit) {
+bool conflict_free(const task::Task& task, double time_limit, Clock::time_point deadline) {
     for (int dof : task.robot.dof) {
         smt::FrontStageOptions o;
         o.time_limit = time_limit;
+        o.deadline = deadline;
         smt::FrontStage fs(task, dof, o);
         if (fs.check() == smt::FrontStage::Result::Sat) return true;
     }
@@ -58,11 +70,13 @@ bool conflict_free(const task::Task& task, double time_limit) {
 }
 
 // Smallest value in [lo, hi] (by bisection to `tolerance`) for which
-// `free(value)` holds, assuming monotonicity; nullopt if not even at hi.
+// `free(value)` holds, assuming monotonicity; nullopt if not even at hi, or
+// when the deadline passes first.
 template <typename Free>
-std::optional<double> smallest(double lo, double hi, double tolerance, Free free) {
+std::optional<double> smallest(double lo, double hi, double tolerance, Clock::time_point deadline, Free free) {
     if (!free(hi)) return std::nullopt;
     while (hi - lo > tolerance) {
+        if (Clock::now() >= deadline) return std::nullopt;
         const double mid = 0.5 * (lo + hi);
         (free(mid) ? hi : lo) = mid;
     }
@@ -70,6 +84,7 @@ std::optional<double> smallest(double lo, double hi, double tolerance, Free free
 }
 
 std::string attempt(const task::Task& relaxed, double seconds) {
+    if (seconds <= 0.0) return "the conflict is gone; not solved: the time limit was reached";
     SynthesisOptions options;
     options.time_limit = seconds;
     const Solution s = synthesize(relaxed, options);
@@ -87,6 +102,7 @@ std::string attempt(const task::Task& relaxed, double seconds) {
 std::vector<std::string> common_core(const task::Task& task,
                                      const std::vector<std::vector<std::string>>& cores,
                                      double time_limit) {
+    const Clock::time_point deadline = after(time_limit);
     std::vector<std::vector<std::string>> candidates = cores;
     std::sort(candidates.begin(), candidates.end(),
               [](const auto& a, const auto& b) { return a.size() < b.size(); });
@@ -95,6 +111,7 @@ std::vector<std::string> common_core(const task::Task& task,
         for (int dof : task.robot.dof) {
             smt::FrontStageOptions o;
             o.time_limit = time_limit;
+            o.deadline = deadline;
             smt::FrontStage fs(task, dof, o);
             everywhere = everywhere && fs.conflicts(c);
         }
@@ -109,10 +126,12 @@ std::vector<std::string> common_core(const task::Task& task,
 
 InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
     InfeasibilityProof proof;
+    const Clock::time_point deadline = after(time_limit);
     std::vector<std::vector<std::string>> cores;
     for (int dof : task.robot.dof) {
         smt::FrontStageOptions o;
         o.time_limit = time_limit;
+        o.deadline = deadline;
         smt::FrontStage fs(task, dof, o);
         const auto r = fs.check();
         if (r != smt::FrontStage::Result::Unsat) {
@@ -121,9 +140,11 @@ InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
             continue;
         }
         cores.push_back(fs.minimal_core());
+        if (cores.back().empty()) proof.open += (proof.open.empty() ? "" : "; ") + std::to_string(dof) +
+                                               " joints: no core within the time limit";
     }
     proof.proved = proof.open.empty() && !cores.empty();
-    if (proof.proved) proof.core = common_core(task, cores, time_limit);
+    if (proof.proved) proof.core = common_core(task, cores, std::max(0.0, seconds_until(deadline)));
     return proof;
 }
 
@@ -194,16 +215,25 @@ std::string describe_part(const task::Task& task, const std::string& part) {
 }
 
 std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::vector<std::string>& core,
-                                            double solve_seconds) {
+                                            double solve_seconds, double time_limit) {
     constexpr double kCheck = 5.0;  // seconds per front-stage check
+    const Clock::time_point deadline = after(time_limit);
+    const auto conflict_free = [&](const task::Task& t, double limit) {
+        return synth::conflict_free(t, limit, deadline);
+    };
+    const auto smallest = [&](double lo, double hi, double tolerance, auto free) {
+        return synth::smallest(lo, hi, tolerance, deadline, free);
+    };
     std::vector<Relaxation> out;
     auto offer = [&](const std::string& part, const std::string& change, const task::Task& relaxed) {
         // Re-checked here, whatever the search that found it assumed.
         if (!conflict_free(relaxed, kCheck)) return;
-        out.push_back({part, change, relaxed, attempt(relaxed, solve_seconds)});
+        out.push_back({part, change, relaxed,
+                       attempt(relaxed, std::min(solve_seconds, seconds_until(deadline)))});
     };
     const auto traj = with_prefix(core, "trajectory[");
     for (const std::string& part : core) {
+        if (Clock::now() >= deadline) break;
         task::Task t = task;
         if (part == "robot.max_link_length") {
             const auto v = smallest(task.robot.max_link_length, 50.0, 0.005, [&](double x) {
@@ -245,7 +275,9 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             // Where the base can stand: the model of a satisfiable joint count.
             std::optional<Vec2> found;
             for (int dof : task.robot.dof) {
-                smt::FrontStage fs(grown(*v), dof);
+                smt::FrontStageOptions o;
+                o.deadline = deadline;
+                smt::FrontStage fs(grown(*v), dof, o);
                 if (fs.check() == smt::FrontStage::Result::Sat) {
                     found = fs.skeleton().base;
                     break;

@@ -14,11 +14,19 @@ namespace {
 
 using geometry::Vec2;
 
+// At most 200 points a primitive, and the spacing widened when the whole
+// path would need more than 20000: the guesses need the path's shape, and
+// their work must not grow with its absolute size.
 std::vector<Vec2> path_points(const task::Task& task, double spacing) {
+    double total = 0.0;
+    for (const auto& p : task.trajectory) total += geometry::length(p);
+    spacing = std::max(spacing, total / 20000.0);
+    // Many primitives: their ends and critical points carry the shape.
+    const double fewest = task.trajectory.size() > 1000 ? 1.0 : 4.0;
     std::vector<Vec2> pts;
     for (const auto& p : task.trajectory) {
         const double len = geometry::length(p);
-        const int n = std::max(4, static_cast<int>(std::ceil(len / spacing)));
+        const int n = static_cast<int>(std::clamp(std::ceil(len / spacing), fewest, 200.0));
         for (int i = 0; i <= n; ++i) pts.push_back(geometry::point_at(p, len * i / n));
     }
     return pts;
@@ -161,13 +169,14 @@ bool sort_and_keep_distinct(std::vector<ScoredRobot>& all, int count) {
 }
 
 std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::Skeleton& skeleton, int count,
-                                            unsigned seed) {
+                                            unsigned seed, std::chrono::steady_clock::time_point deadline) {
     const auto pts = path_points(task, 0.02);
     std::vector<std::vector<Vec2>> per_primitive;
     double span = 0.0;
     for (const auto& prim : task.trajectory) {
         const double len = geometry::length(prim);
-        const int n = std::max(4, static_cast<int>(std::ceil(len / 0.03)));
+        // Capped: the span below is quadratic in it.
+        const int n = static_cast<int>(std::clamp(std::ceil(len / 0.03), 4.0, 64.0));
         per_primitive.emplace_back();
         for (int i = 0; i <= n; ++i) per_primitive.back().push_back(geometry::point_at(prim, len * i / n));
         for (const Vec2& a : per_primitive.back())
@@ -181,7 +190,7 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<ScoredRobot> all;
     constexpr int kCandidates = 120;
-    for (int i = 0; i < kCandidates; ++i) {
+    for (int i = 0; i < kCandidates && std::chrono::steady_clock::now() < deadline; ++i) {
         kinematics::Robot robot;
         robot.base = uniform_in(rng, lo, hi);
         robot.link_diameter = task.robot.link_diameter;
@@ -205,8 +214,9 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
 }  // namespace
 
 std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skeleton& skeleton,
-                                         int count, unsigned seed) {
-    if (skeleton.dof == 3) return three_link_guesses(task, skeleton, count, seed);
+                                         int count, unsigned seed,
+                                         std::chrono::steady_clock::time_point deadline) {
+    if (skeleton.dof == 3) return three_link_guesses(task, skeleton, count, seed, deadline);
     const auto pts = path_points(task, 0.02);
     const double lo = task.robot.min_link_length, hi = task.robot.max_link_length;
     Vec2 bmin, bmax;
@@ -228,7 +238,7 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
     if (skeleton.link_lengths.size() == 2)
         consider(skeleton.base, skeleton.link_lengths[0], skeleton.link_lengths[1]);
     constexpr int kCandidates = 600;
-    for (int i = 0; i < kCandidates; ++i) {
+    for (int i = 0; i < kCandidates && (i % 16 != 0 || std::chrono::steady_clock::now() < deadline); ++i) {
         const Vec2 base(bmin.x() + u(rng) * (bmax.x() - bmin.x()), bmin.y() + u(rng) * (bmax.y() - bmin.y()));
         double far = 0.0, near = std::numeric_limits<double>::infinity();
         for (const auto& prim : task.trajectory) {

@@ -35,12 +35,20 @@ std::string join(const std::vector<std::string>& v, const char* sep) {
 
 // Points where the refinement constrains the arm: evenly spaced along each
 // primitive (critical points are added for the robot at hand).
+// The count per primitive is capped, and the spacing widened when the
+// whole path would need more than kTotal, so that the program stays small
+// on long paths (the counterexamples add points where they are needed).
 std::vector<nlp::PathPoint> spaced_points(const task::Task& task) {
     constexpr double kSpacing = 0.025;
+    constexpr double kPerPrimitive = 200;
+    constexpr double kTotal = 20000;
+    double total = 0.0;
+    for (const auto& p : task.trajectory) total += geometry::length(p);
+    const double spacing = std::max(kSpacing, total / kTotal);
     std::vector<nlp::PathPoint> pts;
     for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
         const double len = geometry::length(task.trajectory[j]);
-        const int n = std::max(4, static_cast<int>(std::ceil(len / kSpacing)));
+        const int n = static_cast<int>(std::clamp(std::ceil(len / spacing), 4.0, kPerPrimitive));
         for (int i = 0; i <= n; ++i) pts.push_back({j, len * i / n});
     }
     return pts;
@@ -86,7 +94,16 @@ void add_critical_points(const task::Task& task, const kinematics::Robot& robot,
 class Search {
 public:
     Search(const task::Task& task, const SynthesisOptions& options, SynthesisStats& stats)
-        : task_(task), opt_(options), stats_(stats), start_(Clock::now()) {}
+        : task_(task), opt_(options), stats_(stats), start_(Clock::now()), motion_(options.motion) {
+        deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(
+                                 std::chrono::duration<double>(std::max(0.0, opt_.time_limit)));
+        motion_.deadline = deadline_;
+        // A long path is sampled more coarsely rather than without bound;
+        // the verifier certifies whatever steps the motion takes.
+        double total = 0.0;
+        for (const auto& p : task.trajectory) total += geometry::length(p);
+        motion_.max_ee_step = std::max(motion_.max_ee_step, total / kTraceSamples);
+    }
 
     Solution run();
 
@@ -101,10 +118,15 @@ private:
                 nlp::SweptVolume swept, Solution& out);
     bool finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, Solution& out);
 
+    // Trace samples the path gets at the default step when it is long.
+    static constexpr double kTraceSamples = 250000;
+
     const task::Task& task_;
     const SynthesisOptions& opt_;
     SynthesisStats& stats_;
     Clock::time_point start_;
+    Clock::time_point deadline_;
+    control::MotionOptions motion_;
     std::vector<std::string> tried_;
 };
 
@@ -122,6 +144,11 @@ Solution Search::run() {
         smt::FrontStageOptions fo;
         fo.time_limit = std::min(10.0, std::max(0.1, remaining()));
         fo.seed = opt_.seed;
+        // Tearing down a large encoding takes time too: the front stage
+        // stops a little before the run must end.
+        fo.deadline = deadline_ - std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(std::min(0.3, 0.1 * opt_.time_limit)));
+        say(std::to_string(dof) + " joints: front stage");
         smt::FrontStage front(task_, dof, fo);
         auto result = front.check();
         stats_.front_seconds += seconds_since(t0);
@@ -206,7 +233,7 @@ void Search::shorten(const smt::Skeleton& found, Solution& out) {
 }
 
 bool Search::try_skeleton(const smt::Skeleton& skeleton, Solution& out, int count) {
-    const auto guesses = initial_guesses(task_, skeleton, count, opt_.seed);
+    const auto guesses = initial_guesses(task_, skeleton, count, opt_.seed, deadline_);
     for (const auto& g : guesses) {
         if (remaining() <= 0.0) return false;
         say(text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(), g.robot.base.y(),
@@ -275,7 +302,12 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
     std::vector<nlp::PathPoint>& points = problem.points;
     const auto t0 = Clock::now();
     control::MotionFailure failure;
-    auto motion = control::plan_motion(task_, robot, opt_.motion, &failure);
+    auto motion = control::plan_motion(task_, robot, motion_, &failure);
+    if (!motion && failure.gave_up) {
+        say("    motion planning stopped: " + failure.message);
+        stats_.verify_seconds += seconds_since(t0);
+        return false;  // nothing learnt: the refinement of this guess ends
+    }
     if (!motion) {
         say("    out of reach at " + failure.message);
         if (failure.transition) {
@@ -288,15 +320,17 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
         return false;
     }
     verify::VerifyOptions vo;
-    vo.max_joint_step = opt_.motion.max_joint_step;
+    vo.max_joint_step = motion_.max_joint_step;
+    vo.max_ee_step = std::max(vo.max_ee_step, motion_.max_ee_step);
     verify::Certificate cert = verify::certify(task_, robot, *motion, vo);
-    for (int pass = 0; pass < 8 && cert.violations.empty() && !cert.coarse_pairs.empty(); ++pass) {
+    for (int pass = 0; pass < 8 && cert.violations.empty() && !cert.coarse_pairs.empty() && remaining() > 0.0;
+         ++pass) {
         if (!control::refine_motion(task_, robot, *motion, cert.coarse_pairs)) break;
         cert = verify::certify(task_, robot, *motion, vo);
     }
     stats_.verify_seconds += seconds_since(t0);
     if (cert.ok) {
-        control::assign_times(*motion, opt_.motion);
+        control::assign_times(*motion, motion_);
         out.status = Status::Solved;
         out.robot = robot;
         out.samples = std::move(*motion);

@@ -15,7 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/geometry/distance.h>
+#include <modsynth/task/limits.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/printable.h>
 
 namespace modsynth::task {
 
@@ -35,7 +37,7 @@ std::string fixed(double value, int decimals) { return text::format("%.*f", deci
 /// A length for a message: 3 decimals, or as many as needed to show a tiny
 /// but non-zero value, so that a rejected 2e-6 m gap does not read "0.000 m".
 std::string metres(double value) {
-    if (!std::isfinite(value)) return std::to_string(value);
+    if (!std::isfinite(value) || std::fabs(value) >= 1e6) return text::compact(value);
     int decimals = 3;
     while (decimals < 12 && value != 0.0 && std::fabs(value) < 0.5 * std::pow(10.0, -decimals)) {
         ++decimals;
@@ -53,9 +55,7 @@ std::string describe(const json& j) {
         case json::value_t::boolean:
             return j.get<bool>() ? "true" : "false";
         case json::value_t::string: {
-            std::string s = j.get<std::string>();
-            if (s.size() > 40) s = s.substr(0, 37) + "...";
-            return "the text \"" + s + "\"";
+            return "the text \"" + text::printable(j.get<std::string>()) + "\"";
         }
         case json::value_t::array:
             return "a list";
@@ -64,8 +64,7 @@ std::string describe(const json& j) {
         case json::value_t::number_float: {
             const double v = j.get<double>();
             if (std::isnan(v)) return "NaN";
-            if (std::isinf(v)) return v > 0 ? "infinity" : "-infinity";
-            return j.dump();
+            return text::compact(v);
         }
         default:
             return j.dump();
@@ -121,16 +120,34 @@ double finite_number(const json& j, const std::string& part, const char* what) {
     return v;
 }
 
+void require_size_cap(double v, const std::string& part) {
+    if (v > kMaxLength) {
+        throw InputError(part, metres(v) + " m is more than the " + text::compact(kMaxLength) +
+                                   " m allowed for a size");
+    }
+}
+
 double positive_length(const json& j, const std::string& part) {
     const double v = finite_number(j, part, "a length in metres");
     if (v <= 0.0) throw InputError(part, "must be greater than 0 m, got " + metres(v) + " m");
+    require_size_cap(v, part);
     return v;
 }
 
 double non_negative_length(const json& j, const std::string& part) {
     const double v = finite_number(j, part, "a length in metres");
     if (v < 0.0) throw InputError(part, "must not be negative, got " + metres(v) + " m");
+    require_size_cap(v, part);
     return v;
+}
+
+/// More than `cap` elements in a list is rejected before any is parsed.
+void require_count_cap(const json& list, const std::string& part, const char* what,
+                       std::size_t cap) {
+    if (list.size() > cap) {
+        throw InputError(part, std::to_string(list.size()) + " " + what + ", more than the " +
+                                   std::to_string(cap) + " allowed");
+    }
 }
 
 Vec2 point(const json& j, const std::string& part) {
@@ -148,6 +165,11 @@ Vec2 point(const json& j, const std::string& part) {
                                        " coordinate must be a finite number, got " + describe(c));
         }
         p[k] = c.get<double>();
+        if (std::fabs(p[k]) > kMaxCoordinate) {
+            throw InputError(part, std::string("the ") + names[k] + " coordinate " + metres(p[k]) +
+                                       " m is beyond the " + text::compact(kMaxCoordinate) +
+                                       " m from the origin allowed");
+        }
     }
     return p;
 }
@@ -166,8 +188,8 @@ bool direction_ccw(const json& prim, const std::string& part, const char* why) {
     const std::string d = text(required(prim, part, "direction", why), p, "\"ccw\" or \"cw\"");
     if (d == "ccw") return true;
     if (d == "cw") return false;
-    throw InputError(
-        p, "expected \"ccw\" (counter-clockwise) or \"cw\" (clockwise), got \"" + d + "\"");
+    throw InputError(p, "expected \"ccw\" (counter-clockwise) or \"cw\" (clockwise), got \"" +
+                            text::printable(d) + "\"");
 }
 
 Vec2 required_point(const json& prim, const std::string& part, const char* key, const char* why) {
@@ -232,13 +254,14 @@ Primitive parse_circle(const json& prim, const std::string& part) {
 
 Primitive parse_primitive(const json& prim, const std::string& part) {
     require_object(prim, part, "{\"type\": \"line\", \"start\": [x, y], \"end\": [x, y]}");
-    const char* why = "expected \"line\", \"arc\" or \"circle\"";
+    const char* kinds = "\"line\", \"arc\" or \"circle\"";
+    const std::string why = std::string("expected ") + kinds;
     const std::string tp = member(part, "type");
-    const std::string type = text(required(prim, part, "type", why), tp, why);
+    const std::string type = text(required(prim, part, "type", why.c_str()), tp, kinds);
     if (type == "line") return parse_line(prim, part);
     if (type == "arc") return parse_arc(prim, part);
     if (type == "circle") return parse_circle(prim, part);
-    throw InputError(tp, "unknown primitive type \"" + type + "\"; " + why);
+    throw InputError(tp, "unknown primitive type \"" + text::printable(type) + "\"; " + why);
 }
 
 void require_connected(const Primitive& prev, const Primitive& next, std::size_t j) {
@@ -257,6 +280,7 @@ std::vector<Primitive> parse_trajectory(const json& doc) {
         required(doc, "", "trajectory", "a task needs a list of primitives to follow");
     require_array(list, part, "primitives");
     if (list.empty()) throw InputError(part, "is empty; a task needs at least one primitive");
+    require_count_cap(list, part, "primitives", kMaxPrimitives);
     std::vector<Primitive> out;
     out.reserve(list.size());
     for (std::size_t j = 0; j < list.size(); ++j) {
@@ -295,11 +319,13 @@ BaseRegion parse_base_region(const json& j, const std::string& part) {
 }
 
 template <class T, class Parse>
-std::vector<T> parse_list(const json& doc, const char* key, const char* what, Parse parse) {
+std::vector<T> parse_list(const json& doc, const char* key, const char* what, std::size_t cap,
+                          Parse parse) {
     std::vector<T> out;
     const json* list = optional(doc, key);
     if (!list) return out;
     require_array(*list, key, what);
+    require_count_cap(*list, key, what, cap);
     for (std::size_t i = 0; i < list->size(); ++i) {
         out.push_back(parse((*list)[i], element(key, i)));
     }
@@ -415,13 +441,28 @@ std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size
     return {line, column};
 }
 
-/// nlohmann's explanation without its exception-id prefix and its position.
+/// nlohmann's explanation without its exception-id prefix and its position;
+/// it quotes the input, so it is made printable.
 std::string parse_detail(const nlohmann::json::parse_error& e) {
     const std::string what = e.what();
     const std::size_t at = what.find("syntax error");
-    if (at != std::string::npos) return what.substr(at);
+    if (at != std::string::npos) return text::printable(what.substr(at), 200);
     const std::size_t colon = what.find(": ");
-    return colon == std::string::npos ? what : what.substr(colon + 2);
+    return text::printable(colon == std::string::npos ? what : what.substr(colon + 2), 200);
+}
+
+/// The number the parser could not hold (1e999) and where it stands:
+/// nlohmann reports no position for it, only the number's text.
+std::string overflow_detail(std::string_view text, const std::string& what) {
+    const std::size_t open = what.find('\'');
+    const std::size_t close = what.rfind('\'');
+    if (open == std::string::npos || close <= open + 1) return "a number";
+    const std::string number = what.substr(open + 1, close - open - 1);
+    std::string out = "the number " + text::printable(number);
+    const std::size_t at = text.find(number);
+    if (at == std::string_view::npos) return out;
+    const auto [line, column] = line_column(text, at + 1);
+    return out + " at line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
 }  // namespace
@@ -474,15 +515,20 @@ Task parse_task(const json& doc) {
     Task task;
     task.name = parse_name(doc);
     task.trajectory = parse_trajectory(doc);
-    task.obstacles = parse_list<Obstacle>(doc, "obstacles", "obstacles", parse_obstacle);
+    task.obstacles = parse_list<Obstacle>(doc, "obstacles", "obstacles", kMaxObstacles, parse_obstacle);
     task.base_regions =
-        parse_list<BaseRegion>(doc, "base_regions", "base regions", parse_base_region);
+        parse_list<BaseRegion>(doc, "base_regions", "base regions", kMaxBaseRegions,
+                               parse_base_region);
     task.robot = parse_robot(doc);
     check_clearance(task);
     return task;
 }
 
 Task parse_task_text(std::string_view text) {
+    if (text.size() > kMaxTaskBytes) {
+        throw InputError(kDocument, std::to_string(text.size()) + " bytes, more than the " +
+                                        std::to_string(kMaxTaskBytes) + " allowed for a task");
+    }
     json doc;
     try {
         doc = json::parse(text.begin(), text.end());
@@ -490,8 +536,11 @@ Task parse_task_text(std::string_view text) {
         const auto [line, column] = line_column(text, e.byte);
         throw InputError(kDocument, "not valid JSON at line " + std::to_string(line) + ", column " +
                                         std::to_string(column) + ": " + parse_detail(e));
+    } catch (const json::out_of_range& e) {
+        // The only one the parser throws: a number beyond double (1e999).
+        throw InputError(kDocument, overflow_detail(text, e.what()) +
+                                        " is too large; numbers must be finite");
     } catch (const json::exception& e) {
-        // A number beyond double's range ("1e999") is an out_of_range error.
         throw InputError(kDocument, "not valid JSON: " + json_error_detail(e));
     }
     return parse_task(doc);
@@ -513,6 +562,13 @@ std::string read_input_file(const std::string& path, const std::string& what) {
 }
 
 Task load_task(const std::string& path) {
+    // Checked before reading, so that a huge file is not loaded at all.
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(path, ec);
+    if (!ec && bytes > kMaxTaskBytes) {
+        throw InputError(path, std::to_string(bytes) + " bytes, more than the " +
+                                   std::to_string(kMaxTaskBytes) + " allowed for a task file");
+    }
     Task task = parse_task_text(read_input_file(path, "task"));
     if (task.name.empty()) task.name = std::filesystem::path(path).stem().string();
     return task;

@@ -1,26 +1,67 @@
 // Task parsing and validation on arbitrary bytes: every input is either a
 // task or an InputError naming the offending part; nothing else escapes,
-// and a task that parses writes back to JSON that parses to the same task.
+// messages are short printable UTF-8, a task stays within the documented
+// caps, and a task that parses writes back to JSON that parses to the same
+// task. What the CLI prints of a valid task (the description of each part)
+// must not throw either.
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <string>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/synth/explanation.h>
 #include <modsynth/task/input_error.h>
+#include <modsynth/task/limits.h>
 #include <modsynth/task/task_io.h>
+#include <modsynth/text/printable.h>
+
+namespace {
+
+using namespace modsynth::task;
+
+bool printable(const std::string& s) {
+    return s.size() < 1000 && modsynth::text::printable(s, s.size()) == s;
+}
+
+bool within_caps(const Task& t) {
+    const auto inside = [](const modsynth::geometry::Vec2& p) {
+        return std::fabs(p.x()) <= kMaxCoordinate && std::fabs(p.y()) <= kMaxCoordinate;
+    };
+    if (t.trajectory.size() > kMaxPrimitives || t.obstacles.size() > kMaxObstacles ||
+        t.base_regions.size() > kMaxBaseRegions)
+        return false;
+    for (const auto& p : t.trajectory)
+        if (!inside(p.start) || !inside(p.end)) return false;
+    for (const auto& o : t.obstacles)
+        if (!inside(o.center) || o.radius > kMaxLength) return false;
+    return t.robot.max_link_length <= kMaxLength;
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    using namespace modsynth::task;
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     Task task;
     try {
         task = parse_task_text(text);
-    } catch (const InputError&) {
+    } catch (const InputError& e) {
+        if (!printable(e.what())) std::abort();
         return 0;
     }
+    if (!within_caps(task)) std::abort();
     // What parsed must survive its own round trip.
     const auto again = to_json(parse_task(to_json(task)));
     if (again != to_json(task)) std::abort();
+    // The descriptions explain and the report print for every part.
+    for (std::size_t j = 0; j < task.trajectory.size() && j < 8; ++j)
+        (void)modsynth::synth::describe_part(task, "trajectory[" + std::to_string(j) + "]");
+    for (std::size_t i = 0; i < task.obstacles.size() && i < 8; ++i)
+        (void)modsynth::synth::describe_part(task, "obstacles[" + std::to_string(i) + "]");
+    for (const char* part : {"base_regions", "robot.max_link_length", "robot.min_link_length",
+                             "robot.link_diameter", "robot.dof"})
+        (void)modsynth::synth::describe_part(task, part);
     return 0;
 }

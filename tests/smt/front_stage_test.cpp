@@ -1,8 +1,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 
+#include <modsynth/geometry/primitive.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/task/task_io.h>
 
@@ -121,4 +123,45 @@ TEST_CASE("the encoding dumps as SMT-LIB2 with its task-part literals", "[smt]")
     CHECK(smt2.find("declare-fun") != std::string::npos);
     CHECK(smt2.find("|trajectory[6]|") != std::string::npos);
     CHECK(smt2.find("base_regions") != std::string::npos);
+}
+
+namespace {
+
+// `count` short lines along the x axis from x0: a path of many primitives.
+task::Task many_lines(int count, double x0, double length) {
+    task::Task t;
+    const double step = length / count;
+    for (int j = 0; j < count; ++j)
+        t.trajectory.push_back(geometry::make_line({x0 + j * step, 0.3}, {x0 + (j + 1) * step, 0.3}));
+    return t;
+}
+
+}  // namespace
+
+TEST_CASE("front stage stops at its deadline, in encoding or in a check", "[smt]") {
+    const task::Task t = many_lines(3000, -0.5, 1.0);
+    smt::FrontStageOptions o;
+    o.deadline = std::chrono::steady_clock::now();
+    const auto t0 = std::chrono::steady_clock::now();
+    FrontStage fs(t, 2, o);
+    CHECK(fs.check() == FrontStage::Result::Unknown);
+    CHECK(fs.minimal_core().empty());
+    CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 0.5);
+    CHECK_THAT(fs.reason_unknown(), Catch::Matchers::Contains("time limit"));
+}
+
+TEST_CASE("front stage on a long path keeps the span of its widest pair", "[smt]") {
+    // 200 primitives (past the all-pairs threshold) spanning 3 m: with links
+    // of at most 0.7 m no base reaches both ends.
+    task::Task t = many_lines(200, -1.5, 3.0);
+    t.robot.max_link_length = 0.7;
+    t.robot.dof = {2};
+    const auto t0 = std::chrono::steady_clock::now();
+    FrontStage fs(t, 2);
+    REQUIRE(fs.check() == FrontStage::Result::Unsat);
+    const auto core = fs.minimal_core();
+    CHECK(contains(core, "robot.max_link_length"));
+    CHECK(std::count_if(core.begin(), core.end(),
+                        [](const std::string& p) { return p.rfind("trajectory[", 0) == 0; }) >= 1);
+    CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 10.0);
 }

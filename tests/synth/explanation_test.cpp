@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <set>
 
@@ -65,4 +66,17 @@ TEST_CASE("a feasible task is not proved infeasible", "[explain]") {
     const auto proof = synth::prove_infeasible(t, 10.0);
     CHECK_FALSE(proof.proved);
     CHECK(proof.open.find("not ruled out") != std::string::npos);
+}
+
+TEST_CASE("suggestions and proofs end at their time limit", "[explain]") {
+    const task::Task t = task::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
+    const auto proof = synth::prove_infeasible(t, 10.0);
+    REQUIRE(proof.proved);
+    // Unbounded, the bisections and the solves of the relaxed tasks take
+    // about 20 s here; with 1 s in all they stop in time.
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto suggestions = synth::suggest_relaxations(t, proof.core, 10.0, 1.0);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    CHECK(seconds < 2.0);
+    for (const auto& s : suggestions) CHECK_FALSE(s.change.empty());
 }

@@ -8,7 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/task/limits.h>
 #include <modsynth/task/task_io.h>
+#include <modsynth/text/printable.h>
 
 using Catch::Matchers::Contains;
 using modsynth::geometry::kPi;
@@ -57,6 +59,12 @@ TEST_CASE("every invalid fixture is rejected naming its part", "[task]") {
             CHECK_THAT(e.what(), Contains(want.at("message_contains").get<std::string>()));
             // what() is "PART: problem" so a user sees where to look.
             CHECK_THAT(e.what(), Catch::Matchers::StartsWith(e.part() + ": "));
+            // Messages are short, printable UTF-8 and say things once,
+            // whatever bytes or numbers the task holds.
+            const std::string what = e.what();
+            CHECK(what.size() < 400);
+            CHECK(modsynth::text::printable(what, what.size()) == what);
+            CHECK_THAT(what, !Contains("expected expected"));
         }
     }
 }
@@ -256,4 +264,56 @@ TEST_CASE("an unreadable task file names the path", "[task]") {
     CHECK_THAT(e.what(), Contains("cannot open"));
     const InputError d = input_error([&] { modsynth::task::load_task(kFixtures + "valid"); });
     CHECK_THAT(d.what(), Contains("folder"));
+}
+
+TEST_CASE("tasks past the documented caps are rejected naming the part and the cap", "[task]") {
+    using namespace modsynth::task;
+    SECTION("primitives") {
+        json doc = minimal_doc();
+        json line = doc["trajectory"][0];
+        for (std::size_t i = 0; i < kMaxPrimitives; ++i) {
+            // Back and forth along one segment: connected, and any count.
+            std::swap(line["start"], line["end"]);
+            doc["trajectory"].push_back(line);
+        }
+        const InputError e = input_error([&] { parse_task(doc); });
+        CHECK(e.part() == "trajectory");
+        CHECK_THAT(e.what(), Contains("5001 primitives, more than the 5000 allowed"));
+        doc["trajectory"].erase(doc["trajectory"].size() - 1);
+        CHECK(parse_task(doc).trajectory.size() == kMaxPrimitives);
+    }
+    SECTION("obstacles") {
+        json doc = minimal_doc();
+        doc["obstacles"] = json::array();
+        for (std::size_t i = 0; i <= kMaxObstacles; ++i)
+            doc["obstacles"].push_back({{"center", {-0.5, 0.001 * i}}, {"radius", 0.0001}});
+        const InputError e = input_error([&] { parse_task(doc); });
+        CHECK(e.part() == "obstacles");
+        CHECK_THAT(e.what(), Contains("1001 obstacles, more than the 1000 allowed"));
+    }
+    SECTION("coordinates and sizes") {
+        json doc = minimal_doc();
+        doc["trajectory"][0]["end"] = {1000.0, 0.1};
+        CHECK_NOTHROW(parse_task(doc));
+        doc["trajectory"][0]["end"] = {1000.5, 0.1};
+        CHECK(input_error([&] { parse_task(doc); }).part() == "trajectory[0].end");
+        doc = minimal_doc();
+        doc["obstacles"] = {{{"center", {-5.0, 0.0}}, {"radius", 1e4}}};
+        CHECK(input_error([&] { parse_task(doc); }).part() == "obstacles[0].radius");
+    }
+    SECTION("file size") {
+        const std::string big(kMaxTaskBytes + 1, ' ');
+        const InputError e = input_error([&] { parse_task_text(big); });
+        CHECK(e.part() == "(document)");
+        CHECK_THAT(e.what(), Contains("allowed for a task"));
+    }
+}
+
+TEST_CASE("echoed text is printable and cut short", "[task]") {
+    using modsynth::text::printable;
+    CHECK(printable("ab\xff\x01" "c") == "ab\\xFF\\x01c");
+    CHECK(printable("caf\xc3\xa9") == "caf\xc3\xa9");  // valid UTF-8 stays
+    CHECK(printable("\xc3") == "\\xC3");                 // a cut sequence does not
+    CHECK(printable(std::string(100, 'x'), 10) == std::string(10, 'x') + "...");
+    CHECK(modsynth::text::compact(1e308) == "1e+308");
 }

@@ -1,6 +1,8 @@
 #pragma once
 // The control: joint angles over time (formats.md "samples"), computed from
 // the exact inverse kinematics along each primitive.
+#include <chrono>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +29,10 @@ struct MotionOptions {
     double max_ee_step = 0.002;    ///< m of path between consecutive trace samples
     double ee_speed = 0.05;        ///< m/s along the path
     double joint_speed = 1.0;      ///< rad/s, the limit of every joint
+    /// Planning gives up past this many samples (memory stays bounded on
+    /// long paths and short links) or past the deadline.
+    std::size_t max_samples = 1'000'000;
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
 
 /// The configuration that puts the EE at arc length s of primitive j, on the
@@ -54,6 +60,9 @@ struct MotionFailure {
     int primitive = -1;
     bool transition = false;  ///< in the transition after `primitive`
     double s = 0.0;           ///< arc length (first joint's angle in a transition)
+    /// Planning stopped at the sample cap or the deadline: no point of the
+    /// path is to blame.
+    bool gave_up = false;
     std::string message;
 };
 

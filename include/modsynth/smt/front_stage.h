@@ -5,6 +5,7 @@
 // constraint family is guarded by an assumption literal named after the
 // task part it comes from, so an unsat answer is a proof of infeasibility
 // whose core reads as an explanation.
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,6 +21,10 @@ struct FrontStageOptions {
     double refined_time_limit = 2.0;
     int samples_per_primitive = 8;
     unsigned seed = 0;
+    /// No work past this instant: encoding stops (the check then answers
+    /// Unknown), every check's timeout ends here, and core minimisation
+    /// returns the core it has.
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
 
 class FrontStage {

@@ -18,7 +18,8 @@ struct InfeasibilityProof {
     std::string open;
 };
 
-/// The front stage over every allowed joint count.
+/// The front stage over every allowed joint count, within `time_limit`
+/// seconds in all (a proof not finished by then is not one).
 InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit);
 
 /// Among per-joint-count cores, one that conflicts for all of them when
@@ -44,8 +45,10 @@ struct Relaxation {
 
 /// For each part of the core, the smallest change of that part alone that
 /// makes the front stage satisfiable (found by bisection), re-checked, and
-/// then tried with the full pipeline for `solve_seconds`.
+/// then tried with the full pipeline for `solve_seconds`. Everything ends
+/// within `time_limit` seconds: the bisections stop there and the
+/// suggestions found so far are returned.
 std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::vector<std::string>& core,
-                                            double solve_seconds);
+                                            double solve_seconds, double time_limit = 1e6);
 
 }  // namespace modsynth::synth

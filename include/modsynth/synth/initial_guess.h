@@ -2,6 +2,7 @@
 // Initial guesses for the refinement: a cheap, deterministic random search
 // over 2-joint robots on one skeleton (elbow sign and base region) that
 // scores each candidate by its worst margin at points along the path.
+#include <chrono>
 #include <vector>
 
 #include <modsynth/kinematics/robot.h>
@@ -21,8 +22,10 @@ struct ScoredRobot {
 double path_margin(const task::Task& task, const kinematics::Robot& robot, double spacing);
 
 /// Up to `count` distinct candidates, best first: clear ones by shorter
-/// total length, the others by larger margin.
-std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skeleton& skeleton,
-                                         int count, unsigned seed);
+/// total length, the others by larger margin. Candidates stop at the
+/// deadline (those scored by then are kept).
+std::vector<ScoredRobot> initial_guesses(
+    const task::Task& task, const smt::Skeleton& skeleton, int count, unsigned seed,
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
 
 }  // namespace modsynth::synth
