@@ -1,6 +1,7 @@
 #include <memory>
 
 #include "command.h"
+#include "loopback.h"
 #include "server.h"
 
 namespace modsynth::app {

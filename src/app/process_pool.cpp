@@ -80,6 +80,9 @@ pid_t spawn(const ProcessSpec& spec) {
         posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, spec.stderr_path.c_str(),
                                          O_WRONLY | O_CREAT | O_TRUNC, 0644);
     }
+    // After the opens, so that their relative paths mean the same as here.
+    if (!spec.working_dir.empty())
+        posix_spawn_file_actions_addchdir_np(&actions, spec.working_dir.c_str());
     // A parent that blocks or ignores signals (a server does) must not pass
     // that on: a child should die of SIGINT, SIGTERM and SIGPIPE as usual.
     posix_spawnattr_t attr;
