@@ -142,7 +142,10 @@ void check_reply(std::string_view request, std::string_view reply) {
     const std::string_view body_and_more = rest.substr(head_end + 4);
     // A compressed body (Accept-Encoding) is not looked into.
     const bool compressed = head.find("\r\nContent-Encoding: ") != std::string_view::npos;
-    if (status >= 400 && request.substr(0, 5) != "HEAD " && !compressed) {
+    // httplib takes the method from the line's first word, also in a line
+    // it then refuses: a reply to HEAD has no body even then.
+    const bool head_request = request.substr(0, request.find_first_of(" \r\n")) == "HEAD";
+    if (status >= 400 && !head_request && !compressed) {
         if (head.find("Content-Type: application/json\r\n") == std::string_view::npos)
             fail("an error reply that is not JSON", reply);
         const auto length_at = head.find("Content-Length: ");
