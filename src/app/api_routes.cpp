@@ -3,6 +3,7 @@
 #include <modsynth/task/task_io.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <memory>
