@@ -380,6 +380,14 @@ def test_chunked_body_limit():
             except OSError as e:
                 status = repr(e)
         check(status == 413, "a chunked body over 1 MB: 413 before the body ends (%s)" % status)
+        with socket.create_connection(("127.0.0.1", s.port), timeout=3) as sock:
+            try:
+                sock.sendall(head.replace(b"/api/validate", b"/api/nothing") + chunk * 32)
+                reply = sock.recv(4096)
+                status = int(reply[9:12]) if reply.startswith(b"HTTP/1.1 ") else reply[:100]
+            except OSError as e:
+                status = repr(e)
+        check(status == 404, "a chunked body to no route: 404 before the body ends (%s)" % status)
         rose = read(ROSE)
         chunks = b"".join(b"%x\r\n%s\r\n" % (len(rose[i:i + 500]), rose[i:i + 500]) for i in range(0, len(rose), 500))
         status, body = s.raw(head + chunks + b"0\r\n\r\n")

@@ -9,6 +9,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 #include "loopback.h"
@@ -31,6 +32,8 @@ using nlohmann::json;
 // it is still there (a stream) or answers unchanged (a poll).
 constexpr auto kHeartbeat = std::chrono::milliseconds(1000);
 constexpr double kLongestPoll = 20.0;
+// What a POST may name: a request body is read only for these.
+const std::regex kPostRoutes(R"(/api/validate|/api/solve|/api/jobs/[0-9a-f]+/cancel)");
 // Longer paths name nothing here; refusing them early also spares the route
 // patterns (std::regex recurses once per character).
 constexpr std::size_t kLongestPath = 1024;
@@ -282,6 +285,12 @@ private:
         if (req.path.size() > kLongestPath) {
             send_final_error(res, 414, "request path longer than " +
                                            std::to_string(kLongestPath) + " characters");
+            return R::Handled;
+        }
+        // httplib would read the body of a POST that no route takes, with
+        // no bound when chunked: refuse it unread.
+        if (req.method == "POST" && !std::regex_match(req.path, kPostRoutes)) {
+            send_final_error(res, 404, "nothing to POST to at " + req.path);
             return R::Handled;
         }
         // This runs before the body is read: judge by the headers.
