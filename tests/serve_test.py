@@ -14,6 +14,7 @@ import signal
 import socket
 import subprocess
 import sys
+import tempfile
 import time
 
 BIN, ROOT = sys.argv[1], sys.argv[2]
@@ -80,6 +81,20 @@ class Server:
             return res.status, dict(res.getheaders()), data
         finally:
             conn.close()
+
+    def raw(self, data, timeout=5):
+        """Sends bytes as they are, then reads the reply to its end: (status, body)."""
+        with socket.create_connection(("127.0.0.1", self.port), timeout=timeout) as sock:
+            sock.sendall(data)
+            sock.shutdown(socket.SHUT_WR)
+            reply = b""
+            while True:
+                chunk = sock.recv(65536)
+                if not chunk:
+                    break
+                reply += chunk
+        m = re.match(rb"HTTP/1\.1 (\d{3}) ", reply)
+        return (int(m.group(1)) if m else None), reply.partition(b"\r\n\r\n")[2]
 
     def json(self, method, path, body=None, headers=None):
         status, headers, data = self.request(method, path, body, headers)
@@ -211,6 +226,10 @@ def test_solve_and_files():
             url = job.get("files", {}).get(name)
             status, headers, body = s.request("GET", url or "/missing")
             check(status == 200 and marker in body, "download %s" % name)
+        status, _, log = s.request("GET", job.get("files", {}).get("solve.log", "/missing"))
+        check(status == 200 and log.strip(), "download solve.log")
+        check(b"modsynth-serve" not in log and tempfile.gettempdir().encode() + b"/" not in log,
+              "solve.log does not tell the server's scratch folder: %r" % log[:300])
         status, headers, _ = s.request("GET", job["files"]["robot.urdf"] + "?download=1")
         check("attachment" in headers.get("Content-Disposition", ""), "?download=1 sends an attachment")
         status, _, _ = s.request("GET", "/api/jobs/%s/files/..%%2F..%%2Fetc%%2Fpasswd" % job["id"])
@@ -323,6 +342,148 @@ def test_garbage_does_not_kill():
         check(s.alive(), "garbage requests do not kill the server")
 
 
+def json_error(body):
+    """The message of a JSON error body, or None when it is not one."""
+    try:
+        return json.loads(body.decode("utf-8")).get("error")
+    except (ValueError, UnicodeDecodeError, AttributeError):
+        return None
+
+
+def test_invalid_utf8():
+    with Server() as s:
+        for path in [b"/%ff", b"/%c3%28", b"/api/%ed%a0%80", b"/api/jobs/0123456789abcdef?since=1&wait=%ff"]:
+            status, body = s.raw(b"GET " + path + b" HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
+            check(status is not None and 400 <= status < 500, "GET %s: a 4xx (%s)" % (path, status))
+            check(json_error(body), "GET %s: a JSON error in UTF-8: %r" % (path, body[:200]))
+            check(s.alive(), "the server survives GET %s" % path)
+        for route in ["/api/validate", "/api/solve"]:
+            status, _, body = s.request("POST", route, b'{"format": "modsynth-task/1", "name": "\xff\xfe', JSON_TYPE)
+            check(status == 400, "invalid UTF-8 in a body to %s: 400 (%s)" % (route, status))
+            check(json_error(body), "... with a JSON error in UTF-8: %r" % body[:200])
+        status, _, body = s.request("POST", "/api/validate", b'{"format": "\xc0\xaf"}', JSON_TYPE)
+        check(status == 400 and json_error(body), "an overlong UTF-8 form: 400 (%s) %r" % (status, body[:200]))
+        check(s.alive(), "server alive after invalid UTF-8")
+
+
+def test_chunked_body_limit():
+    with Server() as s:
+        head = (b"POST /api/validate HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/json\r\n"
+                b"Transfer-Encoding: chunked\r\n\r\n")
+        chunk = b"10000\r\n" + b" " * 0x10000 + b"\r\n"
+        status = None
+        with socket.create_connection(("127.0.0.1", s.port), timeout=3) as sock:
+            try:
+                sock.sendall(head + chunk * 32)  # 2 MB, and no last chunk: the body never ends
+                reply = sock.recv(4096)
+                m = re.match(rb"HTTP/1\.1 (\d{3}) ", reply)
+                status = int(m.group(1)) if m else reply[:100]
+            except OSError as e:
+                status = repr(e)
+        check(status == 413, "a chunked body over 1 MB: 413 before the body ends (%s)" % status)
+        with socket.create_connection(("127.0.0.1", s.port), timeout=3) as sock:
+            try:
+                sock.sendall(head.replace(b"/api/validate", b"/api/nothing") + chunk * 32)
+                reply = sock.recv(4096)
+                status = int(reply[9:12]) if reply.startswith(b"HTTP/1.1 ") else reply[:100]
+            except OSError as e:
+                status = repr(e)
+        check(status == 404, "a chunked body to no route: 404 before the body ends (%s)" % status)
+        rose = read(ROSE)
+        chunks = b"".join(b"%x\r\n%s\r\n" % (len(rose[i:i + 500]), rose[i:i + 500]) for i in range(0, len(rose), 500))
+        status, body = s.raw(head + chunks + b"0\r\n\r\n")
+        check(status == 200 and b'"valid": true' in body, "a chunked body under the limit is read (%s)" % status)
+        check(s.alive(), "server alive after a chunked body over the limit")
+
+
+def test_host_rule():
+    with Server() as s:
+        for host in ["127.attacker.example", "127.0.0.1.attacker.example", "localhost.attacker.example",
+                     "127.256.0.1", "127.0.0.1:%d" % (s.port + 1), "[::1].attacker.example", "127.0.0.1:"]:
+            status, _, body = s.json("GET", "/api/info", headers={"Host": host})
+            check(status == 403 and body.get("error"), "Host: %s is refused with 403 (%s)" % (host, status))
+        for host in ["127.0.0.1", "127.0.0.1:%d" % s.port, "localhost:%d" % s.port, "LOCALHOST",
+                     "[::1]:%d" % s.port, "127.1.2.3"]:
+            status, _, _ = s.json("GET", "/api/info", headers={"Host": host})
+            check(status == 200, "Host: %s is served (%s)" % (host, status))
+
+
+def test_port_in_use():
+    with Server() as s:
+        second = subprocess.Popen([BIN, "serve", "--port", str(s.port)], stdout=subprocess.PIPE,
+                                  stderr=subprocess.PIPE, text=True)
+        try:
+            out, err = second.communicate(timeout=10)
+        except subprocess.TimeoutExpired:
+            second.kill()
+            out, err = second.communicate()
+            err = "still running: " + err
+        check(second.returncode not in (0, None, -signal.SIGKILL) and
+              ("port %d on 127.0.0.1 is in use" % s.port) in err,
+              "a second server on a port in use fails saying so (exit %s, %r)" % (second.returncode, err))
+        check(s.alive(), "the first server still answers")
+
+
+def test_media_type():
+    with Server() as s:
+        for media in ["APPLICATION/JSON", "application/json; charset=utf-8", "Application/Json;charset=UTF-8"]:
+            status, _, body = s.json("POST", "/api/validate", read(ROSE), {"Content-Type": media})
+            check(status == 200 and body.get("valid") is True, "Content-Type: %s is JSON (%s)" % (media, status))
+        for media in ["application/jsonp", "text/plain; application/json"]:
+            status, _, _ = s.json("POST", "/api/validate", read(ROSE), {"Content-Type": media})
+            check(status == 415, "Content-Type: %s is not (%s)" % (media, status))
+
+
+def test_whole_replies():
+    with Server() as s:
+        for path, asked in [("/api/nothing", {"Range": "bytes=0-3"}), ("/api/info", {"Range": "bytes=9999-"}),
+                              ("/api/info", {"Range": "bytes=x"}), ("/app.js", {"Range": "bytes=0-9,20-29"})]:
+            status, headers, body = s.request("GET", path, headers=asked)
+            check(status in (200, 404, 416) and "Content-Range" not in headers and
+                  (status == 200 or json_error(body)),
+                  "GET %s with %s: the whole reply (%s %r)" % (path, asked, status, body[:80]))
+
+
+def test_slow_clients():
+    with Server() as s:
+        job = s.solve(SLOW, "?time_limit=30")[2]
+        slow, streams = [], []
+        try:
+            for _ in range(40):  # each sends half a head, then nothing
+                sock = socket.create_connection(("127.0.0.1", s.port), timeout=5)
+                sock.sendall(b"GET /api/info HTTP/1.1\r\nHost: 127.0.0.1\r\n")
+                slow.append(sock)
+            opened = time.monotonic()
+            for _ in range(25):
+                sock = socket.create_connection(("127.0.0.1", s.port), timeout=5)
+                sock.sendall(("GET %s HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n" % job["links"]["events"]).encode())
+                streams.append(sock)
+            started = time.monotonic()
+            status, _, info = s.json("GET", "/api/info")
+            took = time.monotonic() - started
+            check(status == 200 and took < 2, "/api/info answers beside slow clients and open streams "
+                                              "(%s after %.2f s)" % (status, took))
+            firsts = []
+            for sock in streams:
+                try:
+                    firsts.append(sock.recv(4096))
+                except OSError:
+                    firsts.append(b"")
+            opened_streams = sum(b"text/event-stream" in f for f in firsts)
+            refused = sum(f.startswith(b"HTTP/1.1 429") for f in firsts)
+            check(1 <= opened_streams <= 4 and opened_streams + refused == 25,
+                  "progress streams are capped per client: %d open, %d refused" % (opened_streams, refused))
+            time.sleep(max(0.0, opened + 6 - time.monotonic()))
+            slow[0].settimeout(3)
+            reply = slow[0].recv(4096)
+            check(reply.startswith(b"HTTP/1.1 408") and json_error(reply.partition(b"\r\n\r\n")[2]),
+                  "a head that does not come in time: 408 (%r)" % reply[:80])
+        finally:
+            for sock in slow + streams:
+                sock.close()
+        check(s.alive(), "server alive after slow clients")
+
+
 def test_shutdown_kills_solves():
     s = Server()
     job = s.solve(SLOW, "?time_limit=30")[2]
@@ -338,8 +499,9 @@ def test_shutdown_kills_solves():
 def main():
     tests = [test_page_and_info, test_body_limit, test_malformed_and_invalid, test_solve_and_files,
              test_infeasible_explained, test_concurrency_limit_and_cancel, test_time_limit,
-             test_client_that_leaves, test_long_poll, test_garbage_does_not_kill,
-             test_shutdown_kills_solves]
+             test_client_that_leaves, test_long_poll, test_garbage_does_not_kill, test_invalid_utf8,
+             test_chunked_body_limit, test_host_rule, test_port_in_use, test_media_type,
+             test_whole_replies, test_slow_clients, test_shutdown_kills_solves]
     for t in tests:
         started = time.monotonic()
         try:

@@ -4,14 +4,18 @@
 #include <modsynth/text/printable.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <regex>
 #include <sstream>
 
+#include "loopback.h"
 #include "solve_jobs.h"
+#include "stream_slots.h"
 #include "web_assets.h"
 
 // Last: it pulls in <resolv.h>, whose `_res` macro breaks Eigen's headers.
@@ -28,20 +32,62 @@ using nlohmann::json;
 // it is still there (a stream) or answers unchanged (a poll).
 constexpr auto kHeartbeat = std::chrono::milliseconds(1000);
 constexpr double kLongestPoll = 20.0;
+// What a POST may name: a request body is read only for these.
+const std::regex kPostRoutes(R"(/api/validate|/api/solve|/api/jobs/[0-9a-f]+/cancel)");
+// Longer paths name nothing here; refusing them early also spares the route
+// patterns (std::regex recurses once per character).
+constexpr std::size_t kLongestPath = 1024;
+// Request text echoed in a reply is cut here: enough for any message the
+// routes write, never a megabyte of a body quoted back.
+constexpr std::size_t kEchoChars = 2000;
+
+std::string printable(std::string_view text) { return text::printable(text, kEchoChars); }
 
 // ------------------------------------------------------------------ replies
 
 void send_json(Response& res, int status, const json& body) {
     res.status = status;
     res.set_header("Cache-Control", "no-store");
-    res.set_content(body.dump(1), "application/json");
+    // Text from a request is made printable before it gets here; replacing
+    // what is still not UTF-8 only keeps a slip from becoming an exception.
+    res.set_content(body.dump(1, ' ', false, json::error_handler_t::replace), "application/json");
 }
 
 void send_error(Response& res, int status, const std::string& message,
                 const std::string& part = {}) {
-    json body = {{"error", message}};
-    if (!part.empty()) body["part"] = part;
+    json body = {{"error", printable(message)}};
+    if (!part.empty()) body["part"] = printable(part);
     send_json(res, status, body);
+}
+
+/// An error after which the connection closes: the rest of the request (a
+/// body left unread) must not be taken for the next one.
+void send_final_error(Response& res, int status, const std::string& message) {
+    res.set_header("Connection", "close");
+    send_error(res, status, message);
+}
+
+/// Makes httplib send the whole reply whatever the Range header asked: the
+/// files here are small, and a slice of a JSON reply (an error above all)
+/// is of no use. The Request is httplib's own non-const object, handed to
+/// the handlers as const; clearing its parsed ranges is what httplib reads.
+void ignore_ranges(const Request& req) { const_cast<Request&>(req).ranges.clear(); }
+
+bool equals_ignoring_case(const std::string& a, const std::string& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+/// "application/json", in any case, with or without parameters such as
+/// "; charset=utf-8".
+bool is_json_type(const std::string& content_type) {
+    std::string type = content_type.substr(0, content_type.find(';'));
+    const auto first = type.find_first_not_of(" \t");
+    const auto last = type.find_last_not_of(" \t");
+    type = first == std::string::npos ? "" : type.substr(first, last - first + 1);
+    return equals_ignoring_case(type, "application/json");
 }
 
 std::string status_text(int status, const ApiSettings& settings, const Request& req) {
@@ -49,7 +95,7 @@ std::string status_text(int status, const ApiSettings& settings, const Request& 
         case 400:
             return "bad request";
         case 404:
-            return "nothing at " + req.path;
+            return "nothing at " + printable(req.path);
         case 405:
             return "method not allowed";
         case 413:
@@ -98,13 +144,40 @@ json job_json(const JobState& s) {
 
 // ------------------------------------------------------------------- input
 
+/// The request body, read only up to `max` bytes whatever its framing
+/// (httplib bounds a Content-Length, not a chunked body); nothing after
+/// replying 413 or 400.
+std::optional<std::string> read_capped_body(const Request& req, Response& res,
+                                            const httplib::ContentReader& reader,
+                                            std::size_t max) {
+    std::string body;
+    // Without a length or chunks a request has no body (RFC 9112, 6.3).
+    if (!req.has_header("Content-Length") && !req.has_header("Transfer-Encoding")) return body;
+    bool too_large = false;
+    const bool read = reader([&](const char* data, std::size_t size) {
+        if (body.size() + size > max) {
+            too_large = true;
+            return false;
+        }
+        body.append(data, size);
+        return true;
+    });
+    if (read) return body;
+    if (too_large || res.status == 413) {
+        send_final_error(res, 413, "request body larger than " + std::to_string(max) + " bytes");
+    } else {
+        send_final_error(res, 400, "the request body could not be read");
+    }
+    return std::nullopt;
+}
+
 /// The request body as JSON, or nothing after replying 400 with where the
 /// syntax breaks.
-std::optional<json> read_body(const Request& req, Response& res) {
-    json doc = json::parse(req.body, nullptr, false);
+std::optional<json> read_body(const std::string& text, Response& res) {
+    json doc = json::parse(text, nullptr, false);
     if (!doc.is_discarded()) return doc;
     try {
-        task::parse_task_text(req.body);  // for its message naming line and column
+        task::parse_task_text(text);  // for its message naming line and column
         send_error(res, 400, "the body is not valid JSON");
     } catch (const task::InputError& e) {
         send_error(res, 400, e.what());
@@ -125,26 +198,24 @@ std::optional<double> query_number(const Request& req, const char* name) {
         used = 0;
     }
     if (used != text.size() || !std::isfinite(v) || v <= 0.0)
-        throw task::InputError(name, "not a positive number: '" + modsynth::text::printable(text) + "'");
+        throw task::InputError(name, "not a positive number: '" + printable(text) + "'");
     return v;
 }
 
 bool host_is_loopback(const Request& req) {
-    std::string host = req.get_header_value("Host");
-    if (host.empty()) return true;  // HTTP/1.0 clients send none
-    if (host.front() == '[') {
-        host = host.substr(0, host.find(']') + 1);
-    } else {
-        host = host.substr(0, host.find(':'));
-    }
-    return host == "localhost" || host == "[::1]" || host.rfind("127.", 0) == 0;
+    if (!req.has_header("Host")) return true;  // HTTP/1.0 clients send none
+    if (req.get_header_value_count("Host") != 1) return false;
+    return is_loopback_host_header(req.get_header_value("Host"), req.local_port);
 }
 
 // ------------------------------------------------------------------ routes
 
 class Routes : public std::enable_shared_from_this<Routes> {
 public:
-    Routes(SolveJobs& jobs, const ApiSettings& settings) : jobs_(jobs), settings_(settings) {}
+    Routes(SolveJobs& jobs, const ApiSettings& settings)
+        : jobs_(jobs),
+          settings_(settings),
+          streams_(settings.max_streams, settings.max_streams_per_client) {}
 
     // Every handler holds the routes, so they live as long as the server.
     void install(httplib::Server& server) {
@@ -152,20 +223,24 @@ public:
         server.set_pre_routing_handler(
             [self](const Request& req, Response& res) { return self->guard(req, res); });
         server.Get("/api/info", [self](const Request&, Response& res) { self->info(res); });
-        server.Post("/api/validate", [](const Request& req, Response& res) { validate(req, res); });
-        server.Post("/api/solve",
-                    [self](const Request& req, Response& res) { self->solve(req, res); });
+        post(server, "/api/validate",
+             [](const Request&, Response& res, const std::string& body) { validate(body, res); });
+        post(server, "/api/solve", [self](const Request& req, Response& res,
+                                          const std::string& body) { self->solve(req, res, body); });
         server.Get(R"(/api/jobs/([0-9a-f]+))",
                    [self](const Request& req, Response& res) { self->job(req, res); });
         server.Get(R"(/api/jobs/([0-9a-f]+)/events)",
                    [self](const Request& req, Response& res) { self->events(req, res); });
-        server.Post(R"(/api/jobs/([0-9a-f]+)/cancel)",
-                    [self](const Request& req, Response& res) { self->cancel(req, res); });
+        post(server, R"(/api/jobs/([0-9a-f]+)/cancel)",
+             [self](const Request& req, Response& res, const std::string&) {
+                 self->cancel(req, res);
+             });
         server.Get(R"(/api/jobs/([0-9a-f]+)/files/([a-z.\-]+))",
                    [self](const Request& req, Response& res) { self->file(req, res); });
         server.Get(R"(/([A-Za-z0-9_\-]+\.[a-z]+)?)",
                    [](const Request& req, Response& res) { asset(req, res); });
         server.set_error_handler([self](const Request& req, Response& res) {
+            ignore_ranges(req);  // also a Range that did not parse (416)
             if (res.body.empty())
                 send_error(res, res.status, status_text(res.status, self->settings_, req));
         });
@@ -181,24 +256,65 @@ public:
         });
     }
 
+    /// A POST route whose handler gets the body, read within max_body.
+    template <typename Handler>
+    void post(httplib::Server& server, const std::string& pattern, Handler handler) {
+        server.Post(pattern, [self = shared_from_this(), handler](
+                                 const Request& req, Response& res,
+                                 const httplib::ContentReader& reader) {
+            const auto body = read_capped_body(req, res, reader, self->settings_.max_body);
+            if (body) handler(req, res, *body);
+        });
+    }
+
 private:
     /// Refuses what no route should see: foreign Host names, and POST bodies
     /// that are not JSON (a cross-site form can send text/plain without
     /// asking; it cannot send application/json without a preflight this
     /// server never grants).
+    /// Every refusal here closes the connection: the request's body, if
+    /// any, is left unread.
     httplib::Server::HandlerResponse guard(const Request& req, Response& res) const {
         using R = httplib::Server::HandlerResponse;
+        ignore_ranges(req);
         if (settings_.loopback_only && !host_is_loopback(req)) {
-            send_error(res, 403, "this server answers only on the loopback (Host: localhost)");
+            send_final_error(res, 403,
+                             "this server answers only on the loopback (Host: localhost, "
+                             "127.0.0.1 or [::1], with its port or none)");
+            return R::Handled;
+        }
+        if (req.method != "GET" && req.method != "HEAD" && req.method != "POST") {
+            send_final_error(res, 405, "method " + req.method + " not allowed (GET or POST)");
+            return R::Handled;
+        }
+        if (req.path.size() > kLongestPath) {
+            send_final_error(res, 414, "request path longer than " +
+                                           std::to_string(kLongestPath) + " characters");
+            return R::Handled;
+        }
+        // httplib would read the body of a POST that no route takes, with
+        // no bound when chunked: refuse it unread.
+        if (req.method == "POST" && !std::regex_match(req.path, kPostRoutes)) {
+            send_final_error(res, 404, "nothing to POST to at " + req.path);
             return R::Handled;
         }
         // This runs before the body is read: judge by the headers.
         const std::string length = req.get_header_value("Content-Length");
         const bool has_body =
             (!length.empty() && length != "0") || req.has_header("Transfer-Encoding");
-        const std::string type = req.get_header_value("Content-Type");
-        if (req.method == "POST" && has_body && type.rfind("application/json", 0) != 0) {
-            send_error(res, 415, "send the body as Content-Type: application/json");
+        if (req.method == "POST" && (has_body || req.has_header("Content-Type")) &&
+            !is_json_type(req.get_header_value("Content-Type"))) {
+            send_final_error(res, 415, "send the body as Content-Type: application/json");
+            return R::Handled;
+        }
+        if (length.find_first_not_of("0123456789") != std::string::npos) {
+            send_final_error(res, 400, "Content-Length is not a number of bytes");
+            return R::Handled;
+        }
+        // A body announced too large is refused before any of it is read.
+        if (!length.empty() && (length.size() > 19 || std::stoull(length) > settings_.max_body)) {
+            send_final_error(res, 413, "request body larger than " +
+                                           std::to_string(settings_.max_body) + " bytes");
             return R::Handled;
         }
         return R::Unhandled;
@@ -225,8 +341,8 @@ private:
                      {"max_link_length", d.max_link_length}}}});
     }
 
-    static void validate(const Request& req, Response& res) {
-        const auto doc = read_body(req, res);
+    static void validate(const std::string& body, Response& res) {
+        const auto doc = read_body(body, res);
         if (!doc) return;
         try {
             const task::Task t = task::parse_task(*doc);
@@ -240,12 +356,13 @@ private:
         } catch (const task::InputError& e) {
             send_json(res, 200,
                       {{"valid", false},
-                       {"errors", json::array({{{"part", e.part()}, {"message", e.what()}}})}});
+                       {"errors", json::array({{{"part", printable(e.part())},
+                                                {"message", printable(e.what())}}})}});
         }
     }
 
-    void solve(const Request& req, Response& res) {
-        const auto doc = read_body(req, res);
+    void solve(const Request& req, Response& res, const std::string& body) {
+        const auto doc = read_body(body, res);
         if (!doc) return;
         double time_limit = 0.0;
         try {
@@ -280,6 +397,9 @@ private:
                 send_error(res, 400, e.what(), e.part());
                 return;
             }
+            // Past the client's share of waiting workers, a poll answers now.
+            const auto slot = streams_.acquire(req.remote_addr);
+            if (!slot) wait = 0.0;
             s = jobs_.wait_for_change(id, since,
                                       std::chrono::milliseconds(static_cast<long>(wait * 1000)));
         } else {
@@ -295,11 +415,21 @@ private:
     void events(const Request& req, Response& res) {
         const std::string id = req.matches[1];
         if (!jobs_.state(id)) return send_error(res, 404, "no job " + id);
+        auto slot = streams_.acquire(req.remote_addr);
+        if (!slot) {
+            res.set_header("Retry-After", "5");
+            return send_error(res, 429,
+                              "too many progress streams open (the most is " +
+                                  std::to_string(streams_.per_client()) + " per client and " +
+                                  std::to_string(streams_.total()) +
+                                  " in all); poll " + job_path(id) + " instead");
+        }
         auto seen = std::make_shared<std::optional<std::uint64_t>>();
         res.set_header("Cache-Control", "no-store");
         res.set_chunked_content_provider(
             "text/event-stream",
-            [self = shared_from_this(), id, seen](std::size_t, httplib::DataSink& sink) {
+            // The provider holds the slot until the reply is gone.
+            [self = shared_from_this(), id, seen, slot](std::size_t, httplib::DataSink& sink) {
                 SolveJobs& jobs = self->jobs_;
                 const auto s =
                     *seen ? jobs.wait_for_change(id, **seen, kHeartbeat) : jobs.state(id);
@@ -367,6 +497,7 @@ private:
 
     SolveJobs& jobs_;
     ApiSettings settings_;
+    StreamSlots streams_;
 };
 
 }  // namespace

@@ -17,6 +17,11 @@ struct ApiSettings {
     /// Only Host headers naming the loopback are served, so that a page from
     /// elsewhere cannot reach the server through a rebound DNS name.
     bool loopback_only = true;
+    /// Progress streams and long polls held open at once, by all clients
+    /// and by one (one address); past the cap a stream gets 429 and a long
+    /// poll answers at once.
+    std::size_t max_streams = 16;
+    std::size_t max_streams_per_client = 4;
 };
 
 /// Installs the page, the API routes and the error replies on `server`.

@@ -1,6 +1,7 @@
 #include <memory>
 
 #include "command.h"
+#include "loopback.h"
 #include "number_checks.h"
 #include "server.h"
 

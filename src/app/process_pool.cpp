@@ -89,6 +89,8 @@ double seconds_since(Clock::time_point t) {
         _exit(127);
     for (int fd : {in, out, err})
         if (fd > STDERR_FILENO) close(fd);
+    // After the opens, so that their relative paths mean the same as here.
+    if (!spec.working_dir.empty() && chdir(spec.working_dir.c_str()) != 0) _exit(127);
     execve(argv[0], argv, environ);
     _exit(127);
 }

@@ -18,6 +18,7 @@ struct ProcessSpec {
     std::string log_path;           ///< receives stdout and stderr; empty: /dev/null
     std::string stderr_path;        ///< when set, stderr goes here instead of log_path
     double wall_limit = 0.0;        ///< seconds before SIGKILL; <= 0: no limit
+    std::string working_dir;        ///< where the child starts; empty: here
 };
 
 struct ProcessResult {

@@ -3,22 +3,21 @@
 #include <pthread.h>
 #include <signal.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <thread>
 
 #include "command.h"
+#include "loopback.h"
 #include "process_pool.h"
 
 // Last: it pulls in <resolv.h>, whose `_res` macro breaks Eigen's headers.
-#include <httplib.h>
+#include "connection_server.h"
 
 namespace modsynth::app {
 namespace {
-
-// A slow client must not hold a worker for long; a progress stream writes
-// at least once a second, well within these.
-constexpr time_t kReadTimeout = 10;
-constexpr time_t kWriteTimeout = 10;
 
 /// SIGINT and SIGTERM are blocked in every thread and taken by one waiting
 /// thread, which stops the server; the rest of the shutdown is ordinary
@@ -62,34 +61,44 @@ private:
     std::thread waiter_;
 };
 
+// Workers beyond those that progress streams and long polls may hold.
+constexpr std::size_t kFreeWorkers = 6;
+
 std::string url_host(const std::string& host) {
     return host.find(':') != std::string::npos ? "[" + host + "]" : host;
 }
 
 }  // namespace
 
-bool is_loopback_host(const std::string& host) {
-    return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
-}
-
 int run_server(const ServerOptions& options) {
     ShutdownSignals signals;
     SolveJobs jobs(options.jobs, self_executable());
-    httplib::Server server;
-    // Progress streams hold a worker each for a whole solve; leave room for
-    // them and for the page's other requests.
-    const std::size_t workers = 16 + 2 * static_cast<std::size_t>(options.jobs.max_solves);
-    server.new_task_queue = [workers] { return new httplib::ThreadPool(workers); };
-    server.set_payload_max_length(options.api.max_body);
-    server.set_read_timeout(kReadTimeout, 0);
-    server.set_write_timeout(kWriteTimeout, 0);
-    add_routes(server, jobs, options.api);
+    // Progress streams and long polls hold a worker each; they get all but
+    // a few, which stay free for the page's other requests.
+    ApiSettings api = options.api;
+    const auto solves = static_cast<std::size_t>(options.jobs.max_solves);
+    api.max_streams = std::max(api.max_streams, 2 * solves + 4);
+    api.max_streams_per_client = std::max(api.max_streams_per_client, solves + 2);
+    ConnectionLimits limits;
+    limits.workers = api.max_streams + kFreeWorkers;
+    ConnectionServer server(limits);
+    server.set_payload_max_length(api.max_body);
+    add_routes(server, jobs, api);
 
     int port = options.port;
+    errno = 0;
     const bool bound = port == 0 ? (port = server.bind_to_any_port(options.host)) > 0
                                  : server.bind_to_port(options.host, port);
     if (!bound) {
-        std::fprintf(stderr, "error: cannot listen on %s:%d\n", options.host.c_str(), options.port);
+        if (errno == EADDRINUSE) {
+            std::fprintf(stderr,
+                         "error: port %d on %s is in use (another server runs there; choose "
+                         "another --port, or 0 for any free one)\n",
+                         options.port, options.host.c_str());
+        } else {
+            std::fprintf(stderr, "error: cannot listen on %s:%d%s%s\n", options.host.c_str(),
+                         options.port, errno ? ": " : "", errno ? std::strerror(errno) : "");
+        }
         return kInternal;
     }
     if (!is_loopback_host(options.host)) {

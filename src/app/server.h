@@ -20,7 +20,4 @@ struct ServerOptions {
 /// stdout once listening, so that a script can wait for it and read the port.
 int run_server(const ServerOptions& options);
 
-/// True for the names and addresses of the loopback interface.
-bool is_loopback_host(const std::string& host);
-
 }  // namespace modsynth::app

@@ -99,22 +99,25 @@ std::string SolveJobs::start(const std::string& task_text, double time_limit) {
     output::write_text_file(job->path("task.json"), task_text);
     job->start = job->last_seen = Clock::now();
 
+    // The child runs in the job's folder and is given names, not paths:
+    // what it prints (solve.log is served) must not tell where that is.
     ProcessSpec spec;
     spec.argv = {executable_,
                  "solve",
-                 job->path("task.json"),
+                 "task.json",
                  "-o",
-                 job->path("solution.json"),
+                 "solution.json",
                  "--time-limit",
                  number(job->state.time_limit),
                  "--report",
-                 job->path("report.html"),
+                 "report.html",
                  "--urdf",
-                 job->path("robot.urdf"),
+                 "robot.urdf",
                  "--csv",
-                 job->path("trajectory.csv"),
+                 "trajectory.csv",
                  "--build-sheet",
-                 job->path("build-sheet.md")};
+                 "build-sheet.md"};
+    spec.working_dir = job->dir->path();
     spec.log_path = job->path("solve.log");
     spec.wall_limit = job->state.time_limit + limits_.grace;
     job->log = std::make_unique<LogFollower>(spec.log_path);
@@ -250,12 +253,13 @@ void SolveJobs::end_solve(Job& job) {
     ProcessSpec spec;
     spec.argv = {
         executable_,           "explain",
-        job.path("task.json"), "--json",
+        "task.json",           "--json",
         "--time-limit",        number(std::min(kExplainProofSeconds, job.state.time_limit)),
         "--solve-seconds",     number(limits_.relaxation_seconds)};
     spec.log_path = job.path("explain.json");
     spec.stderr_path = job.path("explain.log");
     spec.wall_limit = limits_.explain_limit;
+    spec.working_dir = job.dir->path();
     job.child = std::make_unique<ChildProcess>(spec);
     job.state.phase = Phase::Explain;
     job.state.stage = "looking for the smallest changes that remove the conflict";

@@ -1,0 +1,72 @@
+#pragma once
+// An HTTP server whose connections cost a worker only while a request is
+// being answered. A connection waits for its next request head in one
+// polling thread, not in a worker, so clients that send slowly or keep idle
+// connections open cannot take every worker; each head must arrive within a
+// deadline, and closing connections are drained there too.
+//
+// Include it last: <httplib.h> pulls in <resolv.h>, whose `_res` macro
+// breaks Eigen's headers.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <httplib.h>
+
+namespace modsynth::app {
+
+struct ConnectionLimits {
+    std::size_t workers = 16;           ///< requests answered at once
+    std::size_t max_connections = 256;  ///< open at once; more are answered 429 and closed
+    double head_timeout = 5.0;  ///< seconds for a request head, from the connection or the last reply
+    double read_timeout = 10.0;   ///< seconds for the rest of a request (its body) once its head came
+    double write_timeout = 10.0;  ///< seconds a client may leave one write of a reply waiting
+};
+
+class ConnectionServer : public httplib::Server {
+public:
+    explicit ConnectionServer(const ConnectionLimits& limits);
+    ~ConnectionServer() override;
+    ConnectionServer(const ConnectionServer&) = delete;
+    ConnectionServer& operator=(const ConnectionServer&) = delete;
+
+    const ConnectionLimits& limits() const { return limits_; }
+
+private:
+    using Clock = std::chrono::steady_clock;
+    struct Connection {
+        int sock = -1;
+        std::string remote_ip, local_ip;
+        int remote_port = 0, local_port = 0;
+        std::size_t served = 0;
+        bool draining = false;  ///< replied and closing: what the client still sends is dropped
+        std::size_t drained = 0;
+        Clock::time_point deadline;
+    };
+
+    bool process_and_close_socket(socket_t sock) override;
+    void wait_room();
+    void work();
+    void serve(Connection c);
+    void to_room(Connection c);
+    void close(Connection& c);
+
+    ConnectionLimits limits_;
+    std::mutex mutex_;
+    std::condition_variable ready_changed_;
+    std::vector<Connection> incoming_;  ///< for the room to take
+    std::deque<Connection> ready_;      ///< a head has come: for a worker
+    bool stopping_ = false;
+    std::atomic<std::size_t> open_{0};
+    int wake_fd_ = -1;
+    std::thread room_;
+    std::vector<std::thread> workers_;
+};
+
+}  // namespace modsynth::app
