@@ -1,0 +1,28 @@
+#include <modsynth/text/format.h>
+#include <modsynth/text/markdown.h>
+
+#include <string>
+
+#include <catch2/catch.hpp>
+
+using modsynth::text::format;
+using modsynth::text::markdown_literal;
+
+TEST_CASE("format writes printf patterns of any length") {
+    CHECK(format("%d links, %.3f m", 3, 1.5) == "3 links, 1.500 m");
+    CHECK(format("%s", "") == "");
+    const std::string long_text(5000, 'x');
+    CHECK(format("<%s>", long_text.c_str()) == "<" + long_text + ">");
+}
+
+TEST_CASE("markdown_literal shows markup as the characters it is") {
+    CHECK(markdown_literal("rose") == "rose");
+    CHECK(markdown_literal("*bold* _x_ [a](b)") == "\\*bold\\* \\_x\\_ \\[a\\]\\(b\\)");
+    CHECK(markdown_literal("<script>") == "&lt;script&gt;");
+    CHECK(markdown_literal("a & \"b\" 'c'") == "a &amp; &quot;b&quot; &#39;c&#39;");
+    // A line break would end a heading or a table row.
+    CHECK(markdown_literal("a\nb|c").find('\n') == std::string::npos);
+    CHECK(markdown_literal("a|b") == "a\\|b");
+    // Bytes of UTF-8 text are kept.
+    CHECK(markdown_literal("caf\xC3\xA9") == "caf\xC3\xA9");
+}
