@@ -67,7 +67,9 @@ with tempfile.TemporaryDirectory() as tmp:
     if code != 0:
         fail(f"validate 3000 primitives: exit {code}: {err[:300]}")
 
-    code, out, err, wall, rss = run(["solve", big, "-o", sol, "--time-limit", "5", "--quiet"])
+    report = os.path.join(tmp, "report.html")
+    code, out, err, wall, rss = run(["solve", big, "-o", sol, "--time-limit", "5", "--quiet",
+                                     "--report", report])
     print(f"solve --time-limit 5, 3000 primitives: exit {code}, {wall:.2f} s, peak RSS {rss:.0f} MB")
     if wall >= 6.0:
         fail(f"solve --time-limit 5 took {wall:.2f} s")
@@ -79,6 +81,9 @@ with tempfile.TemporaryDirectory() as tmp:
         status = json.load(open(sol))["status"]
         if status != "unknown":
             fail(f"solve exit 4 wrote status {status}")
+    # Whichever way the time ran out, the report asked for is written.
+    if not os.path.isfile(report) or os.path.getsize(report) == 0:
+        fail("solve --report: no report written")
 
     code, out, err, wall, rss = run(["explain", big, "--time-limit", "5", "--json"])
     print(f"explain --time-limit 5, 3000 primitives: exit {code}, {wall:.2f} s")

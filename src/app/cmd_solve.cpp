@@ -70,6 +70,10 @@ int run_solve(const SolveArgs& a) {
                          a.time_limit) +
             text::printable(watchdog.stage(), 200) + ".";
         output::write_solution(unknown, a.output);
+        // The same files as any other answer: a report that says "unknown"
+        // and why, and a note for each export an unknown answer cannot give.
+        for (const auto& note : output::write_exports(task, unknown, a.exports, {}))
+            std::fprintf(stderr, "note: %s\n", note.c_str());
         print_summary(task, unknown, elapsed(), {}, a.output);
         return int{kUnknown};
     });
