@@ -484,6 +484,35 @@ def test_slow_clients():
         check(s.alive(), "server alive after slow clients")
 
 
+def test_solves_hold_no_sockets():
+    """A solve must not inherit the server's sockets: a connection it held
+    would not close for its client until the solve ended, and a listening
+    socket would keep the port."""
+    with Server() as s:
+        with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
+            body = read(SLOW)
+            sock.sendall(b"POST /api/solve?time_limit=30 HTTP/1.1\r\nHost: 127.0.0.1\r\n"
+                         b"Content-Type: application/json\r\nContent-Length: %d\r\n\r\n" % len(body) + body)
+            reply = sock.recv(65536)
+            check(reply.startswith(b"HTTP/1.1 202"), "a solve starts on a kept-alive connection (%r)" % reply[:40])
+            deadline = time.monotonic() + 5
+            kids = s.children()
+            while not kids and time.monotonic() < deadline:
+                time.sleep(0.05)
+                kids = s.children()
+            check(len(kids) == 1, "the solve runs as a child (%d)" % len(kids))
+            sockets = []
+            for kid in kids:
+                try:
+                    for fd in os.listdir("/proc/%d/fd" % kid):
+                        target = os.readlink("/proc/%d/fd/%s" % (kid, fd))
+                        if target.startswith("socket:"):
+                            sockets.append(target)
+                except OSError:
+                    pass
+            check(not sockets, "the solve holds none of the server's sockets (%s)" % sockets)
+
+
 def test_shutdown_kills_solves():
     s = Server()
     job = s.solve(SLOW, "?time_limit=30")[2]
@@ -501,7 +530,8 @@ def main():
              test_infeasible_explained, test_concurrency_limit_and_cancel, test_time_limit,
              test_client_that_leaves, test_long_poll, test_garbage_does_not_kill, test_invalid_utf8,
              test_chunked_body_limit, test_host_rule, test_port_in_use, test_media_type,
-             test_whole_replies, test_slow_clients, test_shutdown_kills_solves]
+             test_whole_replies, test_slow_clients, test_solves_hold_no_sockets,
+             test_shutdown_kills_solves]
     for t in tests:
         started = time.monotonic()
         try:

@@ -1,6 +1,7 @@
 #include "connection_server.h"
 
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/eventfd.h>
@@ -209,6 +210,8 @@ bool ConnectionServer::process_and_close_socket(socket_t sock) {
         return false;
     }
     ++open_;
+    // A solve started while this connection is open must not inherit it.
+    ::fcntl(sock, F_SETFD, FD_CLOEXEC);
     Connection c;
     c.sock = sock;
     sockaddr_storage addr{};
@@ -238,6 +241,9 @@ void ConnectionServer::to_room(Connection c) {
 
 void ConnectionServer::close(Connection& c) {
     if (c.sock < 0) return;
+    // shutdown acts on the connection, not on this descriptor: the client
+    // learns of the end even while a copy of it is open elsewhere.
+    ::shutdown(c.sock, SHUT_RDWR);
     ::close(c.sock);
     c.sock = -1;
     --open_;

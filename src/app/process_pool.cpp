@@ -87,8 +87,12 @@ double seconds_since(Clock::time_point t) {
     if (in < 0 || out < 0 || err < 0 || dup2(in, STDIN_FILENO) < 0 ||
         dup2(out, STDOUT_FILENO) < 0 || dup2(err, STDERR_FILENO) < 0)
         _exit(127);
-    for (int fd : {in, out, err})
-        if (fd > STDERR_FILENO) close(fd);
+    // Nothing else goes with the child: a server's connection inherited by
+    // a solve would stay open until the solve ends, so its client would not
+    // see it close (accept() gives sockets without close-on-exec).
+    if (close_range(STDERR_FILENO + 1, ~0U, 0) != 0)
+        for (int fd = STDERR_FILENO + 1, n = static_cast<int>(sysconf(_SC_OPEN_MAX)); fd < n; ++fd)
+            close(fd);
     // After the opens, so that their relative paths mean the same as here.
     if (!spec.working_dir.empty() && chdir(spec.working_dir.c_str()) != 0) _exit(127);
     execve(argv[0], argv, environ);

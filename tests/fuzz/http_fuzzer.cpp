@@ -37,6 +37,15 @@ using namespace modsynth::app;
 // the server stopped answering.
 constexpr int kReplyTimeoutMs = 10'000;
 
+/// A server that stopped answering is a hang, and a hang is found by where
+/// its threads wait: their stacks, when a debugger is at hand.
+void print_thread_stacks() {
+    const std::string command = "gdb -p " + std::to_string(::getpid()) +
+                                " -batch -nx -ex 'thread apply all bt 12' 1>&2 2>/dev/null";
+    if (std::system("command -v gdb >/dev/null 2>&1") != 0) return;
+    [[maybe_unused]] const int status = std::system(command.c_str());
+}
+
 [[noreturn]] void fail(const char* what, std::string_view reply) {
     std::fprintf(stderr, "http fuzzer: %s; reply (%zu bytes):\n%.*s\n", what, reply.size(),
                  static_cast<int>(std::min<std::size_t>(reply.size(), 2000)), reply.data());
@@ -97,7 +106,10 @@ std::string exchange(int port, std::string_view request) {
             write_open = false;
         }
         pollfd p{sock, static_cast<short>(POLLIN | (write_open ? POLLOUT : 0)), 0};
-        if (::poll(&p, 1, kReplyTimeoutMs) <= 0) fail("the server stopped answering", reply);
+        if (::poll(&p, 1, kReplyTimeoutMs) <= 0) {
+            print_thread_stacks();
+            fail("the server stopped answering", reply);
+        }
         if (p.revents & POLLIN || p.revents & (POLLHUP | POLLERR)) {
             const auto n = ::recv(sock, buf, sizeof buf, 0);
             if (n <= 0) break;
