@@ -12,6 +12,8 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -38,11 +40,11 @@ using namespace modsynth::app;
 constexpr int kReplyTimeoutMs = 10'000;
 
 /// A server that stopped answering is a hang, and a hang is found by where
-/// its threads wait: their stacks, when a debugger is at hand.
+/// its threads wait: their stacks (when gdb is at hand) and open descriptors.
 void print_thread_stacks() {
-    const std::string command = "gdb -p " + std::to_string(::getpid()) +
-                                " -batch -nx -ex 'thread apply all bt 12' 1>&2 2>/dev/null";
-    if (std::system("command -v gdb >/dev/null 2>&1") != 0) return;
+    const std::string pid = std::to_string(::getpid());
+    const std::string command = "{ ls -l /proc/" + pid + "/fd; command -v gdb >/dev/null && gdb -p " +
+                                pid + " -batch -nx -ex 'thread apply all bt 12' 2>/dev/null; } 1>&2";
     [[maybe_unused]] const int status = std::system(command.c_str());
 }
 
@@ -81,49 +83,69 @@ struct Fixture {
     }
 };
 
+// libFuzzer's timer (SIGALRM, for -timeout) interrupts system calls now and
+// then: each call below is repeated on EINTR, never taken for an answer.
+
 int connect_to(int port) {
-    const int sock = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
     addr.sin_port = htons(static_cast<std::uint16_t>(port));
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (sock < 0 || ::connect(sock, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0)
-        fail("cannot connect to the server", {});
-    return sock;
+    for (;;) {
+        const int sock = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+        if (sock < 0) fail("cannot make a socket", {});
+        if (::connect(sock, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0) return sock;
+        const int err = errno;
+        ::close(sock);
+        if (err != EINTR) fail("cannot connect to the server", {});
+    }
+}
+
+/// poll() on one descriptor until something happens or `deadline` passes (0).
+int poll_until(pollfd& p, std::chrono::steady_clock::time_point deadline) {
+    for (;;) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
+        const int n = ::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count())));
+        if (n >= 0 || errno != EINTR) return n;
+    }
 }
 
 /// Sends everything (the server drains what it does not read) while
 /// collecting what comes back, then reads to the end.
 std::string exchange(int port, std::string_view request) {
+    using Clock = std::chrono::steady_clock;
     const int sock = connect_to(port);
     std::string reply;
     std::size_t sent = 0;
     bool write_open = true;
     char buf[16384];
+    auto deadline = Clock::now() + std::chrono::milliseconds(kReplyTimeoutMs);
     for (;;) {
         if (write_open && sent == request.size()) {
             ::shutdown(sock, SHUT_WR);
             write_open = false;
         }
         pollfd p{sock, static_cast<short>(POLLIN | (write_open ? POLLOUT : 0)), 0};
-        if (::poll(&p, 1, kReplyTimeoutMs) <= 0) {
+        if (poll_until(p, deadline) <= 0) {
             print_thread_stacks();
             fail("the server stopped answering", reply);
         }
         if (p.revents & POLLIN || p.revents & (POLLHUP | POLLERR)) {
             const auto n = ::recv(sock, buf, sizeof buf, 0);
+            if (n < 0 && errno == EINTR) continue;
             if (n <= 0) break;
             reply.append(buf, static_cast<std::size_t>(n));
-            continue;
-        }
-        if (p.revents & POLLOUT) {
+        } else if (p.revents & POLLOUT) {
             const auto n = ::send(sock, request.data() + sent, request.size() - sent, MSG_NOSIGNAL);
+            if (n < 0 && errno == EINTR) continue;
             if (n < 0) {
                 write_open = false;  // the server closed: its reply is what matters
             } else {
                 sent += static_cast<std::size_t>(n);
             }
         }
+        deadline = Clock::now() + std::chrono::milliseconds(kReplyTimeoutMs);
     }
     ::close(sock);
     return reply;
