@@ -113,8 +113,9 @@ std::string status_text(int status, const ApiSettings& settings, const Request& 
 std::string job_path(const std::string& id) { return "/api/jobs/" + id; }
 
 json outcome_json(const SolveOutcome& o) {
-    json out = {{"status", to_string(o.status)}, {"exit_code", o.exit_code}, {"seconds", o.seconds},
-                {"name", o.name},     {"message", o.message},     {"core", o.core}};
+    json out = {{"status", to_string(o.status)}, {"exit_code", o.exit_code},
+                {"seconds", o.seconds},          {"name", o.name},
+                {"message", o.message},          {"core", o.core}};
     out["dof"] = o.dof ? json(*o.dof) : json(nullptr);
     out["total_link_length"] = o.total_link_length ? json(*o.total_link_length) : json(nullptr);
     out["clearance_margin"] = o.clearance_margin ? json(*o.clearance_margin) : json(nullptr);

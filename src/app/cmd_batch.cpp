@@ -46,7 +46,7 @@ std::vector<std::string> all_tasks(const std::string& input) {
 // Failures of any kind share one column: a user first wants to know how many
 // runs need a look, the results file says why.
 constexpr synth::Status::Kind kAnswerColumns[] = {synth::Status::Solved, synth::Status::Infeasible,
-                                                   synth::Status::Unknown};
+                                                  synth::Status::Unknown};
 constexpr std::size_t kFailedColumn = std::size(kAnswerColumns);
 constexpr std::size_t kColumns = kFailedColumn + 1;
 
@@ -102,8 +102,8 @@ public:
             draw("");
         } else {
             char buf[128];
-            std::snprintf(buf, sizeof buf, "  %s: %s %.2f s", o.name.c_str(), to_string(o.status).c_str(),
-                          o.seconds);
+            std::snprintf(buf, sizeof buf, "  %s: %s %.2f s", o.name.c_str(),
+                          to_string(o.status).c_str(), o.seconds);
             draw(buf);
         }
     }
@@ -118,10 +118,10 @@ public:
 private:
     void draw(const std::string& tail) {
         const int width = static_cast<int>(std::to_string(total_).size());
-        std::fprintf(
-            stderr, "%s[%*zu/%zu] solved %d, infeasible %d, unknown %d, failed %d, %.1f s%s%s",
-            tty_ ? "\r" : "", width, done_, total_, counts_[0], counts_[1], counts_[2],
-            counts_[kFailedColumn], elapsed(), tail.c_str(), tty_ ? "\033[K" : "\n");
+        std::fprintf(stderr,
+                     "%s[%*zu/%zu] solved %d, infeasible %d, unknown %d, failed %d, %.1f s%s%s",
+                     tty_ ? "\r" : "", width, done_, total_, counts_[0], counts_[1], counts_[2],
+                     counts_[kFailedColumn], elapsed(), tail.c_str(), tty_ ? "\033[K" : "\n");
         std::fflush(stderr);
     }
 
@@ -161,8 +161,8 @@ void print_summary(const BatchArgs& a, const Shard& shard, const std::vector<std
     print_row("all", all);
     for (std::size_t i = 0; i < outcomes.size(); ++i)
         if (!outcomes[i].status.is_answer())
-            std::printf("  failed: %s: %s: %s\n", paths[i].c_str(), to_string(outcomes[i].status).c_str(),
-                        outcomes[i].message.c_str());
+            std::printf("  failed: %s: %s: %s\n", paths[i].c_str(),
+                        to_string(outcomes[i].status).c_str(), outcomes[i].message.c_str());
     std::printf("results: %s\n", a.out.c_str());
 }
 

@@ -133,7 +133,8 @@ smt::FrontStage::Result result_from_name(const std::string& name, const std::str
     using R = smt::FrontStage::Result;
     for (const R r : {R::Sat, R::Unsat, R::Unknown})
         if (name == result_name(r)) return r;
-    throw task::InputError(part, "expected sat, unsat or unknown, got \"" + text::printable(name) + "\"");
+    throw task::InputError(part,
+                           "expected sat, unsat or unknown, got \"" + text::printable(name) + "\"");
 }
 
 // In-process: the front stage is Z3's nlsat, which honours its timeout, and
@@ -322,7 +323,6 @@ std::string was_now(const SolveFigures& e, const SolveFigures& n) {
     return "was " + to_string(e.status) + ", now " + to_string(n.status);
 }
 
-
 Judgement judge_solved(const SolveFigures& e, const SolveFigures& n, double tolerance) {
     if (!e.dof || !e.total_link_length) return {Verdict::Improved, "expectation had no robot"};
     if (!n.dof || !n.total_link_length) return {Verdict::Regressed, "solution has no robot"};
@@ -355,8 +355,9 @@ Judgement judge_solve(const SolveFigures& e, const SolveFigures& n, double toler
 // ------------------------------------------------------------------ display
 
 std::string show_front(const FrontFigures& f) {
-    return f.result == smt::FrontStage::Result::Unsat ? "unsat, core of " + std::to_string(f.core.size())
-                                                      : result_name(f.result);
+    return f.result == smt::FrontStage::Result::Unsat
+               ? "unsat, core of " + std::to_string(f.core.size())
+               : result_name(f.result);
 }
 
 std::string show_solve(const SolveFigures& s) {

@@ -64,9 +64,11 @@ int run_solve(const SolveArgs& a) {
     Watchdog watchdog(a.time_limit + kWatchdogMargin - elapsed(), [&] {
         synth::Solution unknown;
         unknown.task_name = task.name;
-        unknown.status = synth::Status(synth::Status::Unknown, text::printable(watchdog.stage(), 200),
-                                       text::format("time limit (%.3g s)", a.time_limit));
-        unknown.explanation.message = "No certified robot found within the " + unknown.status.reason +
+        unknown.status =
+            synth::Status(synth::Status::Unknown, text::printable(watchdog.stage(), 200),
+                          text::format("time limit (%.3g s)", a.time_limit));
+        unknown.explanation.message = "No certified robot found within the " +
+                                      unknown.status.reason +
                                       "; the last stage reached: " + unknown.status.stage + ".";
         io::write_solution(unknown, a.output);
         print_summary(task, unknown, elapsed(), {}, a.output);

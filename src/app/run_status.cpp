@@ -13,12 +13,18 @@ constexpr Failure kFailures[] = {Failure::Invalid, Failure::Error, Failure::Time
 
 const char* failure_name(Failure failure) {
     switch (failure) {
-        case Failure::None: break;
-        case Failure::Invalid: return "invalid";
-        case Failure::Error: return "error";
-        case Failure::Timeout: return "timeout";
-        case Failure::Crashed: return "crashed";
-        case Failure::Cancelled: return "cancelled";
+        case Failure::None:
+            break;
+        case Failure::Invalid:
+            return "invalid";
+        case Failure::Error:
+            return "error";
+        case Failure::Timeout:
+            return "timeout";
+        case Failure::Crashed:
+            return "crashed";
+        case Failure::Cancelled:
+            return "cancelled";
     }
     return "";
 }
@@ -33,13 +39,15 @@ RunStatus run_status_from_string(std::string_view text, const std::string& part)
     for (const Failure f : kFailures) {
         if (text == failure_name(f)) return RunStatus::failed(f);
     }
-    for (const auto kind : {synth::Status::Solved, synth::Status::Infeasible, synth::Status::Unknown}) {
+    for (const auto kind :
+         {synth::Status::Solved, synth::Status::Infeasible, synth::Status::Unknown}) {
         if (text == synth::to_string(kind)) return RunStatus::answered(kind);
     }
-    throw task::InputError(part,
-                           "expected \"solved\", \"infeasible\", \"unknown\" or how a run failed "
-                           "(\"invalid\", \"error\", \"timeout\", \"crashed\", \"cancelled\"), got \"" +
-                               text::printable(text) + "\"");
+    throw task::InputError(
+        part,
+        "expected \"solved\", \"infeasible\", \"unknown\" or how a run failed "
+        "(\"invalid\", \"error\", \"timeout\", \"crashed\", \"cancelled\"), got \"" +
+            text::printable(text) + "\"");
 }
 
 }  // namespace modsynth::app

@@ -57,11 +57,16 @@ std::string last_error_line(const std::string& log_path) {
 RunStatus status_of_exit(int code) {
     using synth::Status;
     switch (code) {
-        case kOk: return RunStatus::answered(Status::Solved);
-        case kInfeasible: return RunStatus::answered(Status::Infeasible);
-        case kUnknown: return RunStatus::answered(Status::Unknown);
-        case kInvalid: return RunStatus::failed(RunStatus::Failure::Invalid);
-        default: return RunStatus::failed(RunStatus::Failure::Error);
+        case kOk:
+            return RunStatus::answered(Status::Solved);
+        case kInfeasible:
+            return RunStatus::answered(Status::Infeasible);
+        case kUnknown:
+            return RunStatus::answered(Status::Unknown);
+        case kInvalid:
+            return RunStatus::failed(RunStatus::Failure::Invalid);
+        default:
+            return RunStatus::failed(RunStatus::Failure::Error);
     }
 }
 

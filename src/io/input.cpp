@@ -92,8 +92,8 @@ nlohmann::json parse_json_text(std::string_view text) {
                                         std::to_string(column) + ": " + parse_detail(e));
     } catch (const json::out_of_range& e) {
         // The only one the parser throws: a number beyond double (1e999).
-        throw InputError(kDocument, overflow_detail(text, e.what()) +
-                                        " is too large; numbers must be finite");
+        throw InputError(kDocument,
+                         overflow_detail(text, e.what()) + " is too large; numbers must be finite");
     } catch (const json::exception& e) {
         throw InputError(kDocument, "not valid JSON: " + json_error_detail(e));
     }

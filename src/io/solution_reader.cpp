@@ -137,7 +137,8 @@ control::Phase parse_phase(const json& j, const std::string& part) {
     const std::string p = text(j, part);
     if (p == "trace") return control::Phase::Trace;
     if (p == "transition") return control::Phase::Transition;
-    throw InputError(part, "expected \"trace\" or \"transition\", got \"" + text::printable(p) + "\"");
+    throw InputError(part,
+                     "expected \"trace\" or \"transition\", got \"" + text::printable(p) + "\"");
 }
 
 control::Sample parse_sample(const json& j, const std::string& part, int dof) {

@@ -26,11 +26,6 @@ namespace modsynth::io {
 
 using task::BaseRegion;
 using task::InputError;
-using task::Obstacle;
-using task::Primitive;
-using task::RobotSpec;
-using task::Task;
-using task::Vec2;
 using task::kMaxBaseRegions;
 using task::kMaxCoordinate;
 using task::kMaxDof;
@@ -39,6 +34,11 @@ using task::kMaxObstacles;
 using task::kMaxPrimitives;
 using task::kMaxTaskBytes;
 using task::kMinDof;
+using task::Obstacle;
+using task::Primitive;
+using task::RobotSpec;
+using task::Task;
+using task::Vec2;
 
 namespace {
 
@@ -470,10 +470,10 @@ Task parse_task(const json& doc) {
     Task task;
     task.name = parse_name(doc);
     task.trajectory = parse_trajectory(doc);
-    task.obstacles = parse_list<Obstacle>(doc, "obstacles", "obstacles", kMaxObstacles, parse_obstacle);
-    task.base_regions =
-        parse_list<BaseRegion>(doc, "base_regions", "base regions", kMaxBaseRegions,
-                               parse_base_region);
+    task.obstacles =
+        parse_list<Obstacle>(doc, "obstacles", "obstacles", kMaxObstacles, parse_obstacle);
+    task.base_regions = parse_list<BaseRegion>(doc, "base_regions", "base regions", kMaxBaseRegions,
+                                               parse_base_region);
     task.robot = parse_robot(doc);
     check_clearance(task);
     return task;

@@ -96,10 +96,13 @@ std::pair<Status, std::string> attempt(const task::Task& relaxed, double seconds
     if (s.status == Status::Solved) {
         std::string links;
         for (double r : s.robot.link_lengths) links += text::format(links.empty() ? "%.3f" : " + %.3f", r);
-        return {s.status, "solved: " + std::to_string(s.robot.dof()) + " joints, links " + links + " m"};
+        return {s.status,
+                "solved: " + std::to_string(s.robot.dof()) + " joints, links " + links + " m"};
     }
-    if (s.status == Status::Infeasible) return {s.status, "still infeasible: " + s.explanation.message};
-    return {s.status, "the conflict is gone, but no robot was found within " + text::format("%.0f s", seconds)};
+    if (s.status == Status::Infeasible)
+        return {s.status, "still infeasible: " + s.explanation.message};
+    return {s.status, "the conflict is gone, but no robot was found within " +
+                          text::format("%.0f s", seconds)};
 }
 
 }  // namespace

@@ -7,9 +7,12 @@ namespace modsynth::synth {
 
 const char* to_string(Status::Kind kind) {
     switch (kind) {
-        case Status::Solved: return "solved";
-        case Status::Infeasible: return "infeasible";
-        case Status::Unknown: return "unknown";
+        case Status::Solved:
+            return "solved";
+        case Status::Infeasible:
+            return "infeasible";
+        case Status::Unknown:
+            return "unknown";
     }
     return "unknown";
 }

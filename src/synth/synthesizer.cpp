@@ -129,7 +129,7 @@ private:
     Clock::time_point deadline_;
     control::MotionOptions motion_;
     std::vector<std::string> tried_;
-    std::string stage_;  ///< the last stage said, for an unknown answer
+    std::string stage_ = "before the front stage";  ///< the last stage said, for an unknown answer
 };
 
 Solution Search::run() {
@@ -200,8 +200,9 @@ Solution Search::run() {
         return out;
     }
     const bool out_of_time = remaining() <= 0.0;
-    out.status = Status(Status::Unknown, stage_,
-                        out_of_time ? "time limit" : "every joint count tried without a certified robot");
+    out.status =
+        Status(Status::Unknown, stage_,
+               out_of_time ? "time limit" : "every joint count tried without a certified robot");
     out.explanation.message = "No certified robot found" +
                               std::string(out_of_time ? " within the time limit" : "") + ": " +
                               join(tried_, "; ") + ".";

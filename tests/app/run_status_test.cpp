@@ -13,8 +13,8 @@ TEST_CASE("a run's status round-trips through its text", "[status]") {
     std::vector<RunStatus> all;
     for (const auto kind : {Status::Solved, Status::Infeasible, Status::Unknown})
         all.push_back(RunStatus::answered(kind));
-    for (const auto f : {Failure::Invalid, Failure::Error, Failure::Timeout, Failure::Crashed,
-                         Failure::Cancelled})
+    for (const auto f :
+         {Failure::Invalid, Failure::Error, Failure::Timeout, Failure::Crashed, Failure::Cancelled})
         all.push_back(RunStatus::failed(f));
     for (const RunStatus& s : all) {
         const std::string text = to_string(s);

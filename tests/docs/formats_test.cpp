@@ -20,8 +20,8 @@
 #include <modsynth/io/task_io.h>
 
 using modsynth::io::parse_solution;
-using modsynth::task::InputError;
 using modsynth::io::parse_task;
+using modsynth::task::InputError;
 using nlohmann::json;
 
 namespace {

@@ -227,8 +227,7 @@ TEST_CASE("syntax errors name the line and column", "[task]") {
         CHECK_THAT(e.what(), Contains("line 1, column"));
     }
     SECTION("truncated text") {
-        const InputError e =
-            input_error([&] { modsynth::io::parse_task_text("{\n\"format\": "); });
+        const InputError e = input_error([&] { modsynth::io::parse_task_text("{\n\"format\": "); });
         CHECK_THAT(e.what(), Contains("line 2"));
     }
     SECTION("empty text") {
@@ -315,9 +314,10 @@ TEST_CASE("tasks past the documented caps are rejected naming the part and the c
 
 TEST_CASE("echoed text is printable and cut short", "[task]") {
     using modsynth::text::printable;
-    CHECK(printable("ab\xff\x01" "c") == "ab\\xFF\\x01c");
+    CHECK(printable("ab\xff\x01"
+                    "c") == "ab\\xFF\\x01c");
     CHECK(printable("caf\xc3\xa9") == "caf\xc3\xa9");  // valid UTF-8 stays
-    CHECK(printable("\xc3") == "\\xC3");                 // a cut sequence does not
+    CHECK(printable("\xc3") == "\\xC3");               // a cut sequence does not
     CHECK(printable(std::string(100, 'x'), 10) == std::string(10, 'x') + "...");
     CHECK(modsynth::text::compact(1e308) == "1e+308");
 }

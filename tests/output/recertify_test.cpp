@@ -23,7 +23,9 @@ namespace {
 // A solution `modsynth solve tasks/rose.json` wrote, kept as a fuzzing seed.
 const char* const kRoseSolution = "tests/fuzz/corpus/solution/rose.json";
 
-modsynth::task::Task rose() { return modsynth::io::load_task(testing::source_path("tasks/rose.json")); }
+modsynth::task::Task rose() {
+    return modsynth::io::load_task(testing::source_path("tasks/rose.json"));
+}
 
 nlohmann::json rose_solution() { return testing::read_json(testing::source_path(kRoseSolution)); }
 

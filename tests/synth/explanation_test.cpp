@@ -33,7 +33,8 @@ TEST_CASE("every hand-made infeasible task is proved with its expected core", "[
 }
 
 TEST_CASE("relaxations are the smallest change of one part, and they are re-checked", "[explain][slow]") {
-    const task::Task t = io::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
+    const task::Task t =
+        io::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
     const auto proof = synth::prove_infeasible(t, 10.0);
     REQUIRE(proof.proved);
     const auto suggestions = synth::suggest_relaxations(t, proof.core, 5.0);
@@ -45,6 +46,7 @@ TEST_CASE("relaxations are the smallest change of one part, and they are re-chec
     CHECK(longer->relaxed.robot.max_link_length >= 1.30);
     CHECK(longer->relaxed.robot.max_link_length <= 1.32);
     CHECK_FALSE(synth::prove_infeasible(longer->relaxed, 10.0).proved);
+    CHECK(longer->status == synth::Status::Solved);
     CHECK(longer->outcome.rfind("solved", 0) == 0);
     const auto moved = std::find_if(suggestions.begin(), suggestions.end(),
                                     [](const synth::Relaxation& r) { return r.part == "base_regions"; });
@@ -69,7 +71,8 @@ TEST_CASE("a feasible task is not proved infeasible", "[explain]") {
 }
 
 TEST_CASE("suggestions and proofs end at their time limit", "[explain]") {
-    const task::Task t = io::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
+    const task::Task t =
+        io::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
     const auto proof = synth::prove_infeasible(t, 10.0);
     REQUIRE(proof.proved);
     // Unbounded, the bisections and the solves of the relaxed tasks take

@@ -26,7 +26,8 @@ TEST_CASE("status text that is no status is rejected naming the part", "[status]
             FAIL("accepted \"" << text << "\"");
         } catch (const InputError& e) {
             CHECK(e.part() == "solve.status");
-            CHECK_THAT(e.what(), Catch::Matchers::Contains("\"solved\", \"infeasible\" or \"unknown\""));
+            CHECK_THAT(e.what(),
+                       Catch::Matchers::Contains("\"solved\", \"infeasible\" or \"unknown\""));
         }
     }
 }

@@ -111,6 +111,8 @@ TEST_CASE("the time limit is honoured and a run out of time answers unknown", "[
     if (s.status != synth::Status::Solved) {
         CHECK(s.status == synth::Status::Unknown);
         CHECK(s.explanation.message.find("time limit") != std::string::npos);
+        CHECK(s.status.reason == "time limit");
+        CHECK_FALSE(s.status.stage.empty());
     }
 }
 
