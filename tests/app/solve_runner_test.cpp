@@ -26,6 +26,16 @@ struct Run {
     app::SolveJob job{dir.path() + "/x.task.json", dir.path() + "/x.solution.json",
                       dir.path() + "/x.log"};
 
+    /// The hand-made two-joint task and, written as `solve` would, a solution.
+    template <typename MakeSolution>
+    synth::Solution wrote(MakeSolution make) const {
+        const task::Task task = testing::two_joint_task();
+        std::ofstream(job.task_path) << io::to_json(task).dump();
+        const synth::Solution s = make(task);
+        io::write_solution(s, job.solution_path);
+        return s;
+    }
+
     app::SolveOutcome ended(int exit_code, bool timed_out = false) const {
         app::ProcessResult r;
         r.exit_code = exit_code;
@@ -40,9 +50,7 @@ void write_text(const std::string& path, const std::string& text) { std::ofstrea
 
 TEST_CASE("a solved run's figures come from its solution file", "[app]") {
     Run run;
-    const task::Task task = testing::two_joint_task();
-    write_text(run.job.task_path, io::to_json(task).dump());
-    io::write_solution(testing::two_joint_solution(task), run.job.solution_path);
+    run.wrote(testing::two_joint_solution);
     const app::SolveOutcome o = run.ended(app::kOk);
     CHECK(o.status == synth::Status::Solved);
     CHECK(o.name == "line");
@@ -55,10 +63,7 @@ TEST_CASE("a solved run's figures come from its solution file", "[app]") {
 
 TEST_CASE("an infeasible run carries its explanation and core", "[app]") {
     Run run;
-    const task::Task task = testing::two_joint_task();
-    write_text(run.job.task_path, io::to_json(task).dump());
-    const synth::Solution s = testing::infeasible_solution(task);
-    io::write_solution(s, run.job.solution_path);
+    const synth::Solution s = run.wrote(testing::infeasible_solution);
     const app::SolveOutcome o = run.ended(app::kInfeasible);
     CHECK(o.status == synth::Status::Infeasible);
     CHECK(o.message == s.explanation.message);
@@ -69,9 +74,7 @@ TEST_CASE("an infeasible run carries its explanation and core", "[app]") {
 TEST_CASE("a solution file that contradicts the exit code, or is unreadable, is an error",
           "[app]") {
     Run run;
-    const task::Task task = testing::two_joint_task();
-    write_text(run.job.task_path, io::to_json(task).dump());
-    io::write_solution(testing::two_joint_solution(task), run.job.solution_path);
+    run.wrote(testing::two_joint_solution);
     const app::SolveOutcome says = run.ended(app::kInfeasible);
     CHECK(says.status == RunStatus::Failure::Error);
     CHECK_THAT(says.message, Contains("exit code 3 but the solution file says 'solved'"));
