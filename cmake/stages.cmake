@@ -1,7 +1,8 @@
-# modsynth_stage(NAME SOURCES ... [DEPENDS stage ...] [PUBLIC_LIBS ...] [PRIVATE_LIBS ...])
+# modsynth_stage(NAME [SOURCES ...] [DEPENDS stage ...] [PUBLIC_LIBS ...] [PRIVATE_LIBS ...])
 #
 # One static library per stage of the pipeline, modsynth_NAME, linked only
-# to the stages it builds on. Its code is src/NAME/ and include/modsynth/NAME/.
+# to the stages it builds on (an interface library when it has no SOURCES).
+# Its code is src/NAME/ and include/modsynth/NAME/.
 #
 # Static libraries may depend on each other in a cycle without CMake
 # objecting, so the rule is checked where a back edge starts: every
@@ -11,9 +12,16 @@
 function(modsynth_stage name)
   cmake_parse_arguments(S "" "" "SOURCES;DEPENDS;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
   set(target modsynth_${name})
-  add_library(${target} STATIC ${S_SOURCES})
-  target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR}/include)
-  target_compile_options(${target} PRIVATE ${MODSYNTH_WARNINGS})
+  # A stage of headers only (value types) has no library to build.
+  if(S_SOURCES)
+    add_library(${target} STATIC ${S_SOURCES})
+    target_compile_options(${target} PRIVATE ${MODSYNTH_WARNINGS})
+    set(scope PUBLIC)
+  else()
+    add_library(${target} INTERFACE)
+    set(scope INTERFACE)
+  endif()
+  target_include_directories(${target} ${scope} ${PROJECT_SOURCE_DIR}/include)
   set(stage_links)
   set(closure ${name})
   foreach(dep IN LISTS S_DEPENDS)
@@ -26,7 +34,11 @@ function(modsynth_stage name)
   endforeach()
   list(REMOVE_DUPLICATES closure)
   set_property(GLOBAL PROPERTY MODSYNTH_STAGE_CLOSURE_${name} ${closure})
-  target_link_libraries(${target} PUBLIC ${stage_links} ${S_PUBLIC_LIBS} PRIVATE ${S_PRIVATE_LIBS})
+  if(S_SOURCES)
+    target_link_libraries(${target} PUBLIC ${stage_links} ${S_PUBLIC_LIBS} PRIVATE ${S_PRIVATE_LIBS})
+  else()
+    target_link_libraries(${target} INTERFACE ${stage_links} ${S_PUBLIC_LIBS})
+  endif()
 
   file(GLOB own_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*
                                         ${PROJECT_SOURCE_DIR}/include/modsynth/${name}/*.h)

@@ -1,6 +1,7 @@
 #include "api_routes.h"
 
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/input.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/text/printable.h>
 
 #include <algorithm>
@@ -112,8 +113,9 @@ std::string status_text(int status, const ApiSettings& settings, const Request& 
 std::string job_path(const std::string& id) { return "/api/jobs/" + id; }
 
 json outcome_json(const SolveOutcome& o) {
-    json out = {{"status", o.status}, {"exit_code", o.exit_code}, {"seconds", o.seconds},
-                {"name", o.name},     {"message", o.message},     {"core", o.core}};
+    json out = {{"status", to_string(o.status)}, {"exit_code", o.exit_code},
+                {"seconds", o.seconds},          {"name", o.name},
+                {"message", o.message},          {"core", o.core}};
     out["dof"] = o.dof ? json(*o.dof) : json(nullptr);
     out["total_link_length"] = o.total_link_length ? json(*o.total_link_length) : json(nullptr);
     out["clearance_margin"] = o.clearance_margin ? json(*o.clearance_margin) : json(nullptr);
@@ -128,7 +130,7 @@ json job_json(const JobState& s) {
         {"id", s.id},
         {"phase", to_string(s.phase)},
         {"done", s.phase == Phase::Done},
-        {"status", s.status.empty() ? json(nullptr) : json(s.status)},
+        {"status", s.status ? json(to_string(*s.status)) : json(nullptr)},
         {"stage", s.stage},
         {"elapsed", std::round(s.elapsed * 1000.0) / 1000.0},
         {"time_limit", s.time_limit},
@@ -174,11 +176,8 @@ std::optional<std::string> read_capped_body(const Request& req, Response& res,
 /// The request body as JSON, or nothing after replying 400 with where the
 /// syntax breaks.
 std::optional<json> read_body(const std::string& text, Response& res) {
-    json doc = json::parse(text, nullptr, false);
-    if (!doc.is_discarded()) return doc;
     try {
-        task::parse_task_text(text);  // for its message naming line and column
-        send_error(res, 400, "the body is not valid JSON");
+        return io::parse_json_text(text);
     } catch (const task::InputError& e) {
         send_error(res, 400, e.what());
     }
@@ -345,7 +344,7 @@ private:
         const auto doc = read_body(body, res);
         if (!doc) return;
         try {
-            const task::Task t = task::parse_task(*doc);
+            const task::Task t = io::parse_task(*doc);
             send_json(res, 200,
                       {{"valid", true},
                        {"name", t.name},
@@ -366,7 +365,7 @@ private:
         if (!doc) return;
         double time_limit = 0.0;
         try {
-            task::parse_task(*doc);
+            io::parse_task(*doc);
             time_limit = query_number(req, "time_limit").value_or(0.0);
         } catch (const task::InputError& e) {
             send_error(res, e.part() == "time_limit" ? 400 : 422, e.what(), e.part());

@@ -9,7 +9,7 @@
 #include <modsynth/baseline/baseline.h>
 #include <modsynth/output/baseline_io.h>
 #include <modsynth/output/exports.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 #include "command.h"
 #include "number_checks.h"
@@ -49,7 +49,7 @@ void print_result(const task::Task& task, const baseline::BaselineResult& r) {
 }
 
 int run_baseline(BaselineArgs& a) {
-    const task::Task task = task::load_task(a.task);
+    const task::Task task = io::load_task(a.task);
     if (!a.quiet) a.options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
     const baseline::BaselineResult r = baseline::run_baseline(task, a.options);
     if (!a.output.empty()) output::write_text_file(a.output, output::to_json(r, true).dump(1) + "\n");

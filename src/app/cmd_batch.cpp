@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -44,7 +45,20 @@ std::vector<std::string> all_tasks(const std::string& input) {
 
 // Failures of any kind share one column: a user first wants to know how many
 // runs need a look, the results file says why.
-std::string column_of(const std::string& status) { return is_answer(status) ? status : "failed"; }
+constexpr synth::Status::Kind kAnswerColumns[] = {synth::Status::Solved, synth::Status::Infeasible,
+                                                  synth::Status::Unknown};
+constexpr std::size_t kFailedColumn = std::size(kAnswerColumns);
+constexpr std::size_t kColumns = kFailedColumn + 1;
+
+std::size_t column_of(const RunStatus& status) {
+    for (std::size_t c = 0; c < kFailedColumn; ++c)
+        if (status == kAnswerColumns[c]) return c;
+    return kFailedColumn;
+}
+
+const char* column_name(std::size_t column) {
+    return column == kFailedColumn ? "failed" : synth::to_string(kAnswerColumns[column]);
+}
 
 // Dividing by the power of ten gives the double nearest the decimal, which
 // JSON then prints without a tail of noise.
@@ -62,16 +76,16 @@ nlohmann::ordered_json result_line(const std::string& path, const SolveOutcome& 
     nlohmann::ordered_json line;
     line["task"] = path;
     line["name"] = o.name;
-    line["status"] = o.status;
+    line["status"] = to_string(o.status);
     line["exit_code"] = o.exit_code;
     line["seconds"] = round_to(o.seconds, 3);
     line["dof"] = o.dof ? nlohmann::json(*o.dof) : nlohmann::json(nullptr);
     line["total_link_length"] = optional_json(o.total_link_length, 9);
     line["clearance_margin"] = optional_json(o.clearance_margin, 9);
     if (!o.core.empty()) line["core"] = o.core;
-    if (!o.message.empty() && o.status != "solved") line["message"] = o.message;
+    if (!o.message.empty() && o.status != synth::Status::Solved) line["message"] = o.message;
     if (o.signal != 0) line["signal"] = o.signal;
-    line["solution"] = kept_solution.empty() || !is_answer(o.status)
+    line["solution"] = kept_solution.empty() || !o.status.is_answer()
                            ? nlohmann::json(nullptr)
                            : nlohmann::json(kept_solution);
     return line;
@@ -88,8 +102,8 @@ public:
             draw("");
         } else {
             char buf[128];
-            std::snprintf(buf, sizeof buf, "  %s: %s %.2f s", o.name.c_str(), o.status.c_str(),
-                          o.seconds);
+            std::snprintf(buf, sizeof buf, "  %s: %s %.2f s", o.name.c_str(),
+                          to_string(o.status).c_str(), o.seconds);
             draw(buf);
         }
     }
@@ -104,16 +118,16 @@ public:
 private:
     void draw(const std::string& tail) {
         const int width = static_cast<int>(std::to_string(total_).size());
-        std::fprintf(
-            stderr, "%s[%*zu/%zu] solved %d, infeasible %d, unknown %d, failed %d, %.1f s%s%s",
-            tty_ ? "\r" : "", width, done_, total_, counts_["solved"], counts_["infeasible"],
-            counts_["unknown"], counts_["failed"], elapsed(), tail.c_str(), tty_ ? "\033[K" : "\n");
+        std::fprintf(stderr,
+                     "%s[%*zu/%zu] solved %d, infeasible %d, unknown %d, failed %d, %.1f s%s%s",
+                     tty_ ? "\r" : "", width, done_, total_, counts_[0], counts_[1], counts_[2],
+                     counts_[kFailedColumn], elapsed(), tail.c_str(), tty_ ? "\033[K" : "\n");
         std::fflush(stderr);
     }
 
     std::size_t total_, done_ = 0;
     bool tty_;
-    std::map<std::string, int> counts_;
+    std::array<int, kColumns> counts_{};  // by column_of
     Clock::time_point start_ = Clock::now();
 };
 
@@ -137,18 +151,18 @@ void print_summary(const BatchArgs& a, const Shard& shard, const std::vector<std
     std::printf("batch: %zu tasks (shard %d/%d) in %.1f s with %d jobs\n", outcomes.size(),
                 shard.index, shard.count, wall, a.run.jobs);
     std::printf("  %-11s %6s %10s %9s\n", "status", "tasks", "median s", "max s");
-    std::map<std::string, std::vector<double>> by_column;
+    std::array<std::vector<double>, kColumns> by_column;
     std::vector<double> all;
     for (const auto& o : outcomes) {
         by_column[column_of(o.status)].push_back(o.seconds);
         all.push_back(o.seconds);
     }
-    for (const char* c : {"solved", "infeasible", "unknown", "failed"}) print_row(c, by_column[c]);
+    for (std::size_t c = 0; c < kColumns; ++c) print_row(column_name(c), by_column[c]);
     print_row("all", all);
     for (std::size_t i = 0; i < outcomes.size(); ++i)
-        if (!is_answer(outcomes[i].status))
-            std::printf("  failed: %s: %s: %s\n", paths[i].c_str(), outcomes[i].status.c_str(),
-                        outcomes[i].message.c_str());
+        if (!outcomes[i].status.is_answer())
+            std::printf("  failed: %s: %s: %s\n", paths[i].c_str(),
+                        to_string(outcomes[i].status).c_str(), outcomes[i].message.c_str());
     std::printf("results: %s\n", a.out.c_str());
 }
 
@@ -219,7 +233,7 @@ int run_batch(const BatchArgs& a) {
     print_summary(a, shard, paths, outcomes, progress.elapsed());
     const bool all_answered =
         std::all_of(outcomes.begin(), outcomes.end(),
-                    [](const SolveOutcome& o) { return is_answer(o.status); });
+                    [](const SolveOutcome& o) { return o.status.is_answer(); });
     return all_answered ? kOk : kInternal;
 }
 

@@ -9,7 +9,7 @@
 #include <modsynth/baseline/comparison.h>
 #include <modsynth/output/baseline_io.h>
 #include <modsynth/output/exports.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/text/format.h>
 
 #include "command.h"
@@ -89,7 +89,7 @@ void print_table(const baseline::Comparison& c, int points) {
 constexpr double kWatchdogMargin = 1.0;
 
 int run_compare(CompareArgs& a) {
-    const task::Task task = task::load_task(a.task);
+    const task::Task task = io::load_task(a.task);
     const double limit = a.time_limit + a.options.time_limit;
     Watchdog watchdog(limit + kWatchdogMargin, [&] {
         std::fprintf(stderr, "compare: stopped after %.3g s (the two time limits) while: %s\n", limit,

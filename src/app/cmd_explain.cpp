@@ -9,7 +9,7 @@
 
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/synthesizer.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 #include "command.h"
 #include "watchdog.h"
@@ -32,14 +32,16 @@ constexpr double kWatchdogMargin = 0.6;
 // there is none, and then the suggestions.
 int run_explain(const ExplainArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
-    const task::Task task = task::load_task(a.task);
+    const task::Task task = io::load_task(a.task);
     const auto left = [&] {
         return a.time_limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
     std::mutex mutex;  // `out` is shared with the watchdog
     nlohmann::json out;
+    // What the JSON says so far: unknown until a proof or a full run answers.
+    synth::Status status = synth::Status::Unknown;
     out["task"] = task.name;
-    out["status"] = "unknown";
+    out["status"] = synth::to_string(status);
     Watchdog watchdog(left() + kWatchdogMargin, [&] {
         std::lock_guard<std::mutex> lock(mutex);
         const std::string note = "stopped at the time limit while " + watchdog.stage();
@@ -47,9 +49,9 @@ int run_explain(const ExplainArgs& a) {
             out["note"] = note;
             std::printf("%s\n", out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
         } else {
-            std::printf("%s%s\n", out["status"] == "infeasible" ? "  " : "", note.c_str());
+            std::printf("%s%s\n", status == synth::Status::Infeasible ? "  " : "", note.c_str());
         }
-        return out["status"] == "infeasible" ? int{kInfeasible} : int{kUnknown};
+        return status == synth::Status::Infeasible ? int{kInfeasible} : int{kUnknown};
     });
     watchdog.set_stage("proving infeasibility");
     const synth::InfeasibilityProof proof = synth::prove_infeasible(task, std::min(10.0, left()));
@@ -77,7 +79,8 @@ int run_explain(const ExplainArgs& a) {
     const std::string message = "Proved infeasible: " + synth::describe_conflict(task, proof.core);
     {
         std::lock_guard<std::mutex> lock(mutex);
-        out["status"] = "infeasible";
+        status = synth::Status::Infeasible;
+        out["status"] = synth::to_string(status);
         out["message"] = message;
         out["core"] = proof.core;
         out["suggestions"] = nlohmann::json::array();

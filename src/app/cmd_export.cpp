@@ -4,8 +4,8 @@
 
 #include <modsynth/output/exports.h>
 #include <modsynth/output/recertify.h>
-#include <modsynth/output/solution_reader.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_io.h>
 
 #include "command.h"
 
@@ -24,8 +24,8 @@ int run_export(const ExportArgs& a) {
                      "--build-sheet\n");
         return kInvalid;
     }
-    const task::Task task = task::load_task(a.task);
-    output::ParsedSolution parsed = output::load_solution(a.solution);
+    const task::Task task = io::load_task(a.task);
+    io::ParsedSolution parsed = io::load_solution(a.solution);
     output::ReportFigures figures;
     figures.certificate_note = output::recertify(task, parsed);
     const synth::Solution& s = parsed.solution;

@@ -3,10 +3,11 @@
 // the worse (a status lost, a claim of infeasibility appearing or vanishing,
 // another core, a longer robot) exits 1; a change for the better is reported
 // and passes, since the figures are expected to improve with the solver.
-#include <modsynth/output/atomic_file.h>
+#include <modsynth/io/atomic_file.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/smt/front_stage.h>
-#include <modsynth/task/task_io.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/printable.h>
 
 #include <algorithm>
 #include <chrono>
@@ -46,14 +47,14 @@ struct RegressArgs {
 
 struct FrontFigures {
     int dof = 0;
-    std::string result;  ///< sat, unsat or unknown
+    smt::FrontStage::Result result = smt::FrontStage::Result::Unknown;
     std::vector<std::string> core;
     double seconds = 0.0;
     std::string encoding;  ///< SMT-LIB2 text (fresh runs only)
 };
 
 struct SolveFigures {
-    std::string status;
+    RunStatus status;
     std::optional<int> dof;
     std::optional<double> total_link_length;
     std::vector<std::string> core;
@@ -111,7 +112,7 @@ std::optional<std::string> read_text(const std::string& path) {
 
 void write_text(const std::string& path, const std::string& text) {
     fs::create_directories(fs::path(path).parent_path());
-    output::write_file_atomically(path, text);
+    io::write_file_atomically(path, text);
 }
 
 // ------------------------------------------------------------- fresh figures
@@ -128,6 +129,14 @@ const char* result_name(smt::FrontStage::Result r) {
     return "unknown";
 }
 
+smt::FrontStage::Result result_from_name(const std::string& name, const std::string& part) {
+    using R = smt::FrontStage::Result;
+    for (const R r : {R::Sat, R::Unsat, R::Unknown})
+        if (name == result_name(r)) return r;
+    throw task::InputError(part,
+                           "expected sat, unsat or unknown, got \"" + text::printable(name) + "\"");
+}
+
 // In-process: the front stage is Z3's nlsat, which honours its timeout, and
 // Ipopt is not involved.
 FrontFigures run_front(const task::Task& task, int dof) {
@@ -137,7 +146,7 @@ FrontFigures run_front(const task::Task& task, int dof) {
     f.dof = dof;
     f.encoding = front.smtlib();
     const auto result = front.check();
-    f.result = result_name(result);
+    f.result = result;
     if (result == smt::FrontStage::Result::Unsat) f.core = front.minimal_core();
     f.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return f;
@@ -150,7 +159,7 @@ std::vector<Entry> discover(const RegressArgs& a) {
         e.task_path = path;
         e.key = key_of(path, a.tasks);
         try {
-            const task::Task t = task::load_task(path);
+            const task::Task t = io::load_task(path);
             e.now.name = t.name;
             for (int dof : t.robot.dof) e.now.front.push_back(run_front(t, dof));
         } catch (const task::InputError& err) {
@@ -199,12 +208,12 @@ Json to_json(const Entry& e, const std::string& task, double time_limit) {
     for (const auto& f : e.now.front)
         front.push_back({{"dof", f.dof},
                          {"encoding", encoding_name(e.key, f.dof)},
-                         {"result", f.result},
+                         {"result", result_name(f.result)},
                          {"core", f.core},
                          {"seconds", rounded(f.seconds, 3)}});
     const SolveFigures& s = e.now.solve;
     Json solve = {
-        {"status", s.status},
+        {"status", to_string(s.status)},
         {"dof", s.dof ? Json(*s.dof) : Json(nullptr)},
         {"total_link_length",
          optional_json(s.total_link_length ? std::optional<double>(rounded(*s.total_link_length, 6))
@@ -236,13 +245,13 @@ Figures parse_expectation(const nlohmann::json& doc) {
     for (const auto& x : doc.at("front_stage")) {
         FrontFigures ff;
         ff.dof = x.at("dof").get<int>();
-        ff.result = x.at("result").get<std::string>();
+        ff.result = result_from_name(x.at("result").get<std::string>(), "front_stage.result");
         ff.core = strings_of(x.value("core", nlohmann::json::array()));
         ff.seconds = x.value("seconds", 0.0);
         f.front.push_back(ff);
     }
     const auto& s = doc.at("solve");
-    f.solve.status = s.at("status").get<std::string>();
+    f.solve.status = run_status_from_string(s.at("status").get<std::string>(), "solve.status");
     if (s.contains("dof") && s["dof"].is_number_integer()) f.solve.dof = s["dof"].get<int>();
     if (s.contains("total_link_length") && s["total_link_length"].is_number())
         f.solve.total_link_length = s["total_link_length"].get<double>();
@@ -293,21 +302,26 @@ std::string braces(const std::vector<std::string>& parts) {
 
 Judgement judge_front(const FrontFigures& e, const FrontFigures& n) {
     if (e.result == n.result) {
-        if (n.result == "unsat" && !same_set(e.core, n.core))
+        if (n.result == smt::FrontStage::Result::Unsat && !same_set(e.core, n.core))
             return {Verdict::Regressed, "core " + braces(n.core) + ", expected " + braces(e.core)};
         return {};
     }
-    if (e.result == "unknown" && n.result == "sat") return {Verdict::Improved, "now decided"};
-    return {Verdict::Regressed, "was " + e.result + ", now " + n.result};
+    if (e.result == smt::FrontStage::Result::Unknown && n.result == smt::FrontStage::Result::Sat)
+        return {Verdict::Improved, "now decided"};
+    return {Verdict::Regressed,
+            std::string("was ") + result_name(e.result) + ", now " + result_name(n.result)};
 }
 
 // Failed runs (timeout, error, ...) rank below unknown: both are non-answers,
 // but unknown is an orderly one.
-int rank(const std::string& status) {
-    if (status == "solved") return 2;
-    return status == "unknown" ? 1 : 0;
+int rank(const RunStatus& status) {
+    if (status == synth::Status::Solved) return 2;
+    return status == synth::Status::Unknown ? 1 : 0;
 }
 
+std::string was_now(const SolveFigures& e, const SolveFigures& n) {
+    return "was " + to_string(e.status) + ", now " + to_string(n.status);
+}
 
 Judgement judge_solved(const SolveFigures& e, const SolveFigures& n, double tolerance) {
     if (!e.dof || !e.total_link_length) return {Verdict::Improved, "expectation had no robot"};
@@ -327,31 +341,31 @@ Judgement judge_solved(const SolveFigures& e, const SolveFigures& n, double tole
 }
 
 Judgement judge_solve(const SolveFigures& e, const SolveFigures& n, double tolerance) {
-    if (e.status == "infeasible" || n.status == "infeasible") {
-        if (e.status != n.status)
-            return {Verdict::Regressed, "was " + e.status + ", now " + n.status};
+    if (e.status == synth::Status::Infeasible || n.status == synth::Status::Infeasible) {
+        if (e.status != n.status) return {Verdict::Regressed, was_now(e, n)};
         if (!same_set(e.core, n.core))
             return {Verdict::Regressed, "core " + braces(n.core) + ", expected " + braces(e.core)};
         return {};
     }
-    if (rank(n.status) < rank(e.status))
-        return {Verdict::Regressed, "was " + e.status + ", now " + n.status};
-    if (rank(n.status) > rank(e.status))
-        return {Verdict::Improved, "was " + e.status + ", now " + n.status};
-    return n.status == "solved" ? judge_solved(e, n, tolerance) : Judgement{};
+    if (rank(n.status) < rank(e.status)) return {Verdict::Regressed, was_now(e, n)};
+    if (rank(n.status) > rank(e.status)) return {Verdict::Improved, was_now(e, n)};
+    return n.status == synth::Status::Solved ? judge_solved(e, n, tolerance) : Judgement{};
 }
 
 // ------------------------------------------------------------------ display
 
 std::string show_front(const FrontFigures& f) {
-    return f.result == "unsat" ? "unsat, core of " + std::to_string(f.core.size()) : f.result;
+    return f.result == smt::FrontStage::Result::Unsat
+               ? "unsat, core of " + std::to_string(f.core.size())
+               : result_name(f.result);
 }
 
 std::string show_solve(const SolveFigures& s) {
-    if (s.status == "solved" && s.dof && s.total_link_length)
+    if (s.status == synth::Status::Solved && s.dof && s.total_link_length)
         return text::format("solved, %d joints, %.4f m", *s.dof, *s.total_link_length);
-    if (s.status == "infeasible") return "infeasible, core of " + std::to_string(s.core.size());
-    return s.status;
+    if (s.status == synth::Status::Infeasible)
+        return to_string(s.status) + ", core of " + std::to_string(s.core.size());
+    return to_string(s.status);
 }
 
 std::string show_seconds(double was, double now) { return text::format("%.2f -> %.2f", was, now); }
@@ -546,9 +560,9 @@ int regenerate(const std::vector<Entry>& entries, const RegressArgs& a) {
                     show_solve(e.now.solve).c_str());
         for (const auto& f : e.now.front) std::printf(" [%d: %s]", f.dof, show_front(f).c_str());
         std::printf("\n");
-        if (!is_answer(e.now.solve.status))
+        if (!e.now.solve.status.is_answer())
             std::printf("  warning: the solve failed (%s); recorded as such\n",
-                        e.now.solve.status.c_str());
+                        to_string(e.now.solve.status).c_str());
     }
     if (fs::is_directory(a.dir)) remove_stale_files(a.dir, written);
     std::printf("wrote %zu expectations to %s\n", entries.size(), a.dir.c_str());

@@ -6,9 +6,9 @@
 #include <string>
 
 #include <modsynth/output/exports.h>
-#include <modsynth/output/solution_io.h>
+#include <modsynth/io/solution_io.h>
 #include <modsynth/synth/synthesizer.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
@@ -57,19 +57,20 @@ constexpr double kWatchdogMargin = 0.6;
 
 int run_solve(const SolveArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
-    const task::Task task = task::load_task(a.task);
+    const task::Task task = io::load_task(a.task);
     const auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
     Watchdog watchdog(a.time_limit + kWatchdogMargin - elapsed(), [&] {
         synth::Solution unknown;
         unknown.task_name = task.name;
-        unknown.status = synth::Status::Unknown;
-        unknown.explanation.message =
-            text::format("No certified robot found within the time limit (%.3g s); the last stage reached: ",
-                         a.time_limit) +
-            text::printable(watchdog.stage(), 200) + ".";
-        output::write_solution(unknown, a.output);
+        unknown.status =
+            synth::Status(synth::Status::Unknown, text::printable(watchdog.stage(), 200),
+                          text::format("time limit (%.3g s)", a.time_limit));
+        unknown.explanation.message = "No certified robot found within the " +
+                                      unknown.status.reason +
+                                      "; the last stage reached: " + unknown.status.stage + ".";
+        io::write_solution(unknown, a.output);
         // The same files as any other answer: a report that says "unknown"
         // and why, and a note for each export an unknown answer cannot give.
         for (const auto& note : output::write_exports(task, unknown, a.exports, {}))
@@ -90,7 +91,7 @@ int run_solve(const SolveArgs& a) {
     const synth::Solution solution = synth::synthesize(task, options, &stats);
     const double seconds = elapsed();
     watchdog.claim();
-    output::write_solution(solution, a.output);
+    io::write_solution(solution, a.output);
     for (const auto& note : output::write_exports(
              task, solution, a.exports,
              {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}})) {

@@ -2,7 +2,7 @@
 #include <memory>
 #include <string>
 
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 #include <modsynth/text/printable.h>
 
@@ -15,7 +15,7 @@ Command add_validate(CLI::App& parent) {
     CLI::App* sub = parent.add_subcommand("validate", "Check a task file (exit 0 valid, 2 invalid)");
     sub->add_option("TASK", *path, "modsynth-task/1 JSON file")->required();
     return {sub, [path] {
-                const task::Task t = task::load_task(*path);
+                const task::Task t = io::load_task(*path);
                 std::printf("%s: valid task '%s': %zu primitives, %zu obstacles, %zu base regions\n",
                             path->c_str(), text::printable(t.name, 80).c_str(), t.trajectory.size(), t.obstacles.size(),
                             t.base_regions.size());

@@ -224,7 +224,7 @@ void SolveJobs::stop(Job& job, const std::string& reason) {
         job.state.explanation_note = "no suggestions: " + reason;
         finish(job, job.state.outcome->status);
     } else {
-        finish(job, "cancelled");
+        finish(job, RunStatus::failed(RunStatus::Failure::Cancelled));
     }
 }
 
@@ -246,7 +246,7 @@ void SolveJobs::end_solve(Job& job) {
     const SolveJob files{job.path("task.json"), job.path("solution.json"), job.path("solve.log")};
     job.state.outcome = read_outcome(files, *job.child->poll(), options);
     ++job.state.version;
-    if (job.state.outcome->status != "infeasible") {
+    if (job.state.outcome->status != synth::Status::Infeasible) {
         finish(job, job.state.outcome->status);
         return;
     }
@@ -281,11 +281,11 @@ void SolveJobs::end_explain(Job& job) {
     finish(job, job.state.outcome->status);
 }
 
-void SolveJobs::finish(Job& job, const std::string& status) {
+void SolveJobs::finish(Job& job, const RunStatus& status) {
     job.state.phase = Phase::Done;
     job.state.status = status;
     job.state.elapsed = std::chrono::duration<double>(Clock::now() - job.start).count();
-    job.state.stage = status;
+    job.state.stage = to_string(status);
     job.state.files.clear();
     for (const auto& name : kFiles) {
         std::error_code ec;

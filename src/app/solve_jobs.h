@@ -46,9 +46,8 @@ struct JobState {
     std::string stage;                    ///< the latest progress line, without its clock
     std::vector<std::string> log;         ///< the latest output lines
     std::optional<SolveOutcome> outcome;  ///< once the solve has ended
-    /// Once done: the outcome's status ("solved", "infeasible", "timeout",
-    /// ...) or "cancelled".
-    std::string status;
+    /// Once done: the outcome's status, or Cancelled.
+    std::optional<RunStatus> status;
     std::string cancel_reason;
     std::optional<nlohmann::json> explanation;  ///< `explain --json`'s answer
     std::string explanation_note;               ///< why there is none, or what is missing
@@ -102,7 +101,7 @@ private:
     void follow_log(Job& job, bool final);
     void end_solve(Job& job);
     void end_explain(Job& job);
-    void finish(Job& job, const std::string& status);
+    void finish(Job& job, const RunStatus& status);
     void evict_finished();
     JobState snapshot(const Job& job) const;
     Job* find(const std::string& id);

@@ -1,11 +1,13 @@
 #include "solve_runner.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 
+#include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/text/format.h>
 
 #include "command.h"
@@ -24,22 +26,6 @@ ProcessSpec spec_for(const SolveJob& job, const SolveRunOptions& o, const std::s
     spec.log_path = job.log_path;
     spec.wall_limit = o.time_limit + o.grace;
     return spec;
-}
-
-// Unparsable input yields an empty object: the caller then falls back to
-// what the exit code says.
-nlohmann::json read_json(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return nlohmann::json::object();
-    std::ifstream in(path);
-    if (!in) return nlohmann::json::object();
-    try {
-        auto doc = nlohmann::json::parse(in, nullptr, false);
-        return doc.is_object() ? doc : nlohmann::json::object();
-    } catch (const std::exception&) {
-        // A read error (the file vanished, an I/O error) is unparsable too.
-        return nlohmann::json::object();
-    }
 }
 
 /// Why a task path cannot be solved at all, or "" when it can be tried: a
@@ -68,61 +54,58 @@ std::string last_error_line(const std::string& log_path) {
     return error.substr(error.find(':') + 2);
 }
 
-std::string status_of_exit(int code) {
+RunStatus status_of_exit(int code) {
+    using synth::Status;
     switch (code) {
         case kOk:
-            return "solved";
+            return RunStatus::answered(Status::Solved);
         case kInfeasible:
-            return "infeasible";
+            return RunStatus::answered(Status::Infeasible);
         case kUnknown:
-            return "unknown";
+            return RunStatus::answered(Status::Unknown);
         case kInvalid:
-            return "invalid";
+            return RunStatus::failed(RunStatus::Failure::Invalid);
         default:
-            return "error";
+            return RunStatus::failed(RunStatus::Failure::Error);
     }
 }
 
-std::optional<double> optional_number(const nlohmann::json& doc, const char* key) {
-    const auto it = doc.find(key);
-    if (it == doc.end() || !it->is_number()) return std::nullopt;
-    return it->get<double>();
-}
-
+/// The answer's figures from the solution file the run wrote, which must
+/// say what its exit code said.
 void read_solution(const std::string& path, SolveOutcome& o) {
-    const nlohmann::json doc = read_json(path);
-    const std::string status = doc.value("status", "");
-    if (status != o.status) {
-        o.message = "exit code " + std::to_string(o.exit_code) + " but the solution file says '" +
-                    status + "' (" + path + ")";
-        o.status = "error";
+    io::ParsedSolution parsed;
+    try {
+        parsed = io::load_solution(path);
+    } catch (const task::InputError& e) {
+        o.message = "exit code " + std::to_string(o.exit_code) +
+                    " but the solution file cannot be read: " + e.what();
+        o.status = RunStatus::failed(RunStatus::Failure::Error);
         return;
     }
-    o.name = doc.value("task", o.name);
-    if (const auto e = doc.find("explanation"); e != doc.end() && e->is_object()) {
-        o.message = e->value("message", "");
-        if (const auto c = e->find("core"); c != e->end() && c->is_array())
-            for (const auto& part : *c)
-                if (part.is_string()) o.core.push_back(part.get<std::string>());
+    const synth::Solution& s = parsed.solution;
+    if (s.status.kind != o.status.answer.kind) {
+        o.message = "exit code " + std::to_string(o.exit_code) + " but the solution file says '" +
+                    synth::to_string(s.status) + "' (" + path + ")";
+        o.status = RunStatus::failed(RunStatus::Failure::Error);
+        return;
     }
-    const auto robot = doc.find("robot");
-    if (robot != doc.end() && robot->is_object()) {
-        if (const auto d = robot->find("dof"); d != robot->end() && d->is_number_integer())
-            o.dof = d->get<int>();
-        if (const auto l = robot->find("link_lengths"); l != robot->end() && l->is_array()) {
-            double sum = 0.0;
-            for (const auto& r : *l) sum += r.is_number() ? r.get<double>() : 0.0;
-            o.total_link_length = sum;
-        }
-    }
-    if (const auto c = doc.find("certificate"); c != doc.end() && c->is_object())
-        o.clearance_margin = optional_number(*c, "min_clearance_margin");
+    if (!s.task_name.empty()) o.name = s.task_name;
+    o.message = s.explanation.message;
+    o.core = s.explanation.core;
+    if (s.status != synth::Status::Solved) return;
+    o.dof = s.robot.dof();
+    o.total_link_length = s.robot.total_length();
+    if (parsed.has_certificate && std::isfinite(s.certificate.min_clearance))
+        o.clearance_margin = s.certificate.min_clearance;
 }
 
+/// The task's name, or the file's stem when the task cannot be read.
 std::string task_name(const std::string& task_path) {
-    const nlohmann::json doc = read_json(task_path);
-    const auto it = doc.find("name");
-    return it != doc.end() && it->is_string() ? it->get<std::string>() : task_stem(task_path);
+    try {
+        return io::load_task(task_path).name;
+    } catch (const task::InputError&) {
+        return task_stem(task_path);
+    }
 }
 
 SolveOutcome outcome_of(const SolveJob& job, const ProcessResult& r, const SolveRunOptions& o) {
@@ -133,17 +116,17 @@ SolveOutcome outcome_of(const SolveJob& job, const ProcessResult& r, const Solve
     out.name = task_name(job.task_path);
     char buf[160];
     if (r.timed_out) {
-        out.status = "timeout";
+        out.status = RunStatus::failed(RunStatus::Failure::Timeout);
         std::snprintf(buf, sizeof buf, "killed after %.2f s (time limit %g s + grace %g s)",
                       r.seconds, o.time_limit, o.grace);
         out.message = buf;
     } else if (r.signal != 0) {
-        out.status = "crashed";
+        out.status = RunStatus::failed(RunStatus::Failure::Crashed);
         out.message = std::string("killed by signal ") + std::to_string(r.signal) + " (" +
                       strsignal(r.signal) + ")";
     } else {
         out.status = status_of_exit(r.exit_code);
-        if (is_answer(out.status)) {
+        if (out.status.is_answer()) {
             read_solution(job.solution_path, out);
         } else {
             out.message =
@@ -154,10 +137,6 @@ SolveOutcome outcome_of(const SolveJob& job, const ProcessResult& r, const Solve
 }
 
 }  // namespace
-
-bool is_answer(const std::string& status) {
-    return status == "solved" || status == "infeasible" || status == "unknown";
-}
 
 SolveOutcome read_outcome(const SolveJob& job, const ProcessResult& result,
                           const SolveRunOptions& options) {
@@ -177,7 +156,7 @@ void run_solves(const std::vector<SolveJob>& jobs, const SolveRunOptions& option
             continue;
         }
         SolveOutcome out;
-        out.status = "invalid";
+        out.status = RunStatus::failed(RunStatus::Failure::Invalid);
         out.exit_code = kInvalid;
         out.name = task_stem(jobs[i].task_path);
         out.message = jobs[i].task_path + ": " + reason;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "process_pool.h"
+#include "run_status.h"
 
 namespace modsynth::app {
 
@@ -26,10 +27,7 @@ struct SolveRunOptions {
 };
 
 struct SolveOutcome {
-    /// "solved", "infeasible", "unknown" (answers); "invalid" (bad task),
-    /// "error" (internal error), "timeout" (killed by the watchdog),
-    /// "crashed" (killed by another signal) (failures).
-    std::string status;
+    RunStatus status;
     int exit_code = -1;
     int signal = 0;
     double seconds = 0.0;
@@ -40,8 +38,6 @@ struct SolveOutcome {
     std::vector<std::string> core;
     std::string message;  ///< explanation, or the error a failed run printed
 };
-
-bool is_answer(const std::string& status);
 
 using OutcomeHandler = std::function<void(std::size_t index, const SolveOutcome& outcome)>;
 

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "json_numbers.h"
+#include <modsynth/io/json_numbers.h>
 
 namespace modsynth::output {
 namespace {
@@ -32,7 +32,7 @@ nlohmann::json to_json(const baseline::Fidelity& f) {
             {"path_length", f.path_length},
             {"path_outside_reachable_space", f.outside_length},
             {"whole_path_reachable", f.whole_path_reachable()},
-            {"min_clearance_margin", finite_or_null(f.min_clearance)}};
+            {"min_clearance_margin", io::finite_or_null(f.min_clearance)}};
 }
 
 nlohmann::json to_json(const baseline::BaselineResult& r, bool with_motion) {

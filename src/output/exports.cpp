@@ -3,7 +3,7 @@
 #include <functional>
 #include <stdexcept>
 
-#include <modsynth/output/atomic_file.h>
+#include <modsynth/io/atomic_file.h>
 #include <modsynth/output/build_sheet.h>
 #include <modsynth/output/csv.h>
 #include <modsynth/output/urdf.h>
@@ -11,7 +11,7 @@
 namespace modsynth::output {
 
 void write_text_file(const std::string& path, const std::string& text) {
-    write_file_atomically(path, text);
+    io::write_file_atomically(path, text);
 }
 
 std::vector<std::string> write_exports(const task::Task& task, const synth::Solution& solution,

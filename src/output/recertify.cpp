@@ -4,8 +4,8 @@
 
 namespace modsynth::output {
 
-std::string recertify(const task::Task& task, ParsedSolution& parsed) {
-    check_solution_fits(task, parsed.solution);
+std::string recertify(const task::Task& task, io::ParsedSolution& parsed) {
+    io::check_solution_fits(task, parsed.solution);
     synth::Solution& s = parsed.solution;
     if (s.status != synth::Status::Solved) return "";
     // The file does not store the progress along each primitive; the

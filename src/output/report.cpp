@@ -92,7 +92,7 @@ std::string solved_figures(const task::Task& task, const synth::Solution& s,
                            const ReportFigures& figures) {
     const auto& r = s.robot;
     std::string out = "<table id=\"figures\">\n";
-    out += row("fig-status", "Status", "solved");
+    out += row("fig-status", "Status", synth::to_string(s.status));
     out += row("fig-dof", "Joints (DOF)", std::to_string(r.dof()));
     out += row("fig-links", "Link lengths", links_text(r));
     out += row("fig-base", "Base", base_text(task, r));

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <chrono>
 #include <optional>
+#include <utility>
 
 #include <modsynth/geometry/distance.h>
 #include <modsynth/smt/front_stage.h>
@@ -83,18 +84,25 @@ std::optional<double> smallest(double lo, double hi, double tolerance, Clock::ti
     return hi;
 }
 
-std::string attempt(const task::Task& relaxed, double seconds) {
-    if (seconds <= 0.0) return "the conflict is gone; not solved: the time limit was reached";
+/// The full pipeline on a relaxed task: its status and a sentence saying it.
+std::pair<Status, std::string> attempt(const task::Task& relaxed, double seconds) {
+    if (seconds <= 0.0) {
+        return {Status(Status::Unknown, "before solving", "time limit"),
+                "the conflict is gone; not solved: the time limit was reached"};
+    }
     SynthesisOptions options;
     options.time_limit = seconds;
     const Solution s = synthesize(relaxed, options);
     if (s.status == Status::Solved) {
         std::string links;
         for (double r : s.robot.link_lengths) links += text::format(links.empty() ? "%.3f" : " + %.3f", r);
-        return "solved: " + std::to_string(s.robot.dof()) + " joints, links " + links + " m";
+        return {s.status,
+                "solved: " + std::to_string(s.robot.dof()) + " joints, links " + links + " m"};
     }
-    if (s.status == Status::Infeasible) return "still infeasible: " + s.explanation.message;
-    return "the conflict is gone, but no robot was found within " + text::format("%.0f s", seconds);
+    if (s.status == Status::Infeasible)
+        return {s.status, "still infeasible: " + s.explanation.message};
+    return {s.status, "the conflict is gone, but no robot was found within " +
+                          text::format("%.0f s", seconds)};
 }
 
 }  // namespace
@@ -228,8 +236,8 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
     auto offer = [&](const std::string& part, const std::string& change, const task::Task& relaxed) {
         // Re-checked here, whatever the search that found it assumed.
         if (!conflict_free(relaxed, kCheck)) return;
-        out.push_back({part, change, relaxed,
-                       attempt(relaxed, std::min(solve_seconds, seconds_until(deadline)))});
+        auto [status, outcome] = attempt(relaxed, std::min(solve_seconds, seconds_until(deadline)));
+        out.push_back({part, change, relaxed, std::move(status), std::move(outcome)});
     };
     const auto traj = with_prefix(core, "trajectory[");
     for (const std::string& part : core) {

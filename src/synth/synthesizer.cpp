@@ -109,7 +109,8 @@ public:
 
 private:
     double remaining() const { return opt_.time_limit - seconds_since(start_); }
-    void say(const std::string& line) const {
+    void say(const std::string& line) {
+        stage_ = line;
         if (opt_.progress) opt_.progress(text::format("[%7.3fs] ", seconds_since(start_)) + line);
     }
     bool try_skeleton(const smt::Skeleton& skeleton, Solution& out, int guesses = 4);
@@ -128,6 +129,7 @@ private:
     Clock::time_point deadline_;
     control::MotionOptions motion_;
     std::vector<std::string> tried_;
+    std::string stage_ = "before the front stage";  ///< the last stage said, for an unknown answer
 };
 
 Solution Search::run() {
@@ -197,9 +199,12 @@ Solution Search::run() {
         stats_.front_seconds += seconds_since(t0);
         return out;
     }
-    out.status = Status::Unknown;
+    const bool out_of_time = remaining() <= 0.0;
+    out.status =
+        Status(Status::Unknown, stage_,
+               out_of_time ? "time limit" : "every joint count tried without a certified robot");
     out.explanation.message = "No certified robot found" +
-                              std::string(remaining() <= 0.0 ? " within the time limit" : "") + ": " +
+                              std::string(out_of_time ? " within the time limit" : "") + ": " +
                               join(tried_, "; ") + ".";
     for (const auto& c : cores)
         for (const auto& part : c)

@@ -5,7 +5,7 @@
 #include <modsynth/baseline/comparison.h>
 #include <modsynth/output/baseline_io.h>
 #include <modsynth/output/report.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 #include "../support/fixtures.h"
 
@@ -15,7 +15,7 @@ using namespace modsynth;
 // designed from 25 points of the curve reaches them all, but the motion
 // that connects them does not follow the curve, while modsynth's does.
 TEST_CASE("on the rose, the discretized design strays from the curve and modsynth does not", "[baseline]") {
-    const task::Task rose = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task rose = io::load_task(testing::source_path("tasks/rose.json"));
     const baseline::Comparison c = baseline::compare_methods(rose, {}, {});
     REQUIRE(c.solution.status == synth::Status::Solved);
     REQUIRE(c.fidelity);
@@ -43,7 +43,7 @@ TEST_CASE("on the rose, the discretized design strays from the curve and modsynt
 // reachable space (Fig. 6A/B): the farthest part of the top circle falls
 // between the points.
 TEST_CASE("on the rose, a design from 12 points cannot reach the whole curve", "[baseline]") {
-    const task::Task rose = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task rose = io::load_task(testing::source_path("tasks/rose.json"));
     baseline::BaselineOptions o;
     o.points = 12;
     const baseline::BaselineResult r = baseline::run_baseline(rose, o);

@@ -6,7 +6,7 @@
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/kinematics/pose_clearance.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 #include "../support/fixtures.h"
 
@@ -38,7 +38,7 @@ void require_poses_reach_points(const task::Task& t, const baseline::PointDesign
 }  // namespace
 
 TEST_CASE("equidistant points span the whole path at equal arc-length steps", "[baseline]") {
-    const task::Task rose = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task rose = io::load_task(testing::source_path("tasks/rose.json"));
     const auto points = baseline::equidistant_points(rose, 25);
     REQUIRE(points.size() == 25);
     CHECK((points.front().point - rose.trajectory.front().start).norm() < 1e-12);

@@ -6,7 +6,7 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/synth/synthesizer.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/verify/verifier.h>
 
 #include "../support/fixtures.h"
@@ -78,7 +78,7 @@ TEST_CASE("a transition the distal pair cannot follow is reported", "[control]")
 
 TEST_CASE("path parameters recovered from joint angles match the planned ones", "[control][slow]") {
     // The rose has lines, arcs and a full circle.
-    const task::Task rose = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task rose = io::load_task(testing::source_path("tasks/rose.json"));
     const synth::Solution s = synth::synthesize(rose, {});
     REQUIRE(s.status == synth::Status::Solved);
     auto samples = s.samples;

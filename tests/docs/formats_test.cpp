@@ -16,12 +16,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include <modsynth/output/solution_reader.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_io.h>
 
-using modsynth::output::parse_solution;
+using modsynth::io::parse_solution;
+using modsynth::io::parse_task;
 using modsynth::task::InputError;
-using modsynth::task::parse_task;
 using nlohmann::json;
 
 namespace {
@@ -95,7 +95,7 @@ void check_task_example(const json& doc) {
 /// The solution example is read (parsing only: an example with two samples
 /// need not pass verification), with the values it states.
 void check_solution_example(const json& doc) {
-    const modsynth::output::ParsedSolution parsed = parse_solution(doc);
+    const modsynth::io::ParsedSolution parsed = parse_solution(doc);
     const modsynth::synth::Solution& s = parsed.solution;
     CHECK(modsynth::synth::to_string(s.status) == doc.at("status").get<std::string>());
     if (doc.contains("task")) CHECK(s.task_name == doc["task"].get<std::string>());

@@ -13,11 +13,11 @@
 #include <modsynth/output/csv.h>
 #include <modsynth/output/recertify.h>
 #include <modsynth/output/report.h>
-#include <modsynth/output/solution_io.h>
-#include <modsynth/output/solution_reader.h>
+#include <modsynth/io/solution_io.h>
+#include <modsynth/io/solution_io.h>
 #include <modsynth/output/urdf.h>
 #include <modsynth/task/input_error.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 namespace {
 
@@ -45,7 +45,7 @@ constexpr std::string_view kRose = R"json({
 )json";
 
 const modsynth::task::Task& rose() {
-    static const modsynth::task::Task task = modsynth::task::parse_task_text(kRose);
+    static const modsynth::task::Task task = modsynth::io::parse_task_text(kRose);
     return task;
 }
 
@@ -55,10 +55,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using namespace modsynth;
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     const task::Task& task = rose();
-    output::ParsedSolution parsed;
+    io::ParsedSolution parsed;
     output::ReportFigures figures;
     try {
-        parsed = output::parse_solution_text(text);
+        parsed = io::parse_solution_text(text);
         figures.certificate_note = output::recertify(task, parsed);
     } catch (const task::InputError&) {
         return 0;
@@ -68,7 +68,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         s.certificate.ok != output::uncertified_reason(s.certificate).empty())
         std::abort();
     // What parsed must write back to a document that parses again.
-    output::parse_solution(output::to_json(s));
+    io::parse_solution(io::to_json(s));
     if (s.status == synth::Status::Solved) {
         output::build_sheet(task, s);
         output::trajectory_csv(s);

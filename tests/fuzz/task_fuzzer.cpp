@@ -13,14 +13,17 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/synth/explanation.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/limits.h>
-#include <modsynth/task/task_io.h>
 #include <modsynth/text/printable.h>
 
 namespace {
 
 using namespace modsynth::task;
+using modsynth::io::parse_task;
+using modsynth::io::parse_task_text;
+using modsynth::io::to_json;
 
 bool printable(const std::string& s) {
     return s.size() < 1000 && modsynth::text::printable(s, s.size()) == s;

@@ -5,7 +5,7 @@
 
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 #include "../support/fixtures.h"
 
@@ -14,7 +14,7 @@ using namespace modsynth;
 namespace {
 
 nlp::ArmProblem rose_problem(nlp::SweptVolume swept) {
-    static const task::Task rose = task::load_task(testing::source_path("tasks/rose.json"));
+    static const task::Task rose = io::load_task(testing::source_path("tasks/rose.json"));
     nlp::ArmProblem p;
     p.task = &rose;
     p.skeleton.dof = 2;

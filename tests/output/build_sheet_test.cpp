@@ -8,7 +8,7 @@
 
 #include <modsynth/output/build_sheet.h>
 #include <modsynth/output/hardware.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 #include "output_fixtures.h"
 
@@ -33,7 +33,7 @@ json minimal_task() {
 }  // namespace
 
 TEST_CASE("hardware sizes default to a HEBI X8 and 31.75 mm tubes", "[output]") {
-    const auto t = modsynth::task::parse_task(minimal_task());
+    const auto t = modsynth::io::parse_task(minimal_task());
     CHECK(t.robot.module_length == 0.110);
     CHECK(t.robot.module_width == 0.073);
     CHECK(t.robot.module_height == 0.045);
@@ -49,13 +49,13 @@ TEST_CASE("hardware sizes are optional robot keys, validated and round-tripped",
                     {"module_height", 0.05},
                     {"adapter_length", 0.01},
                     {"ee_rod_diameter", 0.012}};
-    const auto t = modsynth::task::parse_task(doc);
+    const auto t = modsynth::io::parse_task(doc);
     CHECK(t.robot.module_length == 0.2);
     CHECK(t.robot.module_width == 0.08);
     CHECK(t.robot.module_height == 0.05);
     CHECK(t.robot.adapter_length == 0.01);
     CHECK(t.robot.ee_rod_diameter == 0.012);
-    const auto back = modsynth::task::parse_task(modsynth::task::to_json(t));
+    const auto back = modsynth::io::parse_task(modsynth::io::to_json(t));
     CHECK(back.robot.module_length == 0.2);
     CHECK(back.robot.adapter_length == 0.01);
     CHECK(back.robot.ee_rod_diameter == 0.012);
@@ -66,7 +66,7 @@ TEST_CASE("hardware sizes are optional robot keys, validated and round-tripped",
             json d = minimal_task();
             d["robot"] = {{key, bad}};
             try {
-                modsynth::task::parse_task(d);
+                modsynth::io::parse_task(d);
                 FAIL(std::string(key) + " = " + bad.dump() + " accepted");
             } catch (const InputError& e) {
                 CHECK(e.part() == std::string("robot.") + key);

@@ -8,13 +8,13 @@
 #include <modsynth/output/build_sheet.h>
 #include <modsynth/output/recertify.h>
 #include <modsynth/output/report.h>
-#include <modsynth/output/solution_reader.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_io.h>
 
 #include "../support/fixtures.h"
 
 namespace testing = modsynth::testing;
-using modsynth::output::ParsedSolution;
+using modsynth::io::ParsedSolution;
 using modsynth::output::recertify;
 using modsynth::output::uncertified_reason;
 
@@ -23,7 +23,9 @@ namespace {
 // A solution `modsynth solve tasks/rose.json` wrote, kept as a fuzzing seed.
 const char* const kRoseSolution = "tests/fuzz/corpus/solution/rose.json";
 
-modsynth::task::Task rose() { return modsynth::task::load_task(testing::source_path("tasks/rose.json")); }
+modsynth::task::Task rose() {
+    return modsynth::io::load_task(testing::source_path("tasks/rose.json"));
+}
 
 nlohmann::json rose_solution() { return testing::read_json(testing::source_path(kRoseSolution)); }
 
@@ -35,7 +37,7 @@ bool has(const std::string& text, const std::string& part) {
 
 TEST_CASE("a saved solution verifies again as certified", "[output][recertify]") {
     const auto task = rose();
-    ParsedSolution parsed = modsynth::output::parse_solution(rose_solution());
+    ParsedSolution parsed = modsynth::io::parse_solution(rose_solution());
     REQUIRE(parsed.has_certificate);
     CHECK(recertify(task, parsed).empty());
     CHECK(parsed.solution.certificate.ok);
@@ -49,7 +51,7 @@ TEST_CASE("an edited motion is not certified, whatever certificate the file stor
     nlohmann::json doc = rose_solution();
     // One joint angle changed: the EE leaves the path at sample 40.
     doc["samples"][40]["q"][0] = doc["samples"][40]["q"][0].get<double>() + 0.05;
-    ParsedSolution parsed = modsynth::output::parse_solution(doc);
+    ParsedSolution parsed = modsynth::io::parse_solution(doc);
     REQUIRE(parsed.has_certificate);
     recertify(task, parsed);
     const auto& c = parsed.solution.certificate;
@@ -71,7 +73,7 @@ TEST_CASE("an edited motion is not certified, whatever certificate the file stor
 
 TEST_CASE("a pose moved into an obstacle is not certified", "[output][recertify]") {
     auto task = rose();
-    ParsedSolution parsed = modsynth::output::parse_solution(rose_solution());
+    ParsedSolution parsed = modsynth::io::parse_solution(rose_solution());
     // The motion unchanged, an obstacle grown over the arm's start pose.
     task.obstacles[2].radius = 0.2;
     recertify(task, parsed);
@@ -84,7 +86,7 @@ TEST_CASE("a solution without a certificate is certified on import, and says so"
     const auto task = rose();
     nlohmann::json doc = rose_solution();
     doc.erase("certificate");
-    ParsedSolution parsed = modsynth::output::parse_solution(doc);
+    ParsedSolution parsed = modsynth::io::parse_solution(doc);
     CHECK(has(recertify(task, parsed), "carries no certificate"));
     CHECK(parsed.solution.certificate.ok);
 }
@@ -92,6 +94,6 @@ TEST_CASE("a solution without a certificate is certified on import, and says so"
 TEST_CASE("recertify rejects a solution of another task", "[output][recertify]") {
     auto task = rose();
     task.name = "tulip";
-    ParsedSolution parsed = modsynth::output::parse_solution(rose_solution());
+    ParsedSolution parsed = modsynth::io::parse_solution(rose_solution());
     CHECK_THROWS_AS(recertify(task, parsed), modsynth::task::InputError);
 }

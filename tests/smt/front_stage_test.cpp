@@ -6,7 +6,7 @@
 
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/smt/front_stage.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 #include "../support/fixtures.h"
 
@@ -22,7 +22,7 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 }  // namespace
 
 TEST_CASE("front stage finds a skeleton whose coarse point meets the relaxation", "[smt][slow]") {
-    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
     FrontStage fs(t, 2);
     REQUIRE(fs.check() == FrontStage::Result::Sat);
     const smt::Skeleton s = fs.skeleton();
@@ -51,7 +51,7 @@ TEST_CASE("front stage proves an out-of-reach task infeasible with a minimal cor
         if (name.rfind("ir-", 0) != 0 || name.find(".task.json") == std::string::npos) continue;
         const std::string stem = entry.path().string().substr(0, entry.path().string().size() - 10);
         const auto expect = testing::read_json(stem + ".expect.json");
-        const task::Task t = task::load_task(entry.path().string());
+        const task::Task t = io::load_task(entry.path().string());
         for (int dof : {2, 3}) {
             FrontStage fs(t, dof);
             REQUIRE(fs.check() == FrontStage::Result::Unsat);
@@ -84,7 +84,7 @@ TEST_CASE("front stage answers sat on every planted feasible task", "[smt][slow]
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
         const std::string name = entry.path().filename().string();
         if (name.rfind("p2-", 0) != 0 || name.find(".task.json") == std::string::npos) continue;
-        FrontStage fs(task::load_task(entry.path().string()), 2);
+        FrontStage fs(io::load_task(entry.path().string()), 2);
         INFO(name);
         CHECK(fs.check() == FrontStage::Result::Sat);
         ++checked;
@@ -117,7 +117,7 @@ TEST_CASE("blocking every skeleton exhausts the search without claiming infeasib
 }
 
 TEST_CASE("the encoding dumps as SMT-LIB2 with its task-part literals", "[smt]") {
-    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
     FrontStage fs(t, 2);
     const std::string smt2 = fs.smtlib();
     CHECK(smt2.find("declare-fun") != std::string::npos);

@@ -7,7 +7,7 @@
 
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/synthesizer.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 #include "../support/fixtures.h"
 
@@ -22,7 +22,7 @@ TEST_CASE("every hand-made infeasible task is proved with its expected core", "[
         INFO(path);
         REQUIRE(std::filesystem::exists(stem + ".core.json"));
         const auto expected = testing::read_json(stem + ".core.json")["core"].get<std::vector<std::string>>();
-        const synth::Solution s = synth::synthesize(task::load_task(path), {});
+        const synth::Solution s = synth::synthesize(io::load_task(path), {});
         REQUIRE(s.status == synth::Status::Infeasible);
         CHECK(std::set<std::string>(s.explanation.core.begin(), s.explanation.core.end()) ==
               std::set<std::string>(expected.begin(), expected.end()));
@@ -33,7 +33,8 @@ TEST_CASE("every hand-made infeasible task is proved with its expected core", "[
 }
 
 TEST_CASE("relaxations are the smallest change of one part, and they are re-checked", "[explain][slow]") {
-    const task::Task t = task::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
+    const task::Task t =
+        io::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
     const auto proof = synth::prove_infeasible(t, 10.0);
     REQUIRE(proof.proved);
     const auto suggestions = synth::suggest_relaxations(t, proof.core, 5.0);
@@ -45,6 +46,7 @@ TEST_CASE("relaxations are the smallest change of one part, and they are re-chec
     CHECK(longer->relaxed.robot.max_link_length >= 1.30);
     CHECK(longer->relaxed.robot.max_link_length <= 1.32);
     CHECK_FALSE(synth::prove_infeasible(longer->relaxed, 10.0).proved);
+    CHECK(longer->status == synth::Status::Solved);
     CHECK(longer->outcome.rfind("solved", 0) == 0);
     const auto moved = std::find_if(suggestions.begin(), suggestions.end(),
                                     [](const synth::Relaxation& r) { return r.part == "base_regions"; });
@@ -54,7 +56,7 @@ TEST_CASE("relaxations are the smallest change of one part, and they are re-chec
 }
 
 TEST_CASE("task parts are described in words and numbers", "[explain]") {
-    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
     CHECK(synth::describe_part(t, "trajectory[0]") == "trajectory[0]: a line from (0.500, 0.050) to (0.500, 0.220)");
     CHECK(synth::describe_part(t, "trajectory[4]").find("a circle of radius 0.050 m") != std::string::npos);
     CHECK(synth::describe_part(t, "obstacles[2]") == "obstacles[2]: a disc of radius 0.030 m at (0.640, 0.070)");
@@ -62,14 +64,15 @@ TEST_CASE("task parts are described in words and numbers", "[explain]") {
 }
 
 TEST_CASE("a feasible task is not proved infeasible", "[explain]") {
-    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
     const auto proof = synth::prove_infeasible(t, 10.0);
     CHECK_FALSE(proof.proved);
     CHECK(proof.open.find("not ruled out") != std::string::npos);
 }
 
 TEST_CASE("suggestions and proofs end at their time limit", "[explain]") {
-    const task::Task t = task::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
+    const task::Task t =
+        io::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
     const auto proof = synth::prove_infeasible(t, 10.0);
     REQUIRE(proof.proved);
     // Unbounded, the bisections and the solves of the relaxed tasks take

@@ -6,7 +6,7 @@
 #include <set>
 
 #include <modsynth/synth/synthesizer.h>
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/verify/verifier.h>
 
 #include "../support/fixtures.h"
@@ -37,7 +37,7 @@ TEST_CASE("planted 2-joint tasks are solved and the motion re-certifies", "[synt
     REQUIRE(tasks.size() >= 5);
     for (const auto& path : tasks) {
         INFO(path);
-        const task::Task t = task::load_task(path);
+        const task::Task t = io::load_task(path);
         synth::SynthesisOptions options;
         options.time_limit = 30.0;
         const synth::Solution s = synth::synthesize(t, options);
@@ -61,7 +61,7 @@ TEST_CASE("planted 2-joint tasks are solved and the motion re-certifies", "[synt
 TEST_CASE("out-of-reach tasks are proved infeasible with a core naming the unreachable part", "[synth]") {
     for (const auto& path : planted("ir-")) {
         INFO(path);
-        const task::Task t = task::load_task(path);
+        const task::Task t = io::load_task(path);
         const synth::Solution s = synth::synthesize(t, {});
         REQUIRE(s.status == synth::Status::Infeasible);
         const auto expect = testing::read_json(stem_of(path) + ".expect.json");
@@ -76,7 +76,7 @@ TEST_CASE("out-of-reach tasks are proved infeasible with a core naming the unrea
 }
 
 TEST_CASE("the rose is solved with two joints", "[synth]") {
-    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
     const synth::Solution s = synth::synthesize(t, {});
     REQUIRE(s.status == synth::Status::Solved);
     CHECK(s.robot.dof() == 2);
@@ -90,7 +90,7 @@ TEST_CASE("the rose is solved with two joints", "[synth]") {
 }
 
 TEST_CASE("same task and seed give the same solution", "[synth]") {
-    const task::Task t = task::load_task(planted("p2-").front());
+    const task::Task t = io::load_task(planted("p2-").front());
     const synth::Solution a = synth::synthesize(t, {});
     const synth::Solution b = synth::synthesize(t, {});
     REQUIRE(a.status == synth::Status::Solved);
@@ -101,7 +101,7 @@ TEST_CASE("same task and seed give the same solution", "[synth]") {
 }
 
 TEST_CASE("the time limit is honoured and a run out of time answers unknown", "[synth]") {
-    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
     synth::SynthesisOptions options;
     options.time_limit = 0.02;
     const auto t0 = std::chrono::steady_clock::now();
@@ -111,11 +111,13 @@ TEST_CASE("the time limit is honoured and a run out of time answers unknown", "[
     if (s.status != synth::Status::Solved) {
         CHECK(s.status == synth::Status::Unknown);
         CHECK(s.explanation.message.find("time limit") != std::string::npos);
+        CHECK(s.status.reason == "time limit");
+        CHECK_FALSE(s.status.stage.empty());
     }
 }
 
 TEST_CASE("progress is reported stage by stage", "[synth]") {
-    const task::Task t = task::load_task(testing::source_path("tasks/rose.json"));
+    const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
     std::vector<std::string> lines;
     synth::SynthesisOptions options;
     options.progress = [&](const std::string& l) { lines.push_back(l); };
@@ -128,7 +130,7 @@ TEST_CASE("progress is reported stage by stage", "[synth]") {
 TEST_CASE("wipe-table and clean-table: 2 joints exhausted, then solved with 3", "[synth][slow]") {
     for (const char* name : {"tasks/wipe-table.json", "tasks/clean-table.json"}) {
         INFO(name);
-        const task::Task t = task::load_task(testing::source_path(name));
+        const task::Task t = io::load_task(testing::source_path(name));
         std::vector<std::string> lines;
         synth::SynthesisOptions options;
         options.progress = [&](const std::string& l) { lines.push_back(l); };

@@ -5,7 +5,7 @@
 // verdict on the motion as it now stands may be called certified.
 #include <string>
 
-#include <modsynth/output/solution_reader.h>
+#include <modsynth/io/solution_io.h>
 #include <modsynth/task/task.h>
 #include <modsynth/verify/verifier.h>
 
@@ -15,7 +15,7 @@ namespace modsynth::output {
 /// throws InputError) and, for a solved one, replaces its certificate with
 /// the verifier's. Returns the report's "Certificate source" note: set when
 /// the file carried no certificate to compare with, else "".
-std::string recertify(const task::Task& task, ParsedSolution& parsed);
+std::string recertify(const task::Task& task, io::ParsedSolution& parsed);
 
 /// Why a certificate is not ok, in one line naming the first offending
 /// sample ("samples[3]: EE is 0.052000 m off the path (and 4 more)"), or

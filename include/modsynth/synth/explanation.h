@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/synth/status.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::synth {
@@ -39,7 +40,9 @@ struct Relaxation {
     std::string part;    ///< the core part it changes
     std::string change;  ///< e.g. "robot.max_link_length >= 1.34 m"
     task::Task relaxed;  ///< the task with the change applied
-    /// The full pipeline on the relaxed task: "solved" or why not.
+    /// The full pipeline on the relaxed task: what it concluded, and the
+    /// same in a sentence ("solved: 2 joints, links ..." or why not).
+    Status status;
     std::string outcome;
 };
 

@@ -5,11 +5,10 @@
 
 #include <modsynth/control/motion.h>
 #include <modsynth/kinematics/robot.h>
+#include <modsynth/synth/status.h>
 #include <modsynth/verify/verifier.h>
 
 namespace modsynth::synth {
-
-enum class Status { Solved, Infeasible, Unknown };
 
 struct Explanation {
     std::string message;
@@ -24,7 +23,5 @@ struct Solution {
     verify::Certificate certificate;       ///< solved only
     Explanation explanation;               ///< infeasible and unknown
 };
-
-const char* to_string(Status status);
 
 }  // namespace modsynth::synth

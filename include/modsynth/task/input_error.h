@@ -17,13 +17,4 @@ private:
     std::string part_;
 };
 
-/// The whole content of a file the user named, for parsing. Failures are
-/// InputErrors whose part is the path; `what` says what the file should be
-/// ("task", "solution").
-std::string read_input_file(const std::string& path, const std::string& what);
-
-/// A JSON library error other than a syntax error (a number beyond the range
-/// of a double) in a few words, without the library's error id.
-std::string json_error_detail(const std::exception& e);
-
 }  // namespace modsynth::task

@@ -8,13 +8,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/task_io.h>
 #include <modsynth/task/limits.h>
-#include <modsynth/task/task_io.h>
 #include <modsynth/text/printable.h>
 
 using Catch::Matchers::Contains;
 using modsynth::geometry::kPi;
 using modsynth::geometry::PrimitiveKind;
+using modsynth::io::load_task;
+using modsynth::io::parse_task;
+using modsynth::io::parse_task_text;
+using modsynth::io::to_json;
 using modsynth::task::InputError;
 using modsynth::task::Task;
 using nlohmann::json;
@@ -54,7 +58,7 @@ TEST_CASE("every invalid fixture is rejected naming its part", "[task]") {
     REQUIRE(expected.size() >= 20);
     for (const auto& [file, want] : expected.items()) {
         SECTION(file) {
-            const InputError e = input_error([&] { modsynth::task::load_task(dir + file); });
+            const InputError e = input_error([&] { modsynth::io::load_task(dir + file); });
             CHECK(e.part() == want.at("part").get<std::string>());
             CHECK_THAT(e.what(), Contains(want.at("message_contains").get<std::string>()));
             // what() is "PART: problem" so a user sees where to look.
@@ -81,7 +85,7 @@ TEST_CASE("every invalid fixture is listed in expected.json", "[task]") {
 }
 
 TEST_CASE("absent optional keys take the documented defaults", "[task]") {
-    const Task t = modsynth::task::load_task(kFixtures + "valid/minimal.json");
+    const Task t = modsynth::io::load_task(kFixtures + "valid/minimal.json");
     CHECK(t.name == "minimal");  // the file stem when the document has no name
     REQUIRE(t.trajectory.size() == 1);
     CHECK(t.trajectory[0].kind == PrimitiveKind::Line);
@@ -91,11 +95,11 @@ TEST_CASE("absent optional keys take the documented defaults", "[task]") {
     CHECK(t.robot.link_diameter == Approx(0.03175));
     CHECK(t.robot.min_link_length == Approx(0.05));
     CHECK(t.robot.max_link_length == Approx(1.0));
-    CHECK(modsynth::task::parse_task(minimal_doc()).name.empty());
+    CHECK(modsynth::io::parse_task(minimal_doc()).name.empty());
 }
 
 TEST_CASE("a task with every key parses with the right geometry", "[task]") {
-    const Task t = modsynth::task::load_task(kFixtures + "valid/full.json");
+    const Task t = modsynth::io::load_task(kFixtures + "valid/full.json");
     CHECK(t.name == "rose");
     REQUIRE(t.trajectory.size() == 3);
     const auto& arc = t.trajectory[1];
@@ -119,21 +123,21 @@ TEST_CASE("a task with every key parses with the right geometry", "[task]") {
 }
 
 TEST_CASE("an arc whose start equals its end is a full circle", "[task]") {
-    const Task t = modsynth::task::load_task(kFixtures + "valid/full-circle-arc.json");
+    const Task t = modsynth::io::load_task(kFixtures + "valid/full-circle-arc.json");
     REQUIRE(t.trajectory.size() == 2);
     CHECK(t.trajectory[0].sweep == Approx(-2 * kPi));
     CHECK(t.trajectory[0].radius == Approx(0.1));
 }
 
 TEST_CASE("clockwise arcs sweep negatively by the angle they cover", "[task]") {
-    const Task t = modsynth::task::load_task(kFixtures + "valid/cw-quarter-arc.json");
+    const Task t = modsynth::io::load_task(kFixtures + "valid/cw-quarter-arc.json");
     REQUIRE(t.trajectory.size() == 2);
     CHECK(t.trajectory[0].sweep == Approx(-kPi / 2));
     CHECK(t.trajectory[1].sweep == Approx(-3 * kPi / 2));
 }
 
 TEST_CASE("unknown keys are ignored for forward compatibility", "[task]") {
-    const Task t = modsynth::task::load_task(kFixtures + "valid/unknown-keys.json");
+    const Task t = modsynth::io::load_task(kFixtures + "valid/unknown-keys.json");
     CHECK(t.trajectory.size() == 1);
     CHECK(t.robot.dof == std::vector<int>{2});
 }
@@ -142,11 +146,11 @@ TEST_CASE("to_json round-trips through parse_task", "[task]") {
     for (const char* file :
          {"full.json", "full-circle-arc.json", "cw-quarter-arc.json", "minimal.json"}) {
         SECTION(file) {
-            const Task a = modsynth::task::load_task(kFixtures + "valid/" + file);
-            const json doc = modsynth::task::to_json(a);
+            const Task a = modsynth::io::load_task(kFixtures + "valid/" + file);
+            const json doc = modsynth::io::to_json(a);
             CHECK(doc.at("format") == "modsynth-task/1");
             // Through text too, as another tool would read it.
-            const Task b = modsynth::task::parse_task_text(doc.dump());
+            const Task b = modsynth::io::parse_task_text(doc.dump());
             CHECK(b.name == a.name);
             REQUIRE(b.trajectory.size() == a.trajectory.size());
             for (std::size_t j = 0; j < a.trajectory.size(); ++j) {
@@ -183,21 +187,21 @@ TEST_CASE("non-finite numbers built in code are rejected", "[task]") {
     SECTION("a point coordinate") {
         json doc = minimal_doc();
         doc["trajectory"][0]["end"][1] = nan;
-        const InputError e = input_error([&] { modsynth::task::parse_task(doc); });
+        const InputError e = input_error([&] { modsynth::io::parse_task(doc); });
         CHECK(e.part() == "trajectory[0].end");
         CHECK_THAT(e.what(), Contains("NaN"));
     }
     SECTION("an obstacle radius") {
         json doc = minimal_doc();
         doc["obstacles"] = json::array({{{"center", {0.0, 0.5}}, {"radius", inf}}});
-        const InputError e = input_error([&] { modsynth::task::parse_task(doc); });
+        const InputError e = input_error([&] { modsynth::io::parse_task(doc); });
         CHECK(e.part() == "obstacles[0].radius");
         CHECK_THAT(e.what(), Contains("finite"));
     }
     SECTION("a robot length") {
         json doc = minimal_doc();
         doc["robot"] = {{"max_link_length", -inf}};
-        const InputError e = input_error([&] { modsynth::task::parse_task(doc); });
+        const InputError e = input_error([&] { modsynth::io::parse_task(doc); });
         CHECK(e.part() == "robot.max_link_length");
     }
     SECTION("a circle radius") {
@@ -207,7 +211,7 @@ TEST_CASE("non-finite numbers built in code are rejected", "[task]") {
                                      {"center", {0.55, 0.2}},
                                      {"direction", "ccw"},
                                      {"radius", nan}});
-        const InputError e = input_error([&] { modsynth::task::parse_task(doc); });
+        const InputError e = input_error([&] { modsynth::io::parse_task(doc); });
         CHECK(e.part() == "trajectory[1].radius");
     }
 }
@@ -215,20 +219,19 @@ TEST_CASE("non-finite numbers built in code are rejected", "[task]") {
 TEST_CASE("syntax errors name the line and column", "[task]") {
     SECTION("a missing comma") {
         const std::string text = "{\n  \"format\": \"modsynth-task/1\"\n  \"trajectory\": []\n}";
-        const InputError e = input_error([&] { modsynth::task::parse_task_text(text); });
+        const InputError e = input_error([&] { modsynth::io::parse_task_text(text); });
         CHECK_THAT(e.what(), Contains("line 3, column 14"));
     }
     SECTION("a bad literal on the first line") {
-        const InputError e = input_error([&] { modsynth::task::parse_task_text("{\"a\": tru}"); });
+        const InputError e = input_error([&] { modsynth::io::parse_task_text("{\"a\": tru}"); });
         CHECK_THAT(e.what(), Contains("line 1, column"));
     }
     SECTION("truncated text") {
-        const InputError e =
-            input_error([&] { modsynth::task::parse_task_text("{\n\"format\": "); });
+        const InputError e = input_error([&] { modsynth::io::parse_task_text("{\n\"format\": "); });
         CHECK_THAT(e.what(), Contains("line 2"));
     }
     SECTION("empty text") {
-        const InputError e = input_error([&] { modsynth::task::parse_task_text(""); });
+        const InputError e = input_error([&] { modsynth::io::parse_task_text(""); });
         CHECK_THAT(e.what(), Contains("line 1, column 1"));
     }
 }
@@ -237,7 +240,7 @@ TEST_CASE("a tiny but rejected gap is not printed as zero", "[task]") {
     json doc = minimal_doc();
     doc["trajectory"].push_back(
         {{"type", "line"}, {"start", {0.55, 0.100002}}, {"end", {0.6, 0.1}}});
-    const InputError e = input_error([&] { modsynth::task::parse_task(doc); });
+    const InputError e = input_error([&] { modsynth::io::parse_task(doc); });
     CHECK(e.part() == "trajectory[1]");
     CHECK_THAT(e.what(), Contains("starts 0.000002 m from the end of trajectory[0]"));
 }
@@ -246,23 +249,23 @@ TEST_CASE("gaps within the join tolerance are accepted", "[task]") {
     json doc = minimal_doc();
     doc["trajectory"].push_back(
         {{"type", "line"}, {"start", {0.55, 0.1000005}}, {"end", {0.6, 0.1}}});
-    CHECK(modsynth::task::parse_task(doc).trajectory.size() == 2);
+    CHECK(modsynth::io::parse_task(doc).trajectory.size() == 2);
 }
 
 TEST_CASE("dof accepts whole numbers written as decimals", "[task]") {
     json doc = minimal_doc();
     doc["robot"] = {{"dof", {3.0}}};
-    CHECK(modsynth::task::parse_task(doc).robot.dof == std::vector<int>{3});
+    CHECK(modsynth::io::parse_task(doc).robot.dof == std::vector<int>{3});
     doc["robot"] = {{"dof", {true}}};
-    CHECK(input_error([&] { modsynth::task::parse_task(doc); }).part() == "robot.dof[0]");
+    CHECK(input_error([&] { modsynth::io::parse_task(doc); }).part() == "robot.dof[0]");
 }
 
 TEST_CASE("an unreadable task file names the path", "[task]") {
     const std::string path = kFixtures + "valid/does-not-exist.json";
-    const InputError e = input_error([&] { modsynth::task::load_task(path); });
+    const InputError e = input_error([&] { modsynth::io::load_task(path); });
     CHECK(e.part() == path);
     CHECK_THAT(e.what(), Contains("cannot open"));
-    const InputError d = input_error([&] { modsynth::task::load_task(kFixtures + "valid"); });
+    const InputError d = input_error([&] { modsynth::io::load_task(kFixtures + "valid"); });
     CHECK_THAT(d.what(), Contains("folder"));
 }
 
@@ -311,9 +314,10 @@ TEST_CASE("tasks past the documented caps are rejected naming the part and the c
 
 TEST_CASE("echoed text is printable and cut short", "[task]") {
     using modsynth::text::printable;
-    CHECK(printable("ab\xff\x01" "c") == "ab\\xFF\\x01c");
+    CHECK(printable("ab\xff\x01"
+                    "c") == "ab\\xFF\\x01c");
     CHECK(printable("caf\xc3\xa9") == "caf\xc3\xa9");  // valid UTF-8 stays
-    CHECK(printable("\xc3") == "\\xC3");                 // a cut sequence does not
+    CHECK(printable("\xc3") == "\\xC3");               // a cut sequence does not
     CHECK(printable(std::string(100, 'x'), 10) == std::string(10, 'x') + "...");
     CHECK(modsynth::text::compact(1e308) == "1e+308");
 }

@@ -5,7 +5,7 @@
 // the previous file or the new one, never a truncated one.
 #include <string>
 
-namespace modsynth::output {
+namespace modsynth::io {
 
 /// Writes text to path atomically. SIGINT, SIGTERM and SIGHUP wait until
 /// the rename is done, so that an interrupted write leaves no temporary file
@@ -15,4 +15,4 @@ namespace modsynth::output {
 /// replaced, the link kept; a device or pipe (/dev/stdout) is written to.
 void write_file_atomically(const std::string& path, const std::string& text);
 
-}  // namespace modsynth::output
+}  // namespace modsynth::io

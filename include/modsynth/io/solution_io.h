@@ -1,7 +1,8 @@
 #pragma once
-// Reading modsynth-solution/1 documents back (formats.md), e.g. to export a
-// saved solution. Every function validates fully and throws task::InputError
-// naming the JSON path of the offending part ("samples[12].q[1]").
+// Reading and writing modsynth-solution/1 documents (formats.md): what
+// `solve` writes, and what `export`, `batch` and the server read back. Every
+// reader validates fully and throws task::InputError naming the JSON path of
+// the offending part ("samples[12].q[1]").
 #include <string>
 #include <string_view>
 
@@ -11,7 +12,7 @@
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/task.h>
 
-namespace modsynth::output {
+namespace modsynth::io {
 
 struct ParsedSolution {
     synth::Solution solution;
@@ -30,4 +31,9 @@ ParsedSolution load_solution(const std::string& path);
 /// task's name, or samples tracing primitives the task does not have.
 void check_solution_fits(const task::Task& task, const synth::Solution& solution);
 
-}  // namespace modsynth::output
+nlohmann::json to_json(const synth::Solution& solution);
+/// Writes the document atomically; throws std::runtime_error naming the
+/// path on failure.
+void write_solution(const synth::Solution& solution, const std::string& path);
+
+}  // namespace modsynth::io

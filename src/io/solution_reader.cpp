@@ -1,30 +1,23 @@
-#include <modsynth/output/solution_reader.h>
+#include <modsynth/io/solution_io.h>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/input.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/text/printable.h>
 
-namespace modsynth::output {
+#include "json_parts.h"
+
+namespace modsynth::io {
 namespace {
 
 using nlohmann::json;
 using task::InputError;
 
 constexpr const char* kFormat = "modsynth-solution/1";
-constexpr const char* kDocument = "(document)";
-
-std::string member(const std::string& part, const char* key) {
-    return part.empty() ? std::string(key) : part + "." + key;
-}
-
-std::string element(const std::string& part, std::size_t i) {
-    return part + "[" + std::to_string(i) + "]";
-}
 
 /// What the document holds instead of what was expected, in plain words.
 std::string describe(const json& j) {
@@ -38,11 +31,6 @@ const json& required(const json& obj, const std::string& part, const char* key) 
     const auto it = obj.find(key);
     if (it == obj.end()) throw InputError(member(part, key), "missing");
     return *it;
-}
-
-const json* optional(const json& obj, const char* key) {
-    const auto it = obj.find(key);
-    return it == obj.end() ? nullptr : &*it;
 }
 
 void require_object(const json& j, const std::string& part) {
@@ -100,12 +88,7 @@ std::vector<double> numbers(const json& j, const std::string& part, int count) {
 // ------------------------------------------------------------------- parts
 
 synth::Status parse_status(const json& doc) {
-    const std::string s = text(required(doc, "", "status"), "status");
-    if (s == "solved") return synth::Status::Solved;
-    if (s == "infeasible") return synth::Status::Infeasible;
-    if (s == "unknown") return synth::Status::Unknown;
-    throw InputError("status",
-                     "expected \"solved\", \"infeasible\" or \"unknown\", got \"" + text::printable(s) + "\"");
+    return synth::status_from_string(text(required(doc, "", "status"), "status"), "status");
 }
 
 synth::Explanation parse_explanation(const json& doc) {
@@ -154,7 +137,8 @@ control::Phase parse_phase(const json& j, const std::string& part) {
     const std::string p = text(j, part);
     if (p == "trace") return control::Phase::Trace;
     if (p == "transition") return control::Phase::Transition;
-    throw InputError(part, "expected \"trace\" or \"transition\", got \"" + text::printable(p) + "\"");
+    throw InputError(part,
+                     "expected \"trace\" or \"transition\", got \"" + text::printable(p) + "\"");
 }
 
 control::Sample parse_sample(const json& j, const std::string& part, int dof) {
@@ -247,26 +231,11 @@ ParsedSolution parse_solution(const json& doc) {
 }
 
 ParsedSolution parse_solution_text(std::string_view text) {
-    json doc;
-    try {
-        doc = json::parse(text.begin(), text.end());
-    } catch (const json::parse_error& e) {
-        const std::string_view head = text.substr(0, std::min<std::size_t>(e.byte, text.size()));
-        const std::size_t line = 1 + std::count(head.begin(), head.end(), '\n');
-        const std::size_t nl = head.rfind('\n');
-        const std::size_t column =
-            nl == std::string_view::npos ? head.size() : head.size() - nl - 1;
-        throw InputError(kDocument, "not valid JSON at line " + std::to_string(line) + ", column " +
-                                        std::to_string(column));
-    } catch (const json::exception& e) {
-        // A number beyond double's range ("1e999") is an out_of_range error.
-        throw InputError(kDocument, std::string("not valid JSON: ") + task::json_error_detail(e));
-    }
-    return parse_solution(doc);
+    return parse_solution(parse_json_text(text));
 }
 
 ParsedSolution load_solution(const std::string& path) {
-    return parse_solution_text(task::read_input_file(path, "solution"));
+    return parse_solution_text(read_input_file(path, "solution"));
 }
 
 void check_solution_fits(const task::Task& task, const synth::Solution& solution) {
@@ -283,4 +252,4 @@ void check_solution_fits(const task::Task& task, const synth::Solution& solution
     }
 }
 
-}  // namespace modsynth::output
+}  // namespace modsynth::io

@@ -1,4 +1,4 @@
-#include <modsynth/output/atomic_file.h>
+#include <modsynth/io/atomic_file.h>
 
 #include <fcntl.h>
 #include <signal.h>
@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-namespace modsynth::output {
+namespace modsynth::io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -103,4 +103,4 @@ void write_file_atomically(const std::string& path, const std::string& text) {
     }
 }
 
-}  // namespace modsynth::output
+}  // namespace modsynth::io

@@ -14,10 +14,10 @@
 #include <thread>
 #include <vector>
 
-#include <modsynth/output/atomic_file.h>
+#include <modsynth/io/atomic_file.h>
 
 namespace fs = std::filesystem;
-using modsynth::output::write_file_atomically;
+using modsynth::io::write_file_atomically;
 
 namespace {
 

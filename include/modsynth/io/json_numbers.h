@@ -4,11 +4,11 @@
 
 #include <nlohmann/json.hpp>
 
-namespace modsynth::output {
+namespace modsynth::io {
 
 /// JSON has no infinity: an unconstrained margin is written as null.
 inline nlohmann::json finite_or_null(double v) {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
-}  // namespace modsynth::output
+}  // namespace modsynth::io

@@ -1,26 +1,11 @@
-#include <modsynth/output/solution_io.h>
-
-#include <cmath>
-#include <stdexcept>
+#include <modsynth/io/solution_io.h>
 
 #include <nlohmann/json.hpp>
 
-#include <modsynth/output/atomic_file.h>
+#include <modsynth/io/atomic_file.h>
+#include <modsynth/io/json_numbers.h>
 
-#include "json_numbers.h"
-
-namespace modsynth::synth {
-const char* to_string(Status status) {
-    switch (status) {
-        case Status::Solved: return "solved";
-        case Status::Infeasible: return "infeasible";
-        case Status::Unknown: return "unknown";
-    }
-    return "unknown";
-}
-}  // namespace modsynth::synth
-
-namespace modsynth::output {
+namespace modsynth::io {
 
 nlohmann::json to_json(const synth::Solution& s) {
     nlohmann::json doc;
@@ -57,4 +42,4 @@ void write_solution(const synth::Solution& solution, const std::string& path) {
     write_file_atomically(path, to_json(solution).dump(1) + '\n');
 }
 
-}  // namespace modsynth::output
+}  // namespace modsynth::io

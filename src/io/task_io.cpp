@@ -1,4 +1,4 @@
-#include <modsynth/task/task_io.h>
+#include <modsynth/io/task_io.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -15,18 +15,36 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/geometry/distance.h>
+#include <modsynth/io/input.h>
 #include <modsynth/task/limits.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
-namespace modsynth::task {
+#include "json_parts.h"
+
+namespace modsynth::io {
+
+using task::BaseRegion;
+using task::InputError;
+using task::kMaxBaseRegions;
+using task::kMaxCoordinate;
+using task::kMaxDof;
+using task::kMaxLength;
+using task::kMaxObstacles;
+using task::kMaxPrimitives;
+using task::kMaxTaskBytes;
+using task::kMinDof;
+using task::Obstacle;
+using task::Primitive;
+using task::RobotSpec;
+using task::Task;
+using task::Vec2;
 
 namespace {
 
 using nlohmann::json;
 
 constexpr const char* kFormat = "modsynth-task/1";
-constexpr const char* kDocument = "(document)";
 /// Below this a length is treated as zero: a degenerate primitive.
 constexpr double kDegenerate = 1e-9;
 
@@ -71,14 +89,6 @@ std::string describe(const json& j) {
     }
 }
 
-std::string member(const std::string& part, const char* key) {
-    return part.empty() ? std::string(key) : part + "." + key;
-}
-
-std::string element(const std::string& part, std::size_t i) {
-    return part + "[" + std::to_string(i) + "]";
-}
-
 // ------------------------------------------------------------ basic values
 
 void require_object(const json& j, const std::string& part, const char* example) {
@@ -99,12 +109,6 @@ const json& required(const json& obj, const std::string& part, const char* key, 
     const auto it = obj.find(key);
     if (it == obj.end()) throw InputError(member(part, key), std::string("missing; ") + why);
     return *it;
-}
-
-/// The value of an optional key, or nullptr.
-const json* optional(const json& obj, const char* key) {
-    const auto it = obj.find(key);
-    return it == obj.end() ? nullptr : &*it;
 }
 
 /// A finite number. `what` names the value in the message ("a length").
@@ -429,55 +433,6 @@ void check_clearance(const Task& task) {
     }
 }
 
-// ------------------------------------------------------------- JSON errors
-
-/// 1-based line and column of the byte at 1-based position `byte`.
-std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t byte) {
-    const std::size_t pos = std::min(byte == 0 ? 0 : byte - 1, text.size());
-    const std::size_t line = 1 + std::count(text.begin(), text.begin() + pos, '\n');
-    const std::size_t last_nl = text.rfind('\n', pos == 0 ? std::string_view::npos : pos - 1);
-    const std::size_t column =
-        (pos == 0 || last_nl == std::string_view::npos) ? pos + 1 : pos - last_nl;
-    return {line, column};
-}
-
-/// nlohmann's explanation without its exception-id prefix and its position;
-/// it quotes the input, so it is made printable.
-std::string parse_detail(const nlohmann::json::parse_error& e) {
-    const std::string what = e.what();
-    const std::size_t at = what.find("syntax error");
-    if (at != std::string::npos) return text::printable(what.substr(at), 200);
-    const std::size_t colon = what.find(": ");
-    return text::printable(colon == std::string::npos ? what : what.substr(colon + 2), 200);
-}
-
-/// The number the parser could not hold (1e999) and where it stands:
-/// nlohmann reports no position for it, only the number's text.
-std::string overflow_detail(std::string_view text, const std::string& what) {
-    const std::size_t open = what.find('\'');
-    const std::size_t close = what.rfind('\'');
-    if (open == std::string::npos || close <= open + 1) return "a number";
-    const std::string number = what.substr(open + 1, close - open - 1);
-    std::string out = "the number " + text::printable(number);
-    const std::size_t at = text.find(number);
-    if (at == std::string_view::npos) return out;
-    const auto [line, column] = line_column(text, at + 1);
-    return out + " at line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
-}  // namespace
-
-std::string json_error_detail(const std::exception& e) {
-    std::string what = e.what();
-    const std::size_t close = what.find("] ");
-    if (close != std::string::npos) what = what.substr(close + 2);
-    // The offending token may be a whole file of digits.
-    constexpr std::size_t kMax = 120;
-    return what.size() <= kMax ? what : what.substr(0, kMax) + "...";
-}
-
-namespace {
-
 // ------------------------------------------------------------------ output
 
 json point_json(const Vec2& p) { return json::array({p.x(), p.y()}); }
@@ -515,10 +470,10 @@ Task parse_task(const json& doc) {
     Task task;
     task.name = parse_name(doc);
     task.trajectory = parse_trajectory(doc);
-    task.obstacles = parse_list<Obstacle>(doc, "obstacles", "obstacles", kMaxObstacles, parse_obstacle);
-    task.base_regions =
-        parse_list<BaseRegion>(doc, "base_regions", "base regions", kMaxBaseRegions,
-                               parse_base_region);
+    task.obstacles =
+        parse_list<Obstacle>(doc, "obstacles", "obstacles", kMaxObstacles, parse_obstacle);
+    task.base_regions = parse_list<BaseRegion>(doc, "base_regions", "base regions", kMaxBaseRegions,
+                                               parse_base_region);
     task.robot = parse_robot(doc);
     check_clearance(task);
     return task;
@@ -529,36 +484,7 @@ Task parse_task_text(std::string_view text) {
         throw InputError(kDocument, std::to_string(text.size()) + " bytes, more than the " +
                                         std::to_string(kMaxTaskBytes) + " allowed for a task");
     }
-    json doc;
-    try {
-        doc = json::parse(text.begin(), text.end());
-    } catch (const json::parse_error& e) {
-        const auto [line, column] = line_column(text, e.byte);
-        throw InputError(kDocument, "not valid JSON at line " + std::to_string(line) + ", column " +
-                                        std::to_string(column) + ": " + parse_detail(e));
-    } catch (const json::out_of_range& e) {
-        // The only one the parser throws: a number beyond double (1e999).
-        throw InputError(kDocument, overflow_detail(text, e.what()) +
-                                        " is too large; numbers must be finite");
-    } catch (const json::exception& e) {
-        throw InputError(kDocument, "not valid JSON: " + json_error_detail(e));
-    }
-    return parse_task(doc);
-}
-
-std::string read_input_file(const std::string& path, const std::string& what) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        throw InputError(path, "is a folder, not a " + what + " file");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw InputError(path, "cannot open the " + what + " file: " + std::strerror(errno));
-    }
-    std::ostringstream content;
-    content << in.rdbuf();
-    if (in.bad()) throw InputError(path, "cannot read the " + what + " file");
-    return content.str();
+    return parse_task(parse_json_text(text));
 }
 
 Task load_task(const std::string& path) {
@@ -602,4 +528,4 @@ json to_json(const Task& task) {
               {"ee_rod_diameter", task.robot.ee_rod_diameter}}}};
 }
 
-}  // namespace modsynth::task
+}  // namespace modsynth::io

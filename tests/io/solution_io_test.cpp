@@ -5,13 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include <modsynth/output/solution_io.h>
-#include <modsynth/output/solution_reader.h>
+#include <modsynth/io/solution_io.h>
 
-#include "output_fixtures.h"
+#include "../output/output_fixtures.h"
 
-using modsynth::output::parse_solution;
-using modsynth::output::to_json;
+using modsynth::io::parse_solution;
+using modsynth::io::to_json;
 using modsynth::synth::Solution;
 using modsynth::synth::Status;
 using modsynth::task::InputError;
@@ -52,7 +51,7 @@ TEST_CASE("the reader round-trips a solved solution exactly", "[output]") {
         const Solution a = task.robot.dof[0] == 2 ? testing::two_joint_solution(task)
                                                   : testing::three_joint_solution(task);
         // Through text, as a saved file would be.
-        const auto parsed = modsynth::output::parse_solution_text(to_json(a).dump(1));
+        const auto parsed = modsynth::io::parse_solution_text(to_json(a).dump(1));
         const Solution& b = parsed.solution;
         CHECK(parsed.has_certificate);
         CHECK(b.task_name == a.task_name);
@@ -178,7 +177,7 @@ TEST_CASE("the reader rejects bad solutions naming the part", "[output]") {
 
 TEST_CASE("the reader names the position of a JSON syntax error", "[output]") {
     try {
-        modsynth::output::parse_solution_text("{\n  \"format\": ,\n}");
+        modsynth::io::parse_solution_text("{\n  \"format\": ,\n}");
         FAIL("no error");
     } catch (const InputError& e) {
         CHECK(e.part() == "(document)");
@@ -188,17 +187,17 @@ TEST_CASE("the reader names the position of a JSON syntax error", "[output]") {
 
 TEST_CASE("load_solution names an unreadable file", "[output]") {
     const std::string path = "/nonexistent/solution.json";
-    CHECK(rejected_part([&] { modsynth::output::load_solution(path); }) == path);
+    CHECK(rejected_part([&] { modsynth::io::load_solution(path); }) == path);
 }
 
 TEST_CASE("a solution must fit the task it is exported with", "[output]") {
     const auto task = testing::two_joint_task();
     Solution s = testing::two_joint_solution(task);
-    CHECK_NOTHROW(modsynth::output::check_solution_fits(task, s));
+    CHECK_NOTHROW(modsynth::io::check_solution_fits(task, s));
     Solution other = s;
     other.task_name = "rose";
-    CHECK(rejected_part([&] { modsynth::output::check_solution_fits(task, other); }) == "task");
+    CHECK(rejected_part([&] { modsynth::io::check_solution_fits(task, other); }) == "task");
     s.samples.back().primitive = 7;
     const std::string part = "samples[" + std::to_string(s.samples.size() - 1) + "].primitive";
-    CHECK(rejected_part([&] { modsynth::output::check_solution_fits(task, s); }) == part);
+    CHECK(rejected_part([&] { modsynth::io::check_solution_fits(task, s); }) == part);
 }

@@ -1,0 +1,20 @@
+#pragma once
+// The two steps every document reader shares: the bytes of a file the user
+// named, and those bytes as JSON. Failures are task::InputErrors a user can
+// act on (the path, or the line and column where the syntax breaks).
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace modsynth::io {
+
+/// The whole content of a file; `what` says what the file should be ("task",
+/// "solution"). Failures are InputErrors whose part is the path.
+std::string read_input_file(const std::string& path, const std::string& what);
+
+/// JSON text as a document. A syntax error or a number beyond the range of
+/// a double is an InputError for "(document)" saying where it is.
+nlohmann::json parse_json_text(std::string_view text);
+
+}  // namespace modsynth::io
