@@ -113,12 +113,12 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
                 const task::Obstacle& ob = task.obstacles[o];
                 add_keep_apart(qp, chain[i], chain[i + 1], constant(ob.center),
                                rule.obstacle_distance(ob) + options.clearance_margin,
-                               "obstacles[" + std::to_string(o) + "] link " + std::to_string(i + 1) + " " +
-                                   where(k));
+                               "link " + std::to_string(i + 1) + " to obstacles[" + std::to_string(o) +
+                                   "], " + where(k));
             }
             if (i + 1 < dof)
                 add_keep_apart(qp, chain[i], chain[i + 1], chain.back(), rule.self_distance() + options.self_margin,
-                               "EE to link " + std::to_string(i + 1) + " " + where(k));
+                               "EE to link " + std::to_string(i + 1) + ", " + where(k));
         }
         if (!previous.empty()) {
             for (int i = 1; i < dof; ++i)
@@ -178,6 +178,15 @@ std::vector<PathSample> equidistant_points(const task::Task& task, int count) {
         out.push_back({static_cast<int>(j), s, geometry::point_at(task.trajectory[j], s)});
     }
     return out;
+}
+
+nlp::QuadraticProgram design_program(const task::Task& task, const std::vector<PathSample>& points,
+                                     int dof, int region, const std::vector<int>& elbows,
+                                     const DesignOptions& options) {
+    text::require_valid(options);
+    if (static_cast<int>(elbows.size()) != dof - 1)
+        throw std::invalid_argument("a design program needs one elbow sign per consecutive link pair");
+    return build(task, points, dof, Start{region, elbows}, options).program;
 }
 
 bool DesignOptions::IsValid(std::string* error) const {

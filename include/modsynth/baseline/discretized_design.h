@@ -69,6 +69,14 @@ struct PointDesign {
     std::string message;  ///< what was tried when nothing was found
 };
 
+/// The program design_for_points() minimises from one start: `dof` joints,
+/// the base in base region `region` (-1: anywhere) and `elbows` the side of
+/// each consecutive link pair (dof - 1 signs). Exposed so that its
+/// derivatives can be checked like the refinement's.
+nlp::QuadraticProgram design_program(const task::Task& task, const std::vector<PathSample>& points,
+                                     int dof, int region, const std::vector<int>& elbows,
+                                     const DesignOptions& options);
+
 /// Tries the allowed joint counts fewest first; for each, every base region
 /// and every elbow pattern, keeping the shortest robot found. Throws
 /// std::invalid_argument when the options are not valid.
