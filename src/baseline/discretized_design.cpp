@@ -113,11 +113,12 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
                 const task::Obstacle& ob = task.obstacles[o];
                 add_keep_apart(qp, chain[i], chain[i + 1], constant(ob.center),
                                rule.obstacle_distance(ob) + options.clearance_margin,
-                               "link " + std::to_string(i + 1) + " to obstacles[" + std::to_string(o) +
-                                   "], " + where(k));
+                               "link " + std::to_string(i + 1) + " to obstacles[" +
+                                   std::to_string(o) + "], " + where(k));
             }
             if (i + 1 < dof)
-                add_keep_apart(qp, chain[i], chain[i + 1], chain.back(), rule.self_distance() + options.self_margin,
+                add_keep_apart(qp, chain[i], chain[i + 1], chain.back(),
+                               rule.self_distance() + options.self_margin,
                                "EE to link " + std::to_string(i + 1) + ", " + where(k));
         }
         if (!previous.empty()) {
@@ -185,7 +186,8 @@ nlp::QuadraticProgram design_program(const task::Task& task, const std::vector<P
                                      const DesignOptions& options) {
     text::require_valid(options);
     if (static_cast<int>(elbows.size()) != dof - 1)
-        throw std::invalid_argument("a design program needs one elbow sign per consecutive link pair");
+        throw std::invalid_argument(
+            "a design program needs one elbow sign per consecutive link pair");
     return build(task, points, dof, Start{region, elbows}, options).program;
 }
 

@@ -93,7 +93,8 @@ void add_keep_apart(QuadraticProgram& qp, const Point& a, const Point& b, const 
         add_product(q, n.y, end->y - c.y);
         qp.add_constraint(q, need, kInfinity, "clearance of " + tag);
     }
-    qp.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0, "unit normal for " + tag);
+    qp.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0,
+                      "unit normal for " + tag);
 }
 
 }  // namespace modsynth::nlp::bilinear

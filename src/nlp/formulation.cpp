@@ -76,8 +76,9 @@ private:
 
     void keep_links_from_obstacles(const Point& a, const Point& b, int link, const std::string& where) {
         for (int o = 0; o < static_cast<int>(t_.obstacles.size()); ++o)
-            keep_apart(a, b, constant(t_.obstacles[o].center), need_for(t_.obstacles[o]),
-                       "link " + std::to_string(link) + " to " + part("obstacles", o) + ", " + where);
+            keep_apart(
+                a, b, constant(t_.obstacles[o].center), need_for(t_.obstacles[o]),
+                "link " + std::to_string(link) + " to " + part("obstacles", o) + ", " + where);
     }
 
     // The distal pair from `o` with its EE at p: elbow variable, both link
@@ -101,7 +102,8 @@ private:
         keep_links_from_obstacles(e, target, f_.dof, where);
         if (f_.dof == 3) {
             // eq. (9): the EE keeps a diameter away from the proximal link.
-            keep_apart(base_, o, target, rule_.self_distance() + p_.margins.self, "EE to link 1, " + where);
+            keep_apart(base_, o, target, rule_.self_distance() + p_.margins.self,
+                       "EE to link 1, " + where);
         }
     }
 

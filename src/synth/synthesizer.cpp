@@ -238,7 +238,8 @@ void Search::shorten(const smt::Skeleton& found, Solution& out) {
 }
 
 bool Search::try_skeleton(const smt::Skeleton& skeleton, Solution& out, int count) {
-    const auto guesses = initial_guesses(task_, skeleton, count, opt_.seed, deadline_);
+    const auto guesses =
+        initial_guesses(task_, skeleton, count, opt_.seed, deadline_, opt_.guesses);
     for (const auto& g : guesses) {
         if (remaining() <= 0.0) return false;
         say(text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(), g.robot.base.y(),
@@ -369,6 +370,7 @@ bool SynthesisOptions::IsValid(std::string* error) const {
         .nested("motion", motion)
         .nested("front", front)
         .nested("verify", verify)
+        .nested("guesses", guesses)
         .greater("point_spacing", point_spacing, 0.0)
         .at_least("min_points_per_primitive", min_points_per_primitive, 1)
         .at_least("max_points_per_primitive", max_points_per_primitive, min_points_per_primitive)

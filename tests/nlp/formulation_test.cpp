@@ -103,7 +103,8 @@ TEST_CASE("three-joint refinement derivatives agree with finite differences", "[
     for (int j = 0; j < static_cast<int>(p.task->trajectory.size()); ++j)
         p.start.proximal_angles.push_back(0.3 + 0.05 * j);
     p.points.clear();
-    for (int j = 0; j < static_cast<int>(p.task->trajectory.size()); j += 4) p.points.push_back({j, 0.02});
+    for (int j = 0; j < static_cast<int>(p.task->trajectory.size()); j += 4)
+        p.points.push_back({j, 0.02});
     const nlp::Formulation f = nlp::formulate(p);
     CHECK(f.proximal.size() == p.task->trajectory.size());
     int bisectors = 0;
@@ -129,9 +130,10 @@ TEST_CASE("a failed refinement names the constraints that stay violated", "[nlp]
     REQUIRE_FALSE(r.usable());
     INFO(r.message);
     CHECK(r.message.rfind("Ipopt status ", 0) == 0);
-    const std::string expected =
-        "clearance of link 2 to obstacles[" + std::to_string(obstacle) + "], trajectory[3] at 0.020000 m";
-    CHECK(r.message.find("at the last iterate " + expected + " is violated by ") != std::string::npos);
+    const std::string expected = "clearance of link 2 to obstacles[" + std::to_string(obstacle) +
+                                 "], trajectory[3] at 0.020000 m";
+    CHECK(r.message.find("at the last iterate " + expected + " is violated by ") !=
+          std::string::npos);
     // The worst violation is reported first, and it is a real one.
     const auto violated = f.program.violated(r.x.data(), 1e-9);
     REQUIRE_FALSE(violated.empty());

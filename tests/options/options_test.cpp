@@ -2,6 +2,7 @@
 // refused with a message that names the struct and the field.
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -14,6 +15,7 @@
 #include <modsynth/control/motion.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/text/option_check.h>
 #include <modsynth/verify/verifier.h>
@@ -55,11 +57,14 @@ void check_options(const std::vector<Breakage<Options>>& breakages) {
 TEST_CASE("option checks name the first broken rule and skip the rest", "[options]") {
     std::string error;
     CHECK(text::OptionCheck("X", &error).greater("a", 1.0, 0.0).at_least("b", 0.0, 0.0).ok());
-    CHECK_FALSE(text::OptionCheck("X", &error).greater("a", 0.0, 0.0).within("b", 9.0, 0.0, 1.0).ok());
+    CHECK_FALSE(
+        text::OptionCheck("X", &error).greater("a", 0.0, 0.0).within("b", 9.0, 0.0, 1.0).ok());
     CHECK(error == "X::a = 0: must be greater than 0");
     CHECK_FALSE(text::OptionCheck("X", &error).at_least("a", kNaN, 0.0).ok());
     CHECK(error == "X::a = nan: must be a finite number");
-    CHECK_FALSE(text::OptionCheck("X", &error).greater("a", std::numeric_limits<double>::infinity(), 0.0).ok());
+    CHECK_FALSE(text::OptionCheck("X", &error)
+                    .greater("a", std::numeric_limits<double>::infinity(), 0.0)
+                    .ok());
     CHECK(error == "X::a = inf: must be a finite number");
     CHECK_FALSE(text::OptionCheck("X", &error).within("b", 9.0, 0.0, 1.0).ok());
     CHECK(error == "X::b = 9: must be a number from 0 to 1");
@@ -121,7 +126,8 @@ TEST_CASE("motion options: defaults valid, each bad field named", "[options][con
     O bad;
     bad.ee_speed = 0.0;
     std::vector<control::Sample> samples(2);
-    CHECK_THROWS_WITH(control::assign_times(samples, bad), Catch::Contains("MotionOptions::ee_speed"));
+    CHECK_THROWS_WITH(control::assign_times(samples, bad),
+                      Catch::Contains("MotionOptions::ee_speed"));
     CHECK_THROWS_WITH(control::plan_motion(testing::line_task(), {}, bad),
                       Catch::Contains("MotionOptions::ee_speed"));
 }
@@ -139,7 +145,8 @@ TEST_CASE("verify options: defaults valid, each bad field named", "[options][ver
                       Catch::Contains("VerifyOptions::max_ee_step"));
 }
 
-TEST_CASE("the verifier's limits follow the motion's: same joint step, wider EE step", "[options][verify]") {
+TEST_CASE("the verifier's limits follow the motion's: same joint step, wider EE step",
+          "[options][verify]") {
     control::MotionOptions motion;
     const verify::VerifyOptions defaults;
     // The default planning step is finer than the progress limit it must meet.
@@ -160,13 +167,19 @@ TEST_CASE("synthesis options: defaults valid, each bad field named", "[options][
     using O = synth::SynthesisOptions;
     check_options<O>({
         {"SynthesisOptions::time_limit", [](O& o) { o.time_limit = -1.0; }},
-        {"SynthesisOptions::motion: MotionOptions::max_joint_step", [](O& o) { o.motion.max_joint_step = 0.0; }},
-        {"SynthesisOptions::front: FrontStageOptions::time_limit", [](O& o) { o.front.time_limit = 0.0; }},
+        {"SynthesisOptions::motion: MotionOptions::max_joint_step",
+         [](O& o) { o.motion.max_joint_step = 0.0; }},
+        {"SynthesisOptions::front: FrontStageOptions::time_limit",
+         [](O& o) { o.front.time_limit = 0.0; }},
         {"SynthesisOptions::verify: VerifyOptions::deviation_tolerance",
          [](O& o) { o.verify.deviation_tolerance = kNaN; }},
+        {"SynthesisOptions::guesses: InitialGuessOptions::sweep_step",
+         [](O& o) { o.guesses.sweep_step = 0.0; }},
         {"SynthesisOptions::point_spacing", [](O& o) { o.point_spacing = 0.0; }},
-        {"SynthesisOptions::min_points_per_primitive", [](O& o) { o.min_points_per_primitive = 0; }},
-        {"SynthesisOptions::max_points_per_primitive", [](O& o) { o.max_points_per_primitive = 3; }},
+        {"SynthesisOptions::min_points_per_primitive",
+         [](O& o) { o.min_points_per_primitive = 0; }},
+        {"SynthesisOptions::max_points_per_primitive",
+         [](O& o) { o.max_points_per_primitive = 3; }},
         {"SynthesisOptions::max_points", [](O& o) { o.max_points = 0; }},
         {"SynthesisOptions::trace_samples", [](O& o) { o.trace_samples = 0.0; }},
         {"SynthesisOptions::guesses_per_skeleton", [](O& o) { o.guesses_per_skeleton = 0; }},
@@ -177,8 +190,10 @@ TEST_CASE("synthesis options: defaults valid, each bad field named", "[options][
         {"SynthesisOptions::first_solve_iterations", [](O& o) { o.first_solve_iterations = 0; }},
         {"SynthesisOptions::later_solve_iterations", [](O& o) { o.later_solve_iterations = 0; }},
         {"SynthesisOptions::max_transition_depth", [](O& o) { o.max_transition_depth = 11; }},
-        {"SynthesisOptions::motion_refinement_passes", [](O& o) { o.motion_refinement_passes = -1; }},
-        {"SynthesisOptions::counterexamples_per_round", [](O& o) { o.counterexamples_per_round = 0; }},
+        {"SynthesisOptions::motion_refinement_passes",
+         [](O& o) { o.motion_refinement_passes = -1; }},
+        {"SynthesisOptions::counterexamples_per_round",
+         [](O& o) { o.counterexamples_per_round = 0; }},
         {"SynthesisOptions::front_reserve_seconds", [](O& o) { o.front_reserve_seconds = -0.1; }},
         {"SynthesisOptions::front_reserve_share", [](O& o) { o.front_reserve_share = 1.5; }},
         {"SynthesisOptions::explanation_seconds", [](O& o) { o.explanation_seconds = 0.0; }},
@@ -189,15 +204,42 @@ TEST_CASE("synthesis options: defaults valid, each bad field named", "[options][
                       Catch::Contains("SynthesisOptions::refinement_rounds"));
 }
 
+TEST_CASE("initial guess options: defaults valid, each bad field named", "[options][synth]") {
+    using O = synth::InitialGuessOptions;
+    check_options<O>({
+        {"InitialGuessOptions::scoring_spacing", [](O& o) { o.scoring_spacing = 0.0; }},
+        {"InitialGuessOptions::max_points_per_primitive",
+         [](O& o) { o.max_points_per_primitive = 3; }},
+        {"InitialGuessOptions::max_points", [](O& o) { o.max_points = 0; }},
+        {"InitialGuessOptions::candidates_two", [](O& o) { o.candidates_two = -1; }},
+        {"InitialGuessOptions::candidates_three", [](O& o) { o.candidates_three = -1; }},
+        {"InitialGuessOptions::proximal_angles", [](O& o) { o.proximal_angles = 0; }},
+        {"InitialGuessOptions::sweep_step", [](O& o) { o.sweep_step = kNaN; }},
+        {"InitialGuessOptions::proximal_spacing", [](O& o) { o.proximal_spacing = -0.03; }},
+        {"InitialGuessOptions::max_proximal_points", [](O& o) { o.max_proximal_points = 2; }},
+        {"InitialGuessOptions::hopeless_margin", [](O& o) { o.hopeless_margin = -0.05; }},
+        {"InitialGuessOptions::distinct_distance", [](O& o) { o.distinct_distance = kNaN; }},
+    });
+    O bad;
+    bad.proximal_angles = 0;
+    smt::Skeleton skeleton;
+    CHECK_THROWS_WITH(synth::initial_guesses(testing::line_task(), skeleton, 1, 0,
+                                             std::chrono::steady_clock::time_point::max(), bad),
+                      Catch::Contains("InitialGuessOptions::proximal_angles"));
+}
+
 TEST_CASE("baseline options: defaults valid, each bad field named", "[options][baseline]") {
     using B = baseline::BaselineOptions;
     check_options<B>({
         {"BaselineOptions::points", [](B& o) { o.points = 1; }},
         {"BaselineOptions::time_limit", [](B& o) { o.time_limit = 0.0; }},
         {"BaselineOptions::design_share", [](B& o) { o.design_share = 1.1; }},
-        {"BaselineOptions::design: DesignOptions::smoothness_weight", [](B& o) { o.design.smoothness_weight = -1.0; }},
-        {"BaselineOptions::planner: PlannerOptions::goal_bias", [](B& o) { o.planner.goal_bias = 2.0; }},
-        {"BaselineOptions::fidelity: FidelityOptions::proximal_steps", [](B& o) { o.fidelity.proximal_steps = 0; }},
+        {"BaselineOptions::design: DesignOptions::smoothness_weight",
+         [](B& o) { o.design.smoothness_weight = -1.0; }},
+        {"BaselineOptions::planner: PlannerOptions::goal_bias",
+         [](B& o) { o.planner.goal_bias = 2.0; }},
+        {"BaselineOptions::fidelity: FidelityOptions::proximal_steps",
+         [](B& o) { o.fidelity.proximal_steps = 0; }},
     });
     using D = baseline::DesignOptions;
     check_options<D>({
@@ -209,7 +251,8 @@ TEST_CASE("baseline options: defaults valid, each bad field named", "[options][b
         {"DesignOptions::start_reach_share_three", [](D& o) { o.start_reach_share_three = 0.0; }},
         {"DesignOptions::start_turn", [](D& o) { o.start_turn = 4.0; }},
         {"DesignOptions::feasibility_tolerance", [](D& o) { o.feasibility_tolerance = 0.0; }},
-        {"DesignOptions::solver: SolverOptions::tolerance", [](D& o) { o.solver.tolerance = -1.0; }},
+        {"DesignOptions::solver: SolverOptions::tolerance",
+         [](D& o) { o.solver.tolerance = -1.0; }},
     });
     using P = baseline::PlannerOptions;
     check_options<P>({

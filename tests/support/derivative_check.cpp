@@ -54,16 +54,17 @@ DerivativeErrors derivative_errors(const nlp::QuadraticProgram& qp, unsigned see
         qp.eval_constraints(xm.data(), gm.data());
         for (int k = 0; k < m; ++k)
             worst_jac = std::max(worst_jac, std::abs((gp[k] - gm[k]) / (2 * h) - dense_jac[k][i]));
-        worst_grad = std::max(worst_grad, std::abs((qp.eval_objective(xp.data()) - qp.eval_objective(xm.data())) /
-                                                       (2 * h) -
-                                                   grad[i]));
+        worst_grad = std::max(
+            worst_grad,
+            std::abs((qp.eval_objective(xp.data()) - qp.eval_objective(xm.data())) / (2 * h) -
+                     grad[i]));
         const auto lp = lagrangian_gradient(xp), lm = lagrangian_gradient(xm);
         for (int r = 0; r < n; ++r)
-            worst_hess = std::max(worst_hess, std::abs((lp[r] - lm[r]) / (2 * h) - dense_hess[r][i]));
+            worst_hess =
+                std::max(worst_hess, std::abs((lp[r] - lm[r]) / (2 * h) - dense_hess[r][i]));
     }
     return {worst_grad, worst_jac, worst_hess};
 }
-
 
 void check_derivatives(const nlp::QuadraticProgram& qp, unsigned seed, double tolerance) {
     const DerivativeErrors e = derivative_errors(qp, seed);

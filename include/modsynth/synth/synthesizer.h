@@ -6,6 +6,7 @@
 
 #include <modsynth/control/motion.h>
 #include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/task/task.h>
 #include <modsynth/verify/verifier.h>
@@ -25,6 +26,8 @@ struct SynthesisOptions {
     /// step, and the EE progress limit widened to the planning step on long
     /// paths.
     verify::VerifyOptions verify;
+    /// How the initial guesses of the refinement are searched for.
+    InitialGuessOptions guesses;
 
     /// m between the points where the refinement constrains the arm along
     /// each primitive: 25 mm keeps a circle of the shipped tasks well
