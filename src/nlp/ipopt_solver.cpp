@@ -113,31 +113,27 @@ public:
     }
 
 private:
+    // Ipopt's return codes in words, for messages.
     static const char* describe(Ipopt::SolverReturn status) {
-        switch (status) {
-            case Ipopt::SUCCESS:
-                return "optimal";
-            case Ipopt::MAXITER_EXCEEDED:
-                return "iteration limit";
-            case Ipopt::CPUTIME_EXCEEDED:
-                return "time limit";
-            case Ipopt::STOP_AT_TINY_STEP:
-                return "tiny step";
-            case Ipopt::STOP_AT_ACCEPTABLE_POINT:
-                return "acceptable point";
-            case Ipopt::LOCAL_INFEASIBILITY:
-                return "locally infeasible";
-            case Ipopt::RESTORATION_FAILURE:
-                return "restoration failed";
-            case Ipopt::DIVERGING_ITERATES:
-                return "diverging iterates";
-            case Ipopt::ERROR_IN_STEP_COMPUTATION:
-                return "error in step computation";
-            case Ipopt::INVALID_NUMBER_DETECTED:
-                return "invalid number";
-            default:
-                return "failed";
-        }
+        struct Named {
+            Ipopt::SolverReturn status;
+            const char* words;
+        };
+        static constexpr Named kNames[] = {
+            {Ipopt::SUCCESS, "optimal"},
+            {Ipopt::MAXITER_EXCEEDED, "iteration limit"},
+            {Ipopt::CPUTIME_EXCEEDED, "time limit"},
+            {Ipopt::STOP_AT_TINY_STEP, "tiny step"},
+            {Ipopt::STOP_AT_ACCEPTABLE_POINT, "acceptable point"},
+            {Ipopt::LOCAL_INFEASIBILITY, "locally infeasible"},
+            {Ipopt::RESTORATION_FAILURE, "restoration failed"},
+            {Ipopt::DIVERGING_ITERATES, "diverging iterates"},
+            {Ipopt::ERROR_IN_STEP_COMPUTATION, "error in step computation"},
+            {Ipopt::INVALID_NUMBER_DETECTED, "invalid number"},
+        };
+        for (const Named& n : kNames)
+            if (n.status == status) return n.words;
+        return "failed";
     }
     // Ipopt reads |bound| >= 1e19 as "no bound".
     static Number clip(double v) { return std::clamp(v, -1e19, 1e19); }
