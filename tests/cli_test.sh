@@ -147,6 +147,21 @@ assert len(d["points"]) == 25 and len(d["poses"]) == 25 and len(d["waypoints"]) 
 assert d["robot"]["dof"] == 2 and d["figures"]["max_ee_deviation"] > 0.005
 PY
 expect_exit 2 "baseline with one point" "$bin" baseline "$root/tasks/rose.json" --points 1
+# Every stage option the command line exposes: a bad value exits 2 naming it.
+while read -r cmd option value; do
+    expect_exit 2 "$cmd $option $value" "$bin" $cmd "$root/tasks/rose.json" -o "$tmp/bad.json" "$option" "$value"
+    grep -qF -- "$option" "$tmp/err" || fail "$cmd $option $value: message does not name it: $(cat "$tmp/err")"
+done <<'OPTIONS'
+solve --time-limit 0
+solve --ee-speed 0
+solve --joint-speed nan
+solve --seed -1
+baseline --points 1
+baseline --baseline-time-limit inf
+baseline --rrt-iterations 0
+baseline --goal-bias 2
+baseline --baseline-seed x
+OPTIONS
 expect_exit 4 "baseline out of reach" "$bin" baseline "$root/tasks/infeasible/out-of-reach.task.json" --quiet
 grep -q "no design" "$tmp/out" || fail "baseline out of reach does not say 'no design': $(cat "$tmp/out")"
 expect_exit 0 "compare rose" "$bin" compare "$root/tasks/rose.json" --quiet --report "$tmp/cmp.html"

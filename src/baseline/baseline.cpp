@@ -4,6 +4,8 @@
 #include <chrono>
 #include <stdexcept>
 
+#include <modsynth/text/option_check.h>
+
 namespace modsynth::baseline {
 namespace {
 
@@ -22,7 +24,19 @@ const char* to_string(BaselineResult::Status status) {
     return "?";
 }
 
+bool BaselineOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("BaselineOptions", error)
+        .at_least("points", points, 2)
+        .greater("time_limit", time_limit, 0.0)
+        .within("design_share", design_share, 0.0, 1.0)
+        .nested("design", design)
+        .nested("planner", planner)
+        .nested("fidelity", fidelity)
+        .ok();
+}
+
 BaselineResult run_baseline(const task::Task& task, const BaselineOptions& options) {
+    text::require_valid(options);
     auto say = [&](const std::string& line) {
         if (options.progress) options.progress(line);
     };
@@ -30,8 +44,7 @@ BaselineResult run_baseline(const task::Task& task, const BaselineOptions& optio
     result.points = equidistant_points(task, options.points);
     const auto t0 = Clock::now();
     DesignOptions design = options.design;
-    // A design that used the whole budget would leave RRT nothing.
-    design.time_limit = std::min(design.time_limit, 0.8 * options.time_limit);
+    design.time_limit = std::min(design.time_limit, options.design_share * options.time_limit);
     say("discretized design: " + std::to_string(options.points) + " points");
     result.design = design_for_points(task, result.points, design);
     result.design_seconds = since(t0);

@@ -11,6 +11,7 @@
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/nlp/bilinear.h>
 #include <modsynth/nlp/solver.h>
+#include <modsynth/text/option_check.h>
 
 namespace modsynth::baseline {
 namespace {
@@ -46,15 +47,15 @@ Vec2 start_base(const task::Task& task, int region, const std::vector<PathSample
 
 // The initial pose at p: with three joints link 1 turned off the line to p
 // by a fixed angle, then the distal pair towards p on its requested side.
-std::vector<Vec2> start_joints(const Vec2& base, const std::vector<double>& r, const std::vector<int>& elbows,
-                               const Vec2& p) {
+std::vector<Vec2> start_joints(const Vec2& base, const std::vector<double>& r,
+                               const std::vector<int>& elbows, const Vec2& p, double turn) {
     const int n = static_cast<int>(r.size());
     std::vector<Vec2> joints;
     Vec2 origin = base;
     if (n == 3) {
         const Vec2 d = p - base;
         const double toward = std::atan2(d.y(), d.x());
-        origin = base + r[0] * geometry::unit(toward - 0.4 * elbows[0]);
+        origin = base + r[0] * geometry::unit(toward - turn * elbows[0]);
         joints.push_back(origin);
     }
     joints.push_back(kinematics::elbow_towards(origin, r[n - 2], r[n - 1], p, elbows.back()));
@@ -81,7 +82,7 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
 
     double reach = 0.0;
     for (const PathSample& p : points) reach = std::max(reach, (p.point - b0).norm());
-    const double share = dof == 2 ? 0.55 : 0.4;
+    const double share = dof == 2 ? options.start_reach_share_two : options.start_reach_share_three;
     std::vector<double> r0(dof, std::clamp(share * reach, spec.min_link_length, spec.max_link_length));
     Quadratic objective;
     for (int i = 0; i < dof; ++i) {
@@ -95,7 +96,7 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
         const Vec2& p = points[k].point;
         std::vector<Point> chain{base};
         std::vector<std::pair<int, int>> ids;
-        for (const Vec2& j0 : start_joints(b0, r0, start.elbows, p)) {
+        for (const Vec2& j0 : start_joints(b0, r0, start.elbows, p, options.start_turn)) {
             chain.push_back(new_point(qp, "joint " + std::to_string(chain.size()) + " " + where(k), j0));
             ids.push_back({chain.back().x.terms[0].first, chain.back().y.terms[0].first});
         }
@@ -112,12 +113,13 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
                 const task::Obstacle& ob = task.obstacles[o];
                 add_keep_apart(qp, chain[i], chain[i + 1], constant(ob.center),
                                rule.obstacle_distance(ob) + options.clearance_margin,
-                               "obstacles[" + std::to_string(o) + "] link " + std::to_string(i + 1) + " " +
-                                   where(k));
+                               "link " + std::to_string(i + 1) + " to obstacles[" +
+                                   std::to_string(o) + "], " + where(k));
             }
             if (i + 1 < dof)
-                add_keep_apart(qp, chain[i], chain[i + 1], chain.back(), rule.self_distance() + options.self_margin,
-                               "EE to link " + std::to_string(i + 1) + " " + where(k));
+                add_keep_apart(qp, chain[i], chain[i + 1], chain.back(),
+                               rule.self_distance() + options.self_margin,
+                               "EE to link " + std::to_string(i + 1) + ", " + where(k));
         }
         if (!previous.empty()) {
             for (int i = 1; i < dof; ++i)
@@ -179,8 +181,33 @@ std::vector<PathSample> equidistant_points(const task::Task& task, int count) {
     return out;
 }
 
+nlp::QuadraticProgram design_program(const task::Task& task, const std::vector<PathSample>& points,
+                                     int dof, int region, const std::vector<int>& elbows,
+                                     const DesignOptions& options) {
+    text::require_valid(options);
+    if (static_cast<int>(elbows.size()) != dof - 1)
+        throw std::invalid_argument(
+            "a design program needs one elbow sign per consecutive link pair");
+    return build(task, points, dof, Start{region, elbows}, options).program;
+}
+
+bool DesignOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("DesignOptions", error)
+        .at_least("time_limit", time_limit, 0.0)
+        .at_least("smoothness_weight", smoothness_weight, 0.0)
+        .at_least("clearance_margin", clearance_margin, 0.0)
+        .at_least("self_margin", self_margin, 0.0)
+        .greater("start_reach_share_two", start_reach_share_two, 0.0)
+        .greater("start_reach_share_three", start_reach_share_three, 0.0)
+        .within("start_turn", start_turn, -geometry::kPi, geometry::kPi)
+        .greater("feasibility_tolerance", feasibility_tolerance, 0.0)
+        .nested("solver", solver)
+        .ok();
+}
+
 PointDesign design_for_points(const task::Task& task, const std::vector<PathSample>& points,
                               const DesignOptions& options) {
+    text::require_valid(options);
     using Clock = std::chrono::steady_clock;
     const auto deadline = Clock::now() + std::chrono::duration<double>(options.time_limit);
     PointDesign best;
@@ -193,11 +220,13 @@ PointDesign design_for_points(const task::Task& task, const std::vector<PathSamp
             const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
             if (left <= 0.0) break;
             const Built m = build(task, points, dof, start, options);
-            nlp::SolverOptions solver;
+            nlp::SolverOptions solver = options.solver;
             solver.time_limit = left;
             const nlp::SolverResult result = nlp::minimize(m.program, solver);
             ++solves;
-            if (!result.usable() || m.program.infeasibility(result.x.data()) > 1e-6) continue;
+            if (!result.usable() ||
+                m.program.infeasibility(result.x.data()) > options.feasibility_tolerance)
+                continue;
             if (result.objective >= best_objective) continue;
             best_objective = result.objective;
             best.found = true;

@@ -9,6 +9,7 @@
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/kinematics/pose_clearance.h>
 #include <modsynth/kinematics/reachable_space.h>
+#include <modsynth/text/option_check.h>
 
 namespace modsynth::baseline {
 namespace {
@@ -42,8 +43,17 @@ bool reachable(const task::Task& task, const kinematics::Robot& robot, const Vec
 
 }  // namespace
 
+bool FidelityOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("FidelityOptions", error)
+        .greater("max_joint_step", max_joint_step, 0.0)
+        .greater("path_spacing", path_spacing, 0.0)
+        .at_least("proximal_steps", proximal_steps, 1)
+        .ok();
+}
+
 Fidelity measure_fidelity(const task::Task& task, const kinematics::Robot& robot,
                           const std::vector<std::vector<double>>& waypoints, const FidelityOptions& options) {
+    text::require_valid(options);
     Fidelity f;
     f.min_clearance = std::numeric_limits<double>::infinity();
     double deviation_sum = 0.0;

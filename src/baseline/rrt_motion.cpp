@@ -18,6 +18,7 @@
 #include <modsynth/geometry/vec.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/kinematics/pose_clearance.h>
+#include <modsynth/text/option_check.h>
 
 namespace modsynth::baseline {
 namespace {
@@ -94,8 +95,19 @@ std::vector<ob::State*> shortcut(const ob::SpaceInformationPtr& si, const std::v
 
 }  // namespace
 
+bool PlannerOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("PlannerOptions", error)
+        .within("goal_bias", goal_bias, 0.0, 1.0)
+        .at_least("range", range, 0.0)
+        .greater("resolution", resolution, 0.0)
+        .at_least("max_iterations", max_iterations, 1)
+        .at_least("time_limit", time_limit, 0.0)
+        .ok();
+}
+
 PlannedMotion plan_rrt(const task::Task& task, const kinematics::Robot& robot,
                        const std::vector<std::vector<double>>& poses, const PlannerOptions& options) {
+    text::require_valid(options);
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     using Clock = std::chrono::steady_clock;
     const auto deadline = Clock::now() + std::chrono::duration<double>(options.time_limit);

@@ -6,6 +6,7 @@
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/option_check.h>
 
 namespace modsynth::control {
 namespace {
@@ -39,6 +40,18 @@ std::string transition_name(int j) { return text::format("the transition after t
 std::string point_name(int j, double s) { return text::format("trajectory[%d] at %.4f m from its start", j, s); }
 
 }  // namespace
+
+bool MotionOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("MotionOptions", error)
+        .greater("max_joint_step", max_joint_step, 0.0)
+        .greater("max_ee_step", max_ee_step, 0.0)
+        .greater("ee_speed", ee_speed, 0.0)
+        .greater("joint_speed", joint_speed, 0.0)
+        .holds("max_samples", max_samples >= 2, "must be at least 2")
+        .at_least("step_attempts", step_attempts, 1)
+        .greater("ticks_per_second", ticks_per_second, 0.0)
+        .ok();
+}
 
 std::optional<std::vector<double>> configuration_at(const task::Task& task,
                                                     const kinematics::Robot& robot, int j,
@@ -81,7 +94,7 @@ bool walk(double from, double to, double first_step, const MotionOptions& option
         du = std::min(2.0 * du, first_step);
         std::optional<std::vector<double>> next;
         double candidate = u;
-        for (int attempt = 0; attempt < 60; ++attempt) {
+        for (int attempt = 0; attempt < options.step_attempts; ++attempt) {
             candidate = dir * (to - u) <= du ? to : u + dir * du;
             next = config_at(candidate, &out.back().q);
             if (!next) break;
@@ -106,6 +119,7 @@ bool walk(double from, double to, double first_step, const MotionOptions& option
 std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                                                const kinematics::Robot& robot,
                                                const MotionOptions& options, MotionFailure* failure) {
+    text::require_valid(options);
     std::vector<Sample> out;
     double failed_at = 0.0;
     bool gave_up = false;
@@ -201,6 +215,7 @@ void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
 }
 
 void assign_times(std::vector<Sample>& samples, const MotionOptions& options) {
+    text::require_valid(options);
     if (samples.empty()) return;
     samples[0].t = 0.0;
     for (std::size_t i = 1; i < samples.size(); ++i) {
@@ -212,9 +227,7 @@ void assign_times(std::vector<Sample>& samples, const MotionOptions& options) {
                                 : 0.0;
         const double dt = std::max(path / options.ee_speed,
                                    largest_change(a.q, b.q) / options.joint_speed);
-        // Microsecond resolution keeps the files readable; rounding is
-        // monotone, so t stays non-decreasing.
-        b.t = std::round((a.t + dt) * 1e6) / 1e6;
+        b.t = std::round((a.t + dt) * options.ticks_per_second) / options.ticks_per_second;
     }
 }
 

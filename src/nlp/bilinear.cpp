@@ -91,9 +91,10 @@ void add_keep_apart(QuadraticProgram& qp, const Point& a, const Point& b, const 
         Quadratic q;
         add_product(q, n.x, end->x - c.x);
         add_product(q, n.y, end->y - c.y);
-        qp.add_constraint(q, need, kInfinity, "clearance " + tag);
+        qp.add_constraint(q, need, kInfinity, "clearance of " + tag);
     }
-    qp.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0, "unit " + tag);
+    qp.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0,
+                      "unit normal for " + tag);
 }
 
 }  // namespace modsynth::nlp::bilinear

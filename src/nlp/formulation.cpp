@@ -8,6 +8,7 @@
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/nlp/bilinear.h>
+#include <modsynth/text/format.h>
 
 namespace modsynth::nlp {
 namespace {
@@ -75,8 +76,9 @@ private:
 
     void keep_links_from_obstacles(const Point& a, const Point& b, int link, const std::string& where) {
         for (int o = 0; o < static_cast<int>(t_.obstacles.size()); ++o)
-            keep_apart(a, b, constant(t_.obstacles[o].center), need_for(t_.obstacles[o]),
-                       part("obstacles", o) + " link " + std::to_string(link) + " " + where);
+            keep_apart(
+                a, b, constant(t_.obstacles[o].center), need_for(t_.obstacles[o]),
+                "link " + std::to_string(link) + " to " + part("obstacles", o) + ", " + where);
     }
 
     // The distal pair from `o` with its EE at p: elbow variable, both link
@@ -100,13 +102,15 @@ private:
         keep_links_from_obstacles(e, target, f_.dof, where);
         if (f_.dof == 3) {
             // eq. (9): the EE keeps a diameter away from the proximal link.
-            keep_apart(base_, o, target, rule_.self_distance() + p_.margins.self, "EE to link 1 " + where);
+            keep_apart(base_, o, target, rule_.self_distance() + p_.margins.self,
+                       "EE to link 1, " + where);
         }
     }
 
     void add_trace_point(const PathPoint& pt) {
         const Vec2 p = geometry::point_at(t_.trajectory[pt.primitive], pt.s);
-        distal_pair(origin(pt.primitive), p, part("trajectory", pt.primitive) + "@" + std::to_string(pt.s));
+        distal_pair(origin(pt.primitive), p,
+                    part("trajectory", pt.primitive) + text::format(" at %.6f m", pt.s));
     }
 
     void add_proximal_poses() {
@@ -136,7 +140,8 @@ private:
         if (depth <= 0) return;
         const double mid = 0.5 * (angle_a + angle_c);
         const Vec2 t0 = p_.start.distal_origin(mid);
-        const std::string where = "transition after " + part("trajectory", j) + " at " + std::to_string(mid);
+        const std::string where =
+            "transition after " + part("trajectory", j) + text::format(", link 1 at %.6f rad", mid);
         const Point t = new_point("proximal " + where, t0);
         const Affine sum = (a.x - base_.x) + (c.x - base_.x);
         const Affine sum_y = (a.y - base_.y) + (c.y - base_.y);
@@ -164,7 +169,7 @@ private:
             for (int o = 0; o < static_cast<int>(t_.obstacles.size()); ++o) {
                 const task::Obstacle& ob = t_.obstacles[o];
                 const double need = need_for(ob);
-                const std::string tag = part("obstacles", o) + " " + part("trajectory", j);
+                const std::string tag = part("obstacles", o) + " on " + part("trajectory", j);
                 const Vec2 mid = geometry::point_at(prim, geometry::length(prim) / 2);
                 const Vec2 n0 = away_from(ob.center, p_.start.base, mid);
                 const int nx = qp_.add_variable(-1.0, 1.0, n0.x(), "sv normal.x " + tag);

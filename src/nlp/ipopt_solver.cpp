@@ -9,6 +9,9 @@
 #include <algorithm>
 #include <string>
 
+#include <modsynth/text/format.h>
+#include <modsynth/text/option_check.h>
+
 namespace modsynth::nlp {
 namespace {
 
@@ -105,18 +108,75 @@ public:
                 break;
             default: result.status = SolverResult::Status::Failed; break;
         }
-        result.message = "Ipopt status " + std::to_string(static_cast<int>(status));
+        result.message = "Ipopt status " + std::to_string(static_cast<int>(status)) + " (" +
+                         describe(status) + ")";
     }
 
 private:
+    // Ipopt's return codes in words, for messages.
+    static const char* describe(Ipopt::SolverReturn status) {
+        struct Named {
+            Ipopt::SolverReturn status;
+            const char* words;
+        };
+        static constexpr Named kNames[] = {
+            {Ipopt::SUCCESS, "optimal"},
+            {Ipopt::MAXITER_EXCEEDED, "iteration limit"},
+            {Ipopt::CPUTIME_EXCEEDED, "time limit"},
+            {Ipopt::STOP_AT_TINY_STEP, "tiny step"},
+            {Ipopt::STOP_AT_ACCEPTABLE_POINT, "acceptable point"},
+            {Ipopt::LOCAL_INFEASIBILITY, "locally infeasible"},
+            {Ipopt::RESTORATION_FAILURE, "restoration failed"},
+            {Ipopt::DIVERGING_ITERATES, "diverging iterates"},
+            {Ipopt::ERROR_IN_STEP_COMPUTATION, "error in step computation"},
+            {Ipopt::INVALID_NUMBER_DETECTED, "invalid number"},
+        };
+        for (const Named& n : kNames)
+            if (n.status == status) return n.words;
+        return "failed";
+    }
     // Ipopt reads |bound| >= 1e19 as "no bound".
     static Number clip(double v) { return std::clamp(v, -1e19, 1e19); }
     const QuadraticProgram& p_;
 };
 
+// Which constraints keep the last iterate from being feasible, by label
+// (each names its family and the task part it comes from), worst first.
+std::string worst_violations(const QuadraticProgram& program, const std::vector<double>& x,
+                             const SolverOptions& options) {
+    if (x.size() != static_cast<std::size_t>(program.num_variables())) return {};
+    const auto violated = program.violated(x.data(), options.constraint_tolerance);
+    if (violated.empty()) return "; every constraint holds at the last iterate";
+    std::string s = "; at the last iterate ";
+    const std::size_t shown =
+        std::min(violated.size(), static_cast<std::size_t>(options.reported_violations));
+    for (std::size_t k = 0; k < shown; ++k) {
+        s += k ? ", " : "";
+        s += program.constraint_label(violated[k].constraint) +
+             text::format(" is violated by %.3g", violated[k].amount);
+    }
+    if (violated.size() > shown) s += text::format(" (%zu violated in all)", violated.size());
+    return s;
+}
+
 }  // namespace
 
+bool SolverOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("SolverOptions", error)
+        .greater("time_limit", time_limit, 0.0)
+        .at_least("max_iterations", max_iterations, 0)
+        .greater("tolerance", tolerance, 0.0)
+        .greater("constraint_tolerance", constraint_tolerance, 0.0)
+        .at_least("acceptable_tolerance", acceptable_tolerance, tolerance)
+        .at_least("acceptable_constraint_tolerance", acceptable_constraint_tolerance,
+                  constraint_tolerance)
+        .within("print_level", print_level, 0, 12)
+        .at_least("reported_violations", reported_violations, 0)
+        .ok();
+}
+
 SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options) {
+    text::require_valid(options);
     Ipopt::SmartPtr<Adapter> nlp = new Adapter(program);
     Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
     auto& o = *app->Options();
@@ -124,8 +184,8 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
     o.SetIntegerValue("print_level", options.print_level);
     o.SetNumericValue("tol", options.tolerance);
     o.SetNumericValue("constr_viol_tol", options.constraint_tolerance);
-    o.SetNumericValue("acceptable_tol", 1e-5);
-    o.SetNumericValue("acceptable_constr_viol_tol", 1e-7);
+    o.SetNumericValue("acceptable_tol", options.acceptable_tolerance);
+    o.SetNumericValue("acceptable_constr_viol_tol", options.acceptable_constraint_tolerance);
     o.SetIntegerValue("max_iter", options.max_iterations);
     o.SetNumericValue("max_cpu_time", std::max(0.01, options.time_limit));
     o.SetStringValue("mu_strategy", "adaptive");
@@ -139,6 +199,7 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
     const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(nlp);
     SolverResult result = nlp->result;
     if (result.x.empty()) result.message = "Ipopt returned " + std::to_string(static_cast<int>(status));
+    if (!result.usable()) result.message += worst_violations(program, result.x, options);
     if (auto stats = app->Statistics(); Ipopt::IsValid(stats))
         result.iterations = stats->IterationCount();
     return result;

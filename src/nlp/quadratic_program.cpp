@@ -109,15 +109,30 @@ void QuadraticProgram::eval_hessian(double sigma, const double* lambda, double* 
     }
 }
 
+double QuadraticProgram::constraint_violation(int m, const double* x) const {
+    const double v = constraints_[m].value(x);
+    return std::max({0.0, c_lower_[m] - v, v - c_upper_[m]});
+}
+
 double QuadraticProgram::infeasibility(const double* x) const {
     double worst = 0.0;
     for (int i = 0; i < num_variables(); ++i)
         worst = std::max({worst, lower_[i] - x[i], x[i] - upper_[i]});
-    for (int m = 0; m < num_constraints(); ++m) {
-        const double v = constraints_[m].value(x);
-        worst = std::max({worst, c_lower_[m] - v, v - c_upper_[m]});
-    }
+    for (int m = 0; m < num_constraints(); ++m) worst = std::max(worst, constraint_violation(m, x));
     return worst;
+}
+
+std::vector<QuadraticProgram::Violated> QuadraticProgram::violated(const double* x,
+                                                                   double tolerance) const {
+    std::vector<Violated> out;
+    for (int m = 0; m < num_constraints(); ++m) {
+        const double amount = constraint_violation(m, x);
+        if (amount > tolerance) out.push_back({m, amount});
+    }
+    // Ties keep constraint order, so the report is the same on every run.
+    std::stable_sort(out.begin(), out.end(),
+                     [](const Violated& a, const Violated& b) { return a.amount > b.amount; });
+    return out;
 }
 
 }  // namespace modsynth::nlp

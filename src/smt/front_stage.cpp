@@ -10,27 +10,13 @@
 
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
+#include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/option_check.h>
 
 namespace modsynth::smt {
 namespace {
-
-// Slack that keeps the relaxation sound despite the decimal rounding of
-// task numbers: a constraint is loosened, never tightened.
-constexpr double kSlack = 1e-7;
-// Up to this many primitives every pair gets its span; beyond, each
-// primitive gets the span to its farthest partner only, which keeps the
-// encoding linear in the path (the spans are implied constraints either way).
-constexpr int kAllSpanPairs = 64;
-// Hull vertices searched for farthest partners: any sampled path point gives
-// a sound span, so a subsample of the hull bounds the work at the cap.
-constexpr std::size_t kHullProbe = 256;
-// Sampled points encoded over the whole path: a long path gets fewer per
-// primitive (never fewer than its ends), which keeps the encoding, and the
-// time Z3 takes to build and tear it down, within a time limit. Fewer
-// samples only weaken the relaxation: it stays sound.
-constexpr int kEncodedPoints = 4000;
 
 std::string decimal(double v) { return text::format("%.12f", v); }
 
@@ -48,6 +34,18 @@ std::vector<geometry::Vec2> sample_points(const geometry::Primitive& p, int coun
 }
 
 }  // namespace
+
+bool FrontStageOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("FrontStageOptions", error)
+        .greater("time_limit", time_limit, 0.0)
+        .greater("refined_time_limit", refined_time_limit, 0.0)
+        .at_least("samples_per_primitive", samples_per_primitive, 1)
+        .at_least("encoded_points", encoded_points, 1)
+        .at_least("all_span_pairs", all_span_pairs, 0)
+        .at_least("hull_probe", hull_probe, 1)
+        .within("slack", slack, 0.0, 1e-3)
+        .ok();
+}
 
 struct FrontStage::Impl {
     const task::Task task;  // a copy: callers may pass temporaries
@@ -86,7 +84,8 @@ struct FrontStage::Impl {
         set_timeout(solver, options.time_limit);
         set_timeout(fine, options.refined_time_limit);
         const int m = static_cast<int>(task.trajectory.size());
-        samples = std::clamp(kEncodedPoints / std::max(1, m), 1, std::max(1, options.samples_per_primitive));
+        samples = std::clamp(options.encoded_points / std::max(1, m), 1,
+                             std::max(1, options.samples_per_primitive));
         for (int k = 0; k < dof; ++k) {
             std::string name = "r";
             name += std::to_string(k + 1);  // (GCC 12 warns falsely on "r" + string)
@@ -158,12 +157,12 @@ struct FrontStage::Impl {
         const kinematics::ClearanceRule rule{rs.link_diameter};
         for (int k = 0; k < dof; ++k) {
             add_both(r[k] > 0);
-            require({"robot.min_link_length"}, r[k] >= num(rs.min_link_length - kSlack));
-            require({"robot.max_link_length"}, r[k] <= num(rs.max_link_length + kSlack));
+            require({"robot.min_link_length"}, r[k] >= num(rs.min_link_length - options.slack));
+            require({"robot.max_link_length"}, r[k] <= num(rs.max_link_length + options.slack));
         }
         // The EE must stay a diameter away from the link before the last,
         // which it cannot do when the last link is shorter than that.
-        require({diam}, r[dof - 1] >= num(rule.self_distance() - kSlack));
+        require({diam}, r[dof - 1] >= num(rule.self_distance() - options.slack));
 
         if (!task.base_regions.empty()) {
             z3::expr_vector any(ctx);
@@ -171,8 +170,10 @@ struct FrontStage::Impl {
                 const task::BaseRegion& b = task.base_regions[k];
                 z3::expr in = ctx.bool_const(("in_region_" + std::to_string(k)).c_str());
                 regions.push_back(in);
-                add_both(z3::implies(in, bx >= num(b.min.x() - kSlack) && bx <= num(b.max.x() + kSlack) &&
-                                               by >= num(b.min.y() - kSlack) && by <= num(b.max.y() + kSlack)));
+                add_both(z3::implies(in, bx >= num(b.min.x() - options.slack) &&
+                                             bx <= num(b.max.x() + options.slack) &&
+                                             by >= num(b.min.y() - options.slack) &&
+                                             by <= num(b.max.y() + options.slack)));
                 any.push_back(in);
             }
             require({"base_regions"}, z3::mk_or(any));
@@ -181,7 +182,7 @@ struct FrontStage::Impl {
         for (std::size_t o = 0; o < task.obstacles.size(); ++o) {
             const task::Obstacle& ob = task.obstacles[o];
             const std::string name = "obstacles[" + std::to_string(o) + "]";
-            const double need = rule.obstacle_distance(ob) - kSlack;
+            const double need = rule.obstacle_distance(ob) - options.slack;
             // Link 1 starts at the base.
             require({name, diam}, dist2(ob.center) >= num(need * need));
             // The last link ends on the path.
@@ -210,7 +211,7 @@ struct FrontStage::Impl {
         const int m = static_cast<int>(task.trajectory.size());
         std::vector<std::vector<geometry::Vec2>> pts;
         for (const auto& p : task.trajectory) pts.push_back(sample_points(p, samples));
-        if (m > kAllSpanPairs) {
+        if (m > options.all_span_pairs) {
             encode_farthest_spans(R, pts);
             return;
         }
@@ -222,9 +223,9 @@ struct FrontStage::Impl {
                 const std::string pj = "trajectory[" + std::to_string(j) + "]";
                 const std::string pk = "trajectory[" + std::to_string(k) + "]";
                 if (j == k) {
-                    require({pj}, 2 * R >= num(span - kSlack));
+                    require({pj}, 2 * R >= num(span - options.slack));
                 } else {
-                    require({pj, pk}, 2 * R >= num(span - kSlack));
+                    require({pj, pk}, 2 * R >= num(span - options.slack));
                 }
             }
         }
@@ -236,9 +237,11 @@ struct FrontStage::Impl {
         std::vector<geometry::Vec2> all;
         for (const auto& v : pts) all.insert(all.end(), v.begin(), v.end());
         std::vector<geometry::Vec2> hull = geometry::convex_hull(all);
-        if (hull.size() > kHullProbe) {
+        const std::size_t hull_probe = static_cast<std::size_t>(options.hull_probe);
+        if (hull.size() > hull_probe) {
             std::vector<geometry::Vec2> probe;
-            for (std::size_t i = 0; i < kHullProbe; ++i) probe.push_back(hull[i * hull.size() / kHullProbe]);
+            for (std::size_t i = 0; i < hull_probe; ++i)
+                probe.push_back(hull[i * hull.size() / hull_probe]);
             hull = std::move(probe);
         }
         // Which primitive a hull vertex came from.
@@ -263,9 +266,10 @@ struct FrontStage::Impl {
                     if ((a - hull[h]).norm() > span) span = (a - hull[h]).norm(), partner = owner[h];
             const std::string pj = "trajectory[" + std::to_string(j) + "]";
             if (partner == static_cast<int>(j)) {
-                require({pj}, 2 * R >= num(span - kSlack));
+                require({pj}, 2 * R >= num(span - options.slack));
             } else {
-                require({pj, "trajectory[" + std::to_string(partner) + "]"}, 2 * R >= num(span - kSlack));
+                require({pj, "trajectory[" + std::to_string(partner) + "]"},
+                        2 * R >= num(span - options.slack));
             }
         }
     }
@@ -275,13 +279,13 @@ struct FrontStage::Impl {
         const std::string name = "trajectory[" + std::to_string(j) + "]";
         const std::string diam = "robot.link_diameter";
         const kinematics::ClearanceRule rule{task.robot.link_diameter};
-        const double d2 = rule.self_distance() * rule.self_distance() - kSlack;
+        const double d2 = rule.self_distance() * rule.self_distance() - options.slack;
         const auto pts = sample_points(p, samples);
         for (const auto& v : pts) {
             const z3::expr dv = dist2(v);
-            require({name}, dv <= R * R + num(kSlack));
+            require({name}, dv <= R * R + num(options.slack));
             if (dof == 2) {
-                require({name}, dv + num(kSlack) >= (r[0] - r[1]) * (r[0] - r[1]), true);
+                require({name}, dv + num(options.slack) >= (r[0] - r[1]) * (r[0] - r[1]), true);
                 require({name, diam}, dv >= num(d2), true);
             }
         }
@@ -300,7 +304,9 @@ struct FrontStage::Impl {
             z3::expr interior = ctx.bool_const(("closest_interior_" + std::to_string(j)).c_str());
             fine.add(z3::implies(interior, t >= 0 && t <= num(l2)));
             fine.add(z3::implies(!interior, t <= 0 || t >= num(l2)));
-            require({name}, z3::implies(interior, cr * cr + num(kSlack) >= (r[0] - r[1]) * (r[0] - r[1]) * num(l2)),
+            require({name},
+                    z3::implies(interior, cr * cr + num(options.slack) >=
+                                              (r[0] - r[1]) * (r[0] - r[1]) * num(l2)),
                     true);
             require({name, diam}, z3::implies(interior, cr * cr >= num(d2 * l2)), true);
         } else if (p.kind == geometry::PrimitiveKind::Circle) {
@@ -308,12 +314,12 @@ struct FrontStage::Impl {
             z3::expr dc = ctx.real_const(("center_distance_" + std::to_string(j)).c_str());
             fine.add(dc >= 0 && dc * dc == dist2(p.center));
             const z3::expr rc = num(p.radius);
-            require({name}, dc + rc <= R + num(kSlack), true);
+            require({name}, dc + rc <= R + num(options.slack), true);
             z3::expr inside = ctx.bool_const(("base_inside_" + std::to_string(j)).c_str());
             fine.add(inside == (dc <= rc));
-            const z3::expr gap = z3::ite(inside, rc - dc, dc - rc) + num(kSlack);
+            const z3::expr gap = z3::ite(inside, rc - dc, dc - rc) + num(options.slack);
             require({name}, gap >= r[0] - r[1] && gap >= r[1] - r[0], true);
-            require({name, diam}, gap >= num(rule.self_distance() - kSlack), true);
+            require({name, diam}, gap >= num(rule.self_distance() - options.slack), true);
         }
     }
 
@@ -329,10 +335,6 @@ struct FrontStage::Impl {
                 s.base_region = static_cast<int>(k);
                 break;
             }
-        }
-        for (const auto& prim : task.trajectory) {
-            const auto cp = geometry::critical_points(prim, s.base);
-            s.primitives.push_back({cp.closest_at, cp.farthest_at});
         }
         return s;
     }
@@ -365,7 +367,7 @@ struct FrontStage::Impl {
 };
 
 FrontStage::FrontStage(const task::Task& task, int dof, const FrontStageOptions& options)
-    : impl_(std::make_unique<Impl>(task, dof, options)) {}
+    : impl_((text::require_valid(options), std::make_unique<Impl>(task, dof, options))) {}
 
 FrontStage::~FrontStage() = default;
 

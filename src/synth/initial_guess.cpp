@@ -8,25 +8,29 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/text/option_check.h>
 
 namespace modsynth::synth {
 namespace {
 
 using geometry::Vec2;
 
-// At most 200 points a primitive, and the spacing widened when the whole
-// path would need more than 20000: the guesses need the path's shape, and
-// their work must not grow with its absolute size.
-std::vector<Vec2> path_points(const task::Task& task, double spacing) {
+// At most options.max_points_per_primitive points a primitive, and the
+// spacing widened when the whole path would need more than
+// options.max_points.
+std::vector<Vec2> path_points(const task::Task& task, double spacing,
+                              const InitialGuessOptions& options) {
     double total = 0.0;
     for (const auto& p : task.trajectory) total += geometry::length(p);
-    spacing = std::max(spacing, total / 20000.0);
+    spacing = std::max(spacing, total / static_cast<double>(options.max_points));
     // Many primitives: their ends and critical points carry the shape.
     const double fewest = task.trajectory.size() > 1000 ? 1.0 : 4.0;
     std::vector<Vec2> pts;
     for (const auto& p : task.trajectory) {
         const double len = geometry::length(p);
-        const int n = static_cast<int>(std::clamp(std::ceil(len / spacing), fewest, 200.0));
+        const int n =
+            static_cast<int>(std::clamp(std::ceil(len / spacing), fewest,
+                                        static_cast<double>(options.max_points_per_primitive)));
         for (int i = 0; i <= n; ++i) pts.push_back(geometry::point_at(p, len * i / n));
     }
     return pts;
@@ -67,7 +71,9 @@ double margin_at(const task::Task& task, const kinematics::Robot& robot, const s
 // candidates) to maximise the worst margin over the traces and the sweeps
 // between them (a Viterbi pass). Returns the margin; fills proximal_angles.
 double choose_proximal_angles(const task::Task& task, kinematics::Robot& robot,
-                              const std::vector<std::vector<Vec2>>& per_primitive, int angles) {
+                              const std::vector<std::vector<Vec2>>& per_primitive,
+                              const InitialGuessOptions& options) {
+    const int angles = options.proximal_angles;
     const int m = static_cast<int>(task.trajectory.size());
     const double a = robot.link_lengths[1], c = robot.link_lengths[2];
     constexpr double kNone = -std::numeric_limits<double>::infinity();
@@ -79,14 +85,15 @@ double choose_proximal_angles(const task::Task& task, kinematics::Robot& robot,
             double w = std::numeric_limits<double>::infinity();
             for (const Vec2& p : per_primitive[j]) {
                 w = std::min(w, pose_margin(task, robot.base, origin(theta(k)), a, c, robot.elbow, true, p));
-                if (w < -0.05) break;  // hopeless: stop early
+                if (w < -options.hopeless_margin) break;  // hopeless: stop early
             }
             trace[j][k] = w;
         }
     }
     auto sweep = [&](int j, int ka, int kb) {
         const double from = theta(ka), delta = std::remainder(theta(kb) - from, geometry::kTau);
-        const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(delta) / 0.2)));
+        const int steps =
+            std::max(1, static_cast<int>(std::ceil(std::abs(delta) / options.sweep_step)));
         double w = std::numeric_limits<double>::infinity();
         for (int i = 1; i < steps; ++i)
             w = std::min(w, pose_margin(task, robot.base, origin(from + delta * i / steps), a, c, robot.elbow,
@@ -98,7 +105,7 @@ double choose_proximal_angles(const task::Task& task, kinematics::Robot& robot,
     best[0] = trace[0];
     for (int j = 1; j < m; ++j) {
         for (int kb = 0; kb < angles; ++kb) {
-            if (trace[j][kb] < -0.05) continue;
+            if (trace[j][kb] < -options.hopeless_margin) continue;
             for (int ka = 0; ka < angles; ++ka) {
                 const double bound = std::min(best[j - 1][ka], trace[j][kb]);
                 if (bound <= best[j][kb]) continue;
@@ -119,8 +126,26 @@ double choose_proximal_angles(const task::Task& task, kinematics::Robot& robot,
 
 }  // namespace
 
-double path_margin(const task::Task& task, const kinematics::Robot& robot, double spacing) {
-    return margin_at(task, robot, path_points(task, spacing));
+bool InitialGuessOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("InitialGuessOptions", error)
+        .greater("scoring_spacing", scoring_spacing, 0.0)
+        .at_least("max_points_per_primitive", max_points_per_primitive, 4)
+        .at_least("max_points", max_points, 1)
+        .at_least("candidates_two", candidates_two, 0)
+        .at_least("candidates_three", candidates_three, 0)
+        .at_least("proximal_angles", proximal_angles, 1)
+        .greater("sweep_step", sweep_step, 0.0)
+        .greater("proximal_spacing", proximal_spacing, 0.0)
+        .at_least("max_proximal_points", max_proximal_points, 4)
+        .at_least("hopeless_margin", hopeless_margin, 0.0)
+        .at_least("distinct_distance", distinct_distance, 0.0)
+        .ok();
+}
+
+double path_margin(const task::Task& task, const kinematics::Robot& robot, double spacing,
+                   const InitialGuessOptions& options) {
+    text::require_valid(options);
+    return margin_at(task, robot, path_points(task, spacing, options));
 }
 
 namespace {
@@ -145,7 +170,7 @@ void search_region(const task::Task& task, const smt::Skeleton& skeleton, const 
     hi += Vec2::Constant(reach);
 }
 
-bool sort_and_keep_distinct(std::vector<ScoredRobot>& all, int count) {
+bool sort_and_keep_distinct(std::vector<ScoredRobot>& all, int count, double distinct_distance) {
     std::stable_sort(all.begin(), all.end(), [](const ScoredRobot& a, const ScoredRobot& b) {
         const bool ca = a.margin >= 0.0, cb = b.margin >= 0.0;
         if (ca != cb) return ca;
@@ -156,9 +181,11 @@ bool sort_and_keep_distinct(std::vector<ScoredRobot>& all, int count) {
     std::vector<ScoredRobot> out;
     for (const auto& c : all) {
         const bool distinct = std::none_of(out.begin(), out.end(), [&](const ScoredRobot& o) {
-            if ((o.robot.base - c.robot.base).norm() >= 0.02) return false;
+            if ((o.robot.base - c.robot.base).norm() >= distinct_distance) return false;
             for (std::size_t k = 0; k < c.robot.link_lengths.size(); ++k)
-                if (std::abs(o.robot.link_lengths[k] - c.robot.link_lengths[k]) >= 0.02) return false;
+                if (std::abs(o.robot.link_lengths[k] - c.robot.link_lengths[k]) >=
+                    distinct_distance)
+                    return false;
             return true;
         });
         if (distinct) out.push_back(c);
@@ -168,15 +195,19 @@ bool sort_and_keep_distinct(std::vector<ScoredRobot>& all, int count) {
     return !all.empty();
 }
 
-std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::Skeleton& skeleton, int count,
-                                            unsigned seed, std::chrono::steady_clock::time_point deadline) {
-    const auto pts = path_points(task, 0.02);
+std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::Skeleton& skeleton,
+                                            int count, unsigned seed,
+                                            std::chrono::steady_clock::time_point deadline,
+                                            const InitialGuessOptions& options) {
+    const auto pts = path_points(task, options.scoring_spacing, options);
     std::vector<std::vector<Vec2>> per_primitive;
     double span = 0.0;
     for (const auto& prim : task.trajectory) {
         const double len = geometry::length(prim);
         // Capped: the span below is quadratic in it.
-        const int n = static_cast<int>(std::clamp(std::ceil(len / 0.03), 4.0, 64.0));
+        const int n =
+            static_cast<int>(std::clamp(std::ceil(len / options.proximal_spacing), 4.0,
+                                        static_cast<double>(options.max_proximal_points)));
         per_primitive.emplace_back();
         for (int i = 0; i <= n; ++i) per_primitive.back().push_back(geometry::point_at(prim, len * i / n));
         for (const Vec2& a : per_primitive.back())
@@ -189,8 +220,8 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
                      static_cast<unsigned>(skeleton.base_region + 1));
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<ScoredRobot> all;
-    constexpr int kCandidates = 120;
-    for (int i = 0; i < kCandidates && std::chrono::steady_clock::now() < deadline; ++i) {
+    for (int i = 0; i < options.candidates_three && std::chrono::steady_clock::now() < deadline;
+         ++i) {
         kinematics::Robot robot;
         robot.base = uniform_in(rng, lo, hi);
         robot.link_diameter = task.robot.link_diameter;
@@ -204,10 +235,10 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
         const double c = std::clamp(distal - a, lmin, lmax);
         const double r1 = std::clamp((far - (a + c) * (0.5 + 0.4 * u(rng))) , lmin, lmax);
         robot.link_lengths = {r1, a, c};
-        const double margin = choose_proximal_angles(task, robot, per_primitive, 16);
+        const double margin = choose_proximal_angles(task, robot, per_primitive, options);
         all.push_back({robot, margin});
     }
-    sort_and_keep_distinct(all, count);
+    sort_and_keep_distinct(all, count, options.distinct_distance);
     return all;
 }
 
@@ -215,9 +246,12 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
 
 std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skeleton& skeleton,
                                          int count, unsigned seed,
-                                         std::chrono::steady_clock::time_point deadline) {
-    if (skeleton.dof == 3) return three_link_guesses(task, skeleton, count, seed, deadline);
-    const auto pts = path_points(task, 0.02);
+                                         std::chrono::steady_clock::time_point deadline,
+                                         const InitialGuessOptions& options) {
+    text::require_valid(options);
+    if (skeleton.dof == 3)
+        return three_link_guesses(task, skeleton, count, seed, deadline, options);
+    const auto pts = path_points(task, options.scoring_spacing, options);
     const double lo = task.robot.min_link_length, hi = task.robot.max_link_length;
     Vec2 bmin, bmax;
     search_region(task, skeleton, pts, bmin, bmax);
@@ -237,8 +271,9 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
     };
     if (skeleton.link_lengths.size() == 2)
         consider(skeleton.base, skeleton.link_lengths[0], skeleton.link_lengths[1]);
-    constexpr int kCandidates = 600;
-    for (int i = 0; i < kCandidates && (i % 16 != 0 || std::chrono::steady_clock::now() < deadline); ++i) {
+    for (int i = 0;
+         i < options.candidates_two && (i % 16 != 0 || std::chrono::steady_clock::now() < deadline);
+         ++i) {
         const Vec2 base(bmin.x() + u(rng) * (bmax.x() - bmin.x()), bmin.y() + u(rng) * (bmax.y() - bmin.y()));
         double far = 0.0, near = std::numeric_limits<double>::infinity();
         for (const auto& prim : task.trajectory) {
@@ -252,7 +287,7 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
         const double diff = (2.0 * u(rng) - 1.0) * std::max(0.0, near - 0.01);
         consider(base, 0.5 * (sum + diff), 0.5 * (sum - diff));
     }
-    sort_and_keep_distinct(all, count);
+    sort_and_keep_distinct(all, count, options.distinct_distance);
     return all;
 }
 

@@ -16,6 +16,7 @@
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/verify/verifier.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/option_check.h>
 
 namespace modsynth::synth {
 namespace {
@@ -36,19 +37,20 @@ std::string join(const std::vector<std::string>& v, const char* sep) {
 // Points where the refinement constrains the arm: evenly spaced along each
 // primitive (critical points are added for the robot at hand).
 // The count per primitive is capped, and the spacing widened when the
-// whole path would need more than kTotal, so that the program stays small
-// on long paths (the counterexamples add points where they are needed).
-std::vector<nlp::PathPoint> spaced_points(const task::Task& task) {
-    constexpr double kSpacing = 0.025;
-    constexpr double kPerPrimitive = 200;
-    constexpr double kTotal = 20000;
+// whole path would need more than options.max_points, so that the program
+// stays small on long paths (the counterexamples add points where they are
+// needed).
+std::vector<nlp::PathPoint> spaced_points(const task::Task& task, const SynthesisOptions& options) {
     double total = 0.0;
     for (const auto& p : task.trajectory) total += geometry::length(p);
-    const double spacing = std::max(kSpacing, total / kTotal);
+    const double spacing =
+        std::max(options.point_spacing, total / static_cast<double>(options.max_points));
     std::vector<nlp::PathPoint> pts;
     for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
         const double len = geometry::length(task.trajectory[j]);
-        const int n = static_cast<int>(std::clamp(std::ceil(len / spacing), 4.0, kPerPrimitive));
+        const int n = static_cast<int>(std::clamp(
+            std::ceil(len / spacing), static_cast<double>(options.min_points_per_primitive),
+            static_cast<double>(options.max_points_per_primitive)));
         for (int i = 0; i <= n; ++i) pts.push_back({j, len * i / n});
     }
     return pts;
@@ -102,7 +104,7 @@ public:
         // the verifier certifies whatever steps the motion takes.
         double total = 0.0;
         for (const auto& p : task.trajectory) total += geometry::length(p);
-        motion_.max_ee_step = std::max(motion_.max_ee_step, total / kTraceSamples);
+        motion_.max_ee_step = std::max(motion_.max_ee_step, total / opt_.trace_samples);
     }
 
     Solution run();
@@ -113,14 +115,15 @@ private:
         stage_ = line;
         if (opt_.progress) opt_.progress(text::format("[%7.3fs] ", seconds_since(start_)) + line);
     }
-    bool try_skeleton(const smt::Skeleton& skeleton, Solution& out, int guesses = 4);
+    bool try_skeleton(const smt::Skeleton& skeleton, Solution& out, int guesses);
     void shorten(const smt::Skeleton& found, Solution& out);
     bool refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
                 nlp::SweptVolume swept, Solution& out);
     bool finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, Solution& out);
-
-    // Trace samples the path gets at the default step when it is long.
-    static constexpr double kTraceSamples = 250000;
+    // Three joints: more proximal poses in every transition, up to the cap.
+    void deepen_transitions(nlp::ArmProblem& problem) const {
+        if (problem.transition_depth < opt_.max_transition_depth) ++problem.transition_depth;
+    }
 
     const task::Task& task_;
     const SynthesisOptions& opt_;
@@ -143,13 +146,14 @@ Solution Search::run() {
             break;
         }
         const auto t0 = Clock::now();
-        smt::FrontStageOptions fo;
-        fo.time_limit = std::min(10.0, std::max(0.1, remaining()));
-        fo.seed = opt_.seed;
+        smt::FrontStageOptions fo = opt_.front;
+        fo.time_limit = std::min(opt_.front.time_limit, std::max(0.1, remaining()));
         // Tearing down a large encoding takes time too: the front stage
         // stops a little before the run must end.
-        fo.deadline = deadline_ - std::chrono::duration_cast<Clock::duration>(
-                                      std::chrono::duration<double>(std::min(0.3, 0.1 * opt_.time_limit)));
+        fo.deadline =
+            deadline_ -
+            std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                std::min(opt_.front_reserve_seconds, opt_.front_reserve_share * opt_.time_limit)));
         say(std::to_string(dof) + " joints: front stage");
         smt::FrontStage front(task_, dof, fo);
         auto result = front.check();
@@ -177,7 +181,7 @@ Solution Search::run() {
             ++stats_.skeletons;
             say(text::format("%d joints: skeleton %d (elbow %+d, base region %d)", dof, skeletons, sk.elbow,
                              sk.base_region));
-            if (try_skeleton(sk, out)) {
+            if (try_skeleton(sk, out, opt_.guesses_per_skeleton)) {
                 shorten(sk, out);
                 return out;
             }
@@ -194,7 +198,8 @@ Solution Search::run() {
     if (all_unsat && !cores.empty()) {
         const auto t0 = Clock::now();
         out.status = Status::Infeasible;
-        out.explanation.core = common_core(task_, cores, std::max(0.1, std::min(5.0, remaining())));
+        out.explanation.core = common_core(
+            task_, cores, std::max(0.1, std::min(opt_.explanation_seconds, remaining())));
         out.explanation.message = "Proved infeasible: " + describe_conflict(task_, out.explanation.core);
         stats_.front_seconds += seconds_since(t0);
         return out;
@@ -228,7 +233,7 @@ void Search::shorten(const smt::Skeleton& found, Solution& out) {
             say(text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof, elbow, region));
             Solution candidate;
             candidate.task_name = out.task_name;
-            if (try_skeleton(variant, candidate, 1) &&
+            if (try_skeleton(variant, candidate, opt_.guesses_per_variant) &&
                 candidate.robot.total_length() < out.robot.total_length() - 1e-6) {
                 say(text::format("    shorter: total length %.4f m", candidate.robot.total_length()));
                 out = std::move(candidate);
@@ -238,7 +243,8 @@ void Search::shorten(const smt::Skeleton& found, Solution& out) {
 }
 
 bool Search::try_skeleton(const smt::Skeleton& skeleton, Solution& out, int count) {
-    const auto guesses = initial_guesses(task_, skeleton, count, opt_.seed, deadline_);
+    const auto guesses =
+        initial_guesses(task_, skeleton, count, opt_.seed, deadline_, opt_.guesses);
     for (const auto& g : guesses) {
         if (remaining() <= 0.0) return false;
         say(text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(), g.robot.base.y(),
@@ -258,22 +264,21 @@ bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& star
                     nlp::SweptVolume swept, Solution& out) {
     const char* name = swept == nlp::SweptVolume::Over ? "SV-over" : "sampled";
     nlp::ArmProblem problem;
-    problem.transition_depth = 3;
     problem.task = &task_;
     problem.skeleton = skeleton;
     problem.start = start;
     problem.swept = swept;
-    problem.points = spaced_points(task_);
+    problem.points = spaced_points(task_, opt_);
     add_critical_points(task_, start, problem.points);
-    constexpr int kRounds = 12;
-    for (int round = 0; round < kRounds && remaining() > 0.0; ++round) {
+    for (int round = 0; round < opt_.refinement_rounds && remaining() > 0.0; ++round) {
         const auto t0 = Clock::now();
         const nlp::Formulation f = nlp::formulate(problem);
         nlp::SolverOptions so;
         // A refinement that needs more than this is better restarted from
         // another initial guess than waited for.
-        so.time_limit = std::min(round == 0 ? 3.0 : 1.5, std::max(0.05, remaining()));
-        so.max_iterations = round == 0 ? 200 : 100;
+        so.time_limit = std::min(round == 0 ? opt_.first_solve_seconds : opt_.later_solve_seconds,
+                                 std::max(0.05, remaining()));
+        so.max_iterations = round == 0 ? opt_.first_solve_iterations : opt_.later_solve_iterations;
         const nlp::SolverResult res = nlp::minimize(f.program, so);
         stats_.refine_seconds += seconds_since(t0);
         ++stats_.nlp_solves;
@@ -303,7 +308,6 @@ bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& star
 // problem for the next refinement (counterexample-guided): the offending
 // points of a trace, or finer transitions.
 bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, Solution& out) {
-    constexpr int kMaxTransitionDepth = 4;
     std::vector<nlp::PathPoint>& points = problem.points;
     const auto t0 = Clock::now();
     control::MotionFailure failure;
@@ -316,7 +320,7 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
     if (!motion) {
         say("    out of reach at " + failure.message);
         if (failure.transition) {
-            problem.transition_depth = std::min(kMaxTransitionDepth, problem.transition_depth + 1);
+            deepen_transitions(problem);
         } else {
             add_point(points, failure.primitive, failure.s);
         }
@@ -324,11 +328,10 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
         stats_.verify_seconds += seconds_since(t0);
         return false;
     }
-    verify::VerifyOptions vo;
-    vo.max_joint_step = motion_.max_joint_step;
-    vo.max_ee_step = std::max(vo.max_ee_step, motion_.max_ee_step);
+    const verify::VerifyOptions vo = verify::options_for(motion_, opt_.verify);
     verify::Certificate cert = verify::certify(task_, robot, *motion, vo);
-    for (int pass = 0; pass < 8 && cert.violations.empty() && !cert.coarse_pairs.empty() && remaining() > 0.0;
+    for (int pass = 0; pass < opt_.motion_refinement_passes && cert.violations.empty() &&
+                       !cert.coarse_pairs.empty() && remaining() > 0.0;
          ++pass) {
         if (!control::refine_motion(task_, robot, *motion, cert.coarse_pairs)) break;
         cert = verify::certify(task_, robot, *motion, vo);
@@ -350,12 +353,12 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
     for (const auto& v : cert.violations) {
         if (v.primitive < 0) continue;
         if (v.transition) {
-            problem.transition_depth = std::min(kMaxTransitionDepth, problem.transition_depth + 1);
+            deepen_transitions(problem);
             continue;
         }
         if (!seen.insert({v.primitive, std::lround(v.s * 1e3)}).second) continue;
         add_point(points, v.primitive, v.s);
-        if (++added >= 24) break;
+        if (++added >= opt_.counterexamples_per_round) break;
     }
     if (!cert.violations.empty())
         say("    verification: " + std::to_string(cert.violations.size()) + " violation(s), first: " +
@@ -366,7 +369,36 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
 
 }  // namespace
 
+bool SynthesisOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("SynthesisOptions", error)
+        .at_least("time_limit", time_limit, 0.0)
+        .nested("motion", motion)
+        .nested("front", front)
+        .nested("verify", verify)
+        .nested("guesses", guesses)
+        .greater("point_spacing", point_spacing, 0.0)
+        .at_least("min_points_per_primitive", min_points_per_primitive, 1)
+        .at_least("max_points_per_primitive", max_points_per_primitive, min_points_per_primitive)
+        .at_least("max_points", max_points, 1)
+        .greater("trace_samples", trace_samples, 0.0)
+        .at_least("guesses_per_skeleton", guesses_per_skeleton, 1)
+        .at_least("guesses_per_variant", guesses_per_variant, 0)
+        .at_least("refinement_rounds", refinement_rounds, 1)
+        .greater("first_solve_seconds", first_solve_seconds, 0.0)
+        .greater("later_solve_seconds", later_solve_seconds, 0.0)
+        .at_least("first_solve_iterations", first_solve_iterations, 1)
+        .at_least("later_solve_iterations", later_solve_iterations, 1)
+        .within("max_transition_depth", max_transition_depth, 0, 10)
+        .at_least("motion_refinement_passes", motion_refinement_passes, 0)
+        .at_least("counterexamples_per_round", counterexamples_per_round, 1)
+        .at_least("front_reserve_seconds", front_reserve_seconds, 0.0)
+        .within("front_reserve_share", front_reserve_share, 0.0, 1.0)
+        .greater("explanation_seconds", explanation_seconds, 0.0)
+        .ok();
+}
+
 Solution synthesize(const task::Task& task, const SynthesisOptions& options, SynthesisStats* stats) {
+    text::require_valid(options);
     SynthesisStats local;
     Search search(task, options, stats ? *stats : local);
     return search.run();

@@ -10,6 +10,7 @@
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/option_check.h>
 
 namespace modsynth::verify {
 namespace {
@@ -286,8 +287,24 @@ private:
 
 }  // namespace
 
+bool VerifyOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("VerifyOptions", error)
+        .greater("deviation_tolerance", deviation_tolerance, 0.0)
+        .greater("max_joint_step", max_joint_step, 0.0)
+        .greater("max_ee_step", max_ee_step, 0.0)
+        .ok();
+}
+
+VerifyOptions options_for(const control::MotionOptions& motion, const VerifyOptions& base) {
+    VerifyOptions o = base;
+    o.max_joint_step = motion.max_joint_step;
+    o.max_ee_step = std::max(base.max_ee_step, motion.max_ee_step);
+    return o;
+}
+
 Certificate certify(const task::Task& task, const kinematics::Robot& robot,
                     const std::vector<control::Sample>& samples, const VerifyOptions& options) {
+    text::require_valid(options);
     return Checker(task, robot, samples, options).run();
 }
 

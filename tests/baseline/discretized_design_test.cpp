@@ -8,6 +8,7 @@
 #include <modsynth/kinematics/pose_clearance.h>
 #include <modsynth/io/task_io.h>
 
+#include "../support/derivative_check.h"
 #include "../support/fixtures.h"
 
 using namespace modsynth;
@@ -87,4 +88,31 @@ TEST_CASE("no discretized design when the points are out of reach", "[baseline]"
     CHECK_FALSE(d.found);
     CHECK(d.message.find("5 points") != std::string::npos);
     CHECK(d.nlp_solves > 0);
+}
+
+TEST_CASE("discretized design derivatives agree with finite differences", "[baseline][nlp]") {
+    // Every constraint kind of the design (links, elbow sides, clearance,
+    // EE to lower links) and the smoothness term, for each joint count,
+    // with and without a base region, on both elbow sides.
+    const task::Task rose = io::load_task(testing::source_path("tasks/rose.json"));
+    REQUIRE_FALSE(rose.obstacles.empty());
+    const auto points = baseline::equidistant_points(rose, 8);
+    const baseline::DesignOptions options;
+    for (const auto& [dof, elbows] : std::vector<std::pair<int, std::vector<int>>>{
+             {2, {1}}, {2, {-1}}, {3, {1, -1}}, {3, {-1, -1}}}) {
+        for (int region : {-1, 0}) {
+            const nlp::QuadraticProgram qp =
+                baseline::design_program(rose, points, dof, region, elbows, options);
+            INFO(dof << " joints, region " << region << ", last elbow " << elbows.back());
+            REQUIRE(qp.num_constraints() > static_cast<int>(points.size() * rose.obstacles.size()));
+            testing::check_derivatives(qp, 3);
+            testing::check_derivatives(qp, 17);
+        }
+    }
+}
+
+TEST_CASE("a design program needs one elbow sign per link pair", "[baseline]") {
+    const task::Task t = testing::line_task();
+    const auto points = baseline::equidistant_points(t, 3);
+    CHECK_THROWS_AS(baseline::design_program(t, points, 3, -1, {1}, {}), std::invalid_argument);
 }

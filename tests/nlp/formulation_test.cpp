@@ -7,9 +7,11 @@
 #include <modsynth/nlp/solver.h>
 #include <modsynth/io/task_io.h>
 
+#include "../support/derivative_check.h"
 #include "../support/fixtures.h"
 
 using namespace modsynth;
+using testing::check_derivatives;
 
 namespace {
 
@@ -29,65 +31,6 @@ nlp::ArmProblem rose_problem(nlp::SweptVolume swept) {
     for (int j = 0; j < static_cast<int>(rose.trajectory.size()); ++j)
         for (double s : {0.0, 0.03, 0.07}) p.points.push_back({j, s});
     return p;
-}
-
-// Central differences of the constraints and the Lagrangian's gradient
-// against the exact Jacobian and Hessian, at a random point.
-void check_derivatives(const nlp::QuadraticProgram& qp, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    const int n = qp.num_variables(), m = qp.num_constraints();
-    std::vector<double> x(n), lambda(m);
-    for (int i = 0; i < n; ++i) x[i] = qp.start()[i] + 0.1 * u(rng);
-    for (int k = 0; k < m; ++k) lambda[k] = u(rng);
-    const double sigma = 0.7, h = 1e-6;
-
-    const auto& js = qp.jacobian_structure();
-    std::vector<double> jac(js.size());
-    qp.eval_jacobian(x.data(), jac.data());
-    std::vector<std::vector<double>> dense_jac(m, std::vector<double>(n, 0.0));
-    for (std::size_t e = 0; e < js.size(); ++e) dense_jac[js[e].row][js[e].col] += jac[e];
-
-    const auto& hs = qp.hessian_structure();
-    std::vector<double> hess(hs.size());
-    qp.eval_hessian(sigma, lambda.data(), hess.data());
-    std::vector<std::vector<double>> dense_hess(n, std::vector<double>(n, 0.0));
-    for (std::size_t e = 0; e < hs.size(); ++e) {
-        dense_hess[hs[e].row][hs[e].col] += hess[e];
-        if (hs[e].row != hs[e].col) dense_hess[hs[e].col][hs[e].row] += hess[e];
-    }
-
-    // Gradient of the Lagrangian sigma f + lambda . g, for the Hessian check.
-    auto lagrangian_gradient = [&](const std::vector<double>& at) {
-        std::vector<double> g(n, 0.0), grad(n), jv(js.size());
-        qp.eval_gradient(at.data(), grad.data());
-        qp.eval_jacobian(at.data(), jv.data());
-        for (int i = 0; i < n; ++i) g[i] = sigma * grad[i];
-        for (std::size_t e = 0; e < js.size(); ++e) g[js[e].col] += lambda[js[e].row] * jv[e];
-        return g;
-    };
-
-    std::vector<double> gp(m), gm(m), grad(n);
-    qp.eval_gradient(x.data(), grad.data());
-    double worst_jac = 0.0, worst_hess = 0.0, worst_grad = 0.0;
-    for (int i = 0; i < n; ++i) {
-        std::vector<double> xp = x, xm = x;
-        xp[i] += h;
-        xm[i] -= h;
-        qp.eval_constraints(xp.data(), gp.data());
-        qp.eval_constraints(xm.data(), gm.data());
-        for (int k = 0; k < m; ++k)
-            worst_jac = std::max(worst_jac, std::abs((gp[k] - gm[k]) / (2 * h) - dense_jac[k][i]));
-        worst_grad = std::max(worst_grad, std::abs((qp.eval_objective(xp.data()) - qp.eval_objective(xm.data())) /
-                                                       (2 * h) -
-                                                   grad[i]));
-        const auto lp = lagrangian_gradient(xp), lm = lagrangian_gradient(xm);
-        for (int r = 0; r < n; ++r)
-            worst_hess = std::max(worst_hess, std::abs((lp[r] - lm[r]) / (2 * h) - dense_hess[r][i]));
-    }
-    CHECK(worst_grad < 1e-6);
-    CHECK(worst_jac < 1e-6);
-    CHECK(worst_hess < 1e-6);
 }
 
 }  // namespace
@@ -149,4 +92,69 @@ TEST_CASE("refinement of the rose finds a shorter robot that keeps its constrain
     CHECK(robot.total_length() < 1.03);
     CHECK(robot.base.x() >= -0.05 - 1e-9);
     CHECK(robot.base.x() <= 0.10 + 1e-9);
+}
+
+TEST_CASE("three-joint refinement derivatives agree with finite differences", "[nlp]") {
+    // Proximal poses, transitions bisected to the default depth and the EE
+    // kept from link 1: the constraint kinds only three joints have.
+    nlp::ArmProblem p = rose_problem(nlp::SweptVolume::Sampled);
+    p.skeleton.dof = 3;
+    p.start.link_lengths = {0.2, 0.35, 0.3};
+    for (int j = 0; j < static_cast<int>(p.task->trajectory.size()); ++j)
+        p.start.proximal_angles.push_back(0.3 + 0.05 * j);
+    p.points.clear();
+    for (int j = 0; j < static_cast<int>(p.task->trajectory.size()); j += 4)
+        p.points.push_back({j, 0.02});
+    const nlp::Formulation f = nlp::formulate(p);
+    CHECK(f.proximal.size() == p.task->trajectory.size());
+    int bisectors = 0;
+    for (int k = 0; k < f.program.num_constraints(); ++k)
+        bisectors += f.program.constraint_label(k).rfind("bisector", 0) == 0;
+    // Two per pose, 2^3 - 1 poses per transition.
+    CHECK(bisectors == 2 * 7 * static_cast<int>(p.task->trajectory.size() - 1));
+    check_derivatives(f.program, 5);
+}
+
+TEST_CASE("a failed refinement names the constraints that stay violated", "[nlp]") {
+    // An obstacle sits on the path itself: the EE must be there, so the
+    // last link cannot keep its clearance at that point, whatever Ipopt does.
+    static task::Task blocked = io::load_task(testing::source_path("tasks/rose.json"));
+    const geometry::Vec2 on_path = geometry::point_at(blocked.trajectory[3], 0.02);
+    blocked.obstacles.push_back({on_path, 0.01});
+    const int obstacle = static_cast<int>(blocked.obstacles.size()) - 1;
+    nlp::ArmProblem p = rose_problem(nlp::SweptVolume::Sampled);
+    p.task = &blocked;
+    p.points = {{3, 0.02}};
+    const nlp::Formulation f = nlp::formulate(p);
+    const nlp::SolverResult r = nlp::minimize(f.program, {});
+    REQUIRE_FALSE(r.usable());
+    INFO(r.message);
+    CHECK(r.message.rfind("Ipopt status ", 0) == 0);
+    const std::string expected = "clearance of link 2 to obstacles[" + std::to_string(obstacle) +
+                                 "], trajectory[3] at 0.020000 m";
+    CHECK(r.message.find("at the last iterate " + expected + " is violated by ") !=
+          std::string::npos);
+    // The worst violation is reported first, and it is a real one.
+    const auto violated = f.program.violated(r.x.data(), 1e-9);
+    REQUIRE_FALSE(violated.empty());
+    CHECK(f.program.constraint_label(violated.front().constraint) == expected);
+    CHECK(violated.front().amount > 1e-3);
+}
+
+TEST_CASE("violated constraints come worst first, ties in program order", "[nlp]") {
+    nlp::QuadraticProgram qp;
+    const int x = qp.add_variable(-10.0, 10.0, 0.0, "x");
+    qp.add_constraint(nlp::Quadratic{}.add(x, 1.0), 1.0, nlp::kInfinity, "x >= 1");
+    qp.add_constraint(nlp::Quadratic{}.add(x, 1.0), 3.0, nlp::kInfinity, "x >= 3");
+    qp.add_constraint(nlp::Quadratic{}.add(x, 1.0), -nlp::kInfinity, 5.0, "x <= 5");
+    qp.add_constraint(nlp::Quadratic{}.add(x, -1.0), -nlp::kInfinity, -1.0, "-x <= -1");
+    qp.finalize();
+    const double at = 0.0;
+    const auto v = qp.violated(&at, 1e-9);
+    REQUIRE(v.size() == 3);
+    CHECK(qp.constraint_label(v[0].constraint) == "x >= 3");
+    CHECK(v[0].amount == 3.0);
+    CHECK(qp.constraint_label(v[1].constraint) == "x >= 1");
+    CHECK(qp.constraint_label(v[2].constraint) == "-x <= -1");
+    CHECK(qp.violated(&at, 5.0).empty());
 }

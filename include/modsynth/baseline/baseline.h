@@ -14,13 +14,21 @@
 namespace modsynth::baseline {
 
 struct BaselineOptions {
+    /// Equidistant points of the path the design sees (the paper's N):
+    /// 25 is the paper's comparison setting.
     int points = 25;
     double time_limit = 120.0;  ///< seconds, wall clock, design and planning together
+    /// Share of time_limit the design may use at most: a design that used
+    /// the whole budget would leave RRT nothing.
+    double design_share = 0.8;
     DesignOptions design;
     PlannerOptions planner;
     FidelityOptions fidelity;
     /// Called with one line per stage (may be empty).
     std::function<void(const std::string&)> progress;
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
 };
 
 struct BaselineResult {
@@ -43,7 +51,8 @@ struct BaselineResult {
 
 const char* to_string(BaselineResult::Status status);
 
-/// Throws std::invalid_argument for fewer than 2 points.
+/// Throws std::invalid_argument when the options are not valid (fewer than
+/// 2 points among them).
 BaselineResult run_baseline(const task::Task& task, const BaselineOptions& options);
 
 }  // namespace modsynth::baseline

@@ -13,6 +13,7 @@
 
 #include <modsynth/geometry/vec.h>
 #include <modsynth/kinematics/robot.h>
+#include <modsynth/nlp/solver.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::baseline {
@@ -32,8 +33,29 @@ struct DesignOptions {
     /// Weight (1/m) of the squared distance each joint moves between
     /// consecutive poses, beside the total length (weight 1).
     double smoothness_weight = 1.0;
-    double clearance_margin = 0.003;  ///< m beyond radius + diameter/2 at each point
-    double self_margin = 0.002;       ///< m beyond the diameter, EE to lower links
+    /// m beyond radius + diameter/2 at each point, and m beyond the
+    /// diameter from the EE to the lower links: the refinement's own
+    /// margins (nlp::Margins), so both methods are held to the same rule.
+    double clearance_margin = 0.003;
+    double self_margin = 0.002;
+    /// The initial links are this share of the farthest point's distance
+    /// from the initial base, each (two joints: together just over the
+    /// reach; three: enough to fold the proximal link aside).
+    double start_reach_share_two = 0.55;
+    double start_reach_share_three = 0.4;
+    /// rad: three joints start with link 1 turned this far off the line to
+    /// each point, towards the side of its elbow, so the start is not the
+    /// singular straight pose.
+    double start_turn = 0.4;
+    /// Largest constraint violation (m, m^2) a solution Ipopt calls usable
+    /// may keep to count as a design.
+    double feasibility_tolerance = 1e-6;
+    /// Ipopt's options for every start; its time_limit is replaced by what
+    /// is left of the design's own.
+    nlp::SolverOptions solver;
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
 };
 
 struct PointDesign {
@@ -47,8 +69,17 @@ struct PointDesign {
     std::string message;  ///< what was tried when nothing was found
 };
 
+/// The program design_for_points() minimises from one start: `dof` joints,
+/// the base in base region `region` (-1: anywhere) and `elbows` the side of
+/// each consecutive link pair (dof - 1 signs). Exposed so that its
+/// derivatives can be checked like the refinement's.
+nlp::QuadraticProgram design_program(const task::Task& task, const std::vector<PathSample>& points,
+                                     int dof, int region, const std::vector<int>& elbows,
+                                     const DesignOptions& options);
+
 /// Tries the allowed joint counts fewest first; for each, every base region
-/// and every elbow pattern, keeping the shortest robot found.
+/// and every elbow pattern, keeping the shortest robot found. Throws
+/// std::invalid_argument when the options are not valid.
 PointDesign design_for_points(const task::Task& task, const std::vector<PathSample>& points,
                               const DesignOptions& options);
 

@@ -18,6 +18,9 @@ struct FidelityOptions {
     /// Three joints: first-joint angles tried per path sample when asking
     /// whether the arm can reach it at all.
     int proximal_steps = 720;
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
 };
 
 struct Fidelity {
@@ -39,7 +42,8 @@ struct Fidelity {
     bool whole_path_reachable() const { return outside_points.empty(); }
 };
 
-/// `waypoints`: joint vectors the robot moves linearly between.
+/// `waypoints`: joint vectors the robot moves linearly between. Throws
+/// std::invalid_argument when the options are not valid.
 Fidelity measure_fidelity(const task::Task& task, const kinematics::Robot& robot,
                           const std::vector<std::vector<double>>& waypoints,
                           const FidelityOptions& options = {});

@@ -22,6 +22,9 @@ struct PlannerOptions {
     int max_iterations = 20000;  ///< per pair of poses
     double time_limit = 60.0;    ///< seconds, wall clock, for the whole motion
     bool shortcut = true;
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
 };
 
 struct PlannedMotion {
@@ -35,6 +38,7 @@ struct PlannedMotion {
 };
 
 /// Plans through `poses` in order (each a valid joint vector of `robot`).
+/// Throws std::invalid_argument when the options are not valid.
 PlannedMotion plan_rrt(const task::Task& task, const kinematics::Robot& robot,
                        const std::vector<std::vector<double>>& poses, const PlannerOptions& options);
 

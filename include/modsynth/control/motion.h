@@ -25,14 +25,38 @@ struct Sample {
 };
 
 struct MotionOptions {
-    double max_joint_step = 0.01;  ///< rad between consecutive samples
-    double max_ee_step = 0.002;    ///< m of path between consecutive trace samples
-    double ee_speed = 0.05;        ///< m/s along the path
+    /// rad between consecutive samples, for every joint. formats.md
+    /// promises at most 0.01 rad, and the verifier's second-order bounds
+    /// (notes/certified-verification.md) need only about 0.5 mm of spare
+    /// clearance at this step on a 0.7 m arm.
+    double max_joint_step = 0.01;
+    /// m of path between consecutive trace samples: the step the planner
+    /// walks the path with. It must not exceed the verifier's limit on
+    /// progress between trace samples (VerifyOptions::max_ee_step, 5 mm,
+    /// see verify::options_for()), and it is finer than that limit because
+    /// the EE deviation bound between two samples grows with the square of
+    /// the step: 2 mm keeps it orders of magnitude below formats.md's 1 mm
+    /// deviation tolerance on the shipped tasks, where 5 mm would make the
+    /// verifier split many more pairs.
+    double max_ee_step = 0.002;
+    double ee_speed = 0.05;        ///< m/s along the path (formats.md "samples" t)
     double joint_speed = 1.0;      ///< rad/s, the limit of every joint
     /// Planning gives up past this many samples (memory stays bounded on
     /// long paths and short links) or past the deadline.
     std::size_t max_samples = 1'000'000;
+    /// Tries to find a step short enough for every joint before a point
+    /// counts as out of reach; each try shortens the step by at least 10 %
+    /// (down to 1e-10 of the parameter), so 60 reach any joint step that a
+    /// reachable point allows.
+    int step_attempts = 60;
+    /// assign_times() rounds every t to 1 / ticks_per_second s: microseconds
+    /// keep the files readable, and rounding is monotone, so t stays
+    /// non-decreasing.
+    double ticks_per_second = 1e6;
     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
 };
 
 /// The configuration that puts the EE at arc length s of primitive j, on the
@@ -67,6 +91,7 @@ struct MotionFailure {
 };
 
 /// std::nullopt (with `failure` saying where) when some point is out of reach.
+/// Throws std::invalid_argument when the options are not valid.
 std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                                                const kinematics::Robot& robot,
                                                const MotionOptions& options,
@@ -87,7 +112,8 @@ void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
                         std::vector<Sample>& samples);
 
 /// Sets t: each step takes the longer of path length / ee_speed and
-/// largest joint change / joint_speed.
+/// largest joint change / joint_speed. Throws std::invalid_argument when the
+/// options are not valid.
 void assign_times(std::vector<Sample>& samples, const MotionOptions& options);
 
 }  // namespace modsynth::control

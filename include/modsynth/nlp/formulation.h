@@ -48,7 +48,10 @@ struct ArmProblem {
     /// initial guess are left out (the verification adds them back if needed).
     double horizon = 0.10;
     /// Three joints: 2^depth - 1 proximal poses inside each transition.
-    int transition_depth = 2;
+    /// Seven poses (depth 3) keep the sweeps of the shipped tasks within
+    /// reach between poses; synth raises the depth when planning or
+    /// verifying a transition fails (SynthesisOptions::max_transition_depth).
+    int transition_depth = 3;
 };
 
 struct Formulation {

@@ -71,7 +71,16 @@ public:
     /// Largest violation of constraints and bounds at x.
     double infeasibility(const double* x) const;
 
+    struct Violated {
+        int constraint = -1;
+        double amount = 0.0;  ///< how far outside its bounds, in its own units
+    };
+    /// The constraints violated at x by more than `tolerance`, worst first.
+    std::vector<Violated> violated(const double* x, double tolerance) const;
+
 private:
+    double constraint_violation(int m, const double* x) const;
+
     std::vector<double> lower_, upper_, start_;
     std::vector<std::string> names_;
     std::vector<Quadratic> constraints_;

@@ -9,11 +9,31 @@
 namespace modsynth::nlp {
 
 struct SolverOptions {
-    double time_limit = 10.0;  ///< seconds of CPU time
+    /// Seconds of CPU time (Ipopt's max_cpu_time); callers shorten it to
+    /// what is left of their own budget.
+    double time_limit = 10.0;
+    /// Ipopt iterations; the refinement converges in tens on every task
+    /// shipped, so 500 only stops a run that is going nowhere.
     int max_iterations = 500;
+    /// Ipopt's tol: relative optimality error at which it stops (scaled
+    /// like lengths in m, so 1e-8 is far below a task's tolerances).
     double tolerance = 1e-8;
+    /// Ipopt's constr_viol_tol, m or m^2: every constraint here is a
+    /// length or a product of lengths, and the verifier adds the margins.
     double constraint_tolerance = 1e-9;
+    /// Ipopt's acceptable_tol and acceptable_constr_viol_tol: a point this
+    /// good that Ipopt cannot improve for some iterations is accepted as a
+    /// solution (the verifier decides whether it is good enough).
+    double acceptable_tolerance = 1e-5;
+    double acceptable_constraint_tolerance = 1e-7;
+    /// Ipopt's print_level, 0 (silent) to 12.
     int print_level = 0;
+    /// On failure, how many of the most violated constraints (at the last
+    /// iterate) SolverResult::message names.
+    int reported_violations = 3;
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
 };
 
 struct SolverResult {
@@ -26,6 +46,9 @@ struct SolverResult {
     bool usable() const { return status == Status::Optimal || status == Status::Acceptable; }
 };
 
+/// Throws std::invalid_argument when the options are not valid. When no
+/// usable point is found, the message gives Ipopt's status and the
+/// constraints worst violated at its last iterate, by label.
 SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options);
 
 }  // namespace modsynth::nlp

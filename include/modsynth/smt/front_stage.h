@@ -16,21 +16,47 @@
 namespace modsynth::smt {
 
 struct FrontStageOptions {
-    double time_limit = 10.0;  ///< seconds per check
-    /// Seconds for the refined level of a check (see front_stage.cpp).
+    /// Seconds of Z3 time per check of the reach-only relaxation, which
+    /// nlsat decides in milliseconds on every task shipped: 10 s leaves room
+    /// for hard cases while a run still tries every joint count in a minute.
+    double time_limit = 10.0;
+    /// Seconds for the refined level of a check (inner radius, exact
+    /// critical points), which can take nlsat seconds even when switched
+    /// off: past 2 s the coarse model is used instead.
     double refined_time_limit = 2.0;
+    /// Intervals sampled along each primitive for the reach atoms. More
+    /// samples tighten the relaxation (every one is sound); 8 catch the
+    /// far side of every arc of the shipped tasks.
     int samples_per_primitive = 8;
-    unsigned seed = 0;
+    /// Sampled points over the whole path: a long path gets fewer per
+    /// primitive (never fewer than its ends), which keeps the encoding, and
+    /// the time Z3 takes to build and tear it down, within a time limit.
+    int encoded_points = 4000;
+    /// Up to this many primitives every pair gets its span constraint;
+    /// beyond, each primitive gets the span to its farthest partner only,
+    /// which keeps the encoding linear in the path.
+    int all_span_pairs = 64;
+    /// Convex-hull vertices searched for farthest partners: any sampled
+    /// point gives a sound span, so a subsample bounds the work.
+    int hull_probe = 256;
+    /// m (m^2 for squared atoms): every constraint is loosened by this much
+    /// so that the decimal rounding of task numbers never makes the
+    /// relaxation unsound; far below any length a task states.
+    double slack = 1e-7;
     /// No work past this instant: encoding stops (the check then answers
     /// Unknown), every check's timeout ends here, and core minimisation
     /// returns the core it has.
     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
 };
 
 class FrontStage {
 public:
     enum class Result { Sat, Unsat, Unknown };
 
+    /// Throws std::invalid_argument when the options are not valid.
     FrontStage(const task::Task& task, int dof, const FrontStageOptions& options = {});
     ~FrontStage();
     FrontStage(const FrontStage&) = delete;

@@ -3,6 +3,7 @@
 // over 2-joint robots on one skeleton (elbow sign and base region) that
 // scores each candidate by its worst margin at points along the path.
 #include <chrono>
+#include <string>
 #include <vector>
 
 #include <modsynth/kinematics/robot.h>
@@ -18,14 +19,54 @@ struct ScoredRobot {
     double margin = 0.0;
 };
 
-/// The margin of a robot at points every `spacing` m of the path.
-double path_margin(const task::Task& task, const kinematics::Robot& robot, double spacing);
+struct InitialGuessOptions {
+    /// m between the path points every candidate is scored at: finer than
+    /// the refinement's 25 mm, so a guess clear at these points is seldom
+    /// far from clear between the refinement's.
+    double scoring_spacing = 0.02;
+    /// Scoring points per primitive, at most, and over the whole path
+    /// (past this the spacing widens): the guesses need the path's shape,
+    /// and their work must not grow with its absolute size.
+    int max_points_per_primitive = 200;
+    int max_points = 20000;
+    /// Random candidates per skeleton. Two joints are scored pose by pose
+    /// (600 take milliseconds on the shipped tasks); three joints also
+    /// choose a proximal angle per primitive, which costs far more each.
+    int candidates_two = 600;
+    int candidates_three = 120;
+    /// Three joints: first-joint angles tried per primitive (16: every
+    /// 22.5 degrees), and the rad between poses checked in a sweep from one
+    /// to the next.
+    int proximal_angles = 16;
+    double sweep_step = 0.2;
+    /// Three joints: m between the points of a primitive each proximal
+    /// angle is scored at, and at most this many points a primitive (the
+    /// span computed from them is quadratic in the count).
+    double proximal_spacing = 0.03;
+    int max_proximal_points = 64;
+    /// m: a proximal angle whose margin falls below minus this at some
+    /// point is hopeless, and its scoring stops there.
+    double hopeless_margin = 0.05;
+    /// m: candidates whose bases and every link length differ by less than
+    /// this count as one start (a second start near the first adds little).
+    double distinct_distance = 0.02;
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
+};
+
+/// The margin of a robot at points every `spacing` m of the path (at most
+/// as many as `options` allow).
+double path_margin(const task::Task& task, const kinematics::Robot& robot, double spacing,
+                   const InitialGuessOptions& options = {});
 
 /// Up to `count` distinct candidates, best first: clear ones by shorter
 /// total length, the others by larger margin. Candidates stop at the
-/// deadline (those scored by then are kept).
+/// deadline (those scored by then are kept). Throws std::invalid_argument
+/// when the options are not valid.
 std::vector<ScoredRobot> initial_guesses(
     const task::Task& task, const smt::Skeleton& skeleton, int count, unsigned seed,
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max(),
+    const InitialGuessOptions& options = {});
 
 }  // namespace modsynth::synth

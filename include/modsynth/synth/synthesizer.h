@@ -5,8 +5,11 @@
 #include <string>
 
 #include <modsynth/control/motion.h>
+#include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/task/task.h>
+#include <modsynth/verify/verifier.h>
 
 namespace modsynth::synth {
 
@@ -14,8 +17,71 @@ struct SynthesisOptions {
     double time_limit = 60.0;  ///< seconds, wall clock, for the whole run
     unsigned seed = 0;         ///< varies the initial guesses deterministically
     control::MotionOptions motion;
+    /// The front stage's options. Its time_limit caps each check, which
+    /// the run shortens to what is left of its own time; its deadline is
+    /// set by the run.
+    smt::FrontStageOptions front;
+    /// What a motion must meet to be certified. The run checks each motion
+    /// against verify::options_for(motion, verify): the motion's own joint
+    /// step, and the EE progress limit widened to the planning step on long
+    /// paths.
+    verify::VerifyOptions verify;
+    /// How the initial guesses of the refinement are searched for.
+    InitialGuessOptions guesses;
+
+    /// m between the points where the refinement constrains the arm along
+    /// each primitive: 25 mm keeps a circle of the shipped tasks well
+    /// sampled, and counterexamples add points where 25 mm is not enough.
+    double point_spacing = 0.025;
+    /// Points per primitive, at least (a short line still gets its ends
+    /// and some interior) and at most (the program stays small).
+    int min_points_per_primitive = 4;
+    int max_points_per_primitive = 200;
+    /// Points over the whole path: past this the spacing widens, so the
+    /// program stays small on long paths.
+    int max_points = 20000;
+    /// Trace samples the motion gets over the whole path: past this the
+    /// planning step widens beyond motion.max_ee_step (memory and time stay
+    /// bounded on long paths; the verifier checks the wider steps).
+    double trace_samples = 250000;
+    /// Initial guesses tried per skeleton of the front stage, and per
+    /// variant (other elbow sign or base region) when shortening the first
+    /// certified robot: a fixed amount of work, so solutions stay repeatable.
+    int guesses_per_skeleton = 4;
+    int guesses_per_variant = 1;
+    /// Refinement rounds (solve, plan, verify, add counterexamples) per
+    /// initial guess before the next guess is tried.
+    int refinement_rounds = 12;
+    /// Ipopt's budget in the first round of a guess and in later rounds,
+    /// which start close to a solution: a refinement that needs more is
+    /// better restarted from another guess than waited for.
+    double first_solve_seconds = 3.0;
+    double later_solve_seconds = 1.5;
+    int first_solve_iterations = 200;
+    int later_solve_iterations = 100;
+    /// Three joints: proximal poses per transition in the refinement are
+    /// 2^depth - 1; a failed transition raises the depth from
+    /// nlp::ArmProblem::transition_depth up to this.
+    int max_transition_depth = 4;
+    /// Times the verifier's coarse sample pairs are split before a motion
+    /// is given up.
+    int motion_refinement_passes = 8;
+    /// Counterexample points added per round, at most (the program grows
+    /// by a bounded amount per round).
+    int counterexamples_per_round = 24;
+    /// Seconds the front stage stops before the run's deadline, at most,
+    /// and at most this share of the time limit: tearing down a large
+    /// encoding takes time too.
+    double front_reserve_seconds = 0.3;
+    double front_reserve_share = 0.1;
+    /// Seconds for finding the core common to every joint count once all
+    /// are proved infeasible, at most.
+    double explanation_seconds = 5.0;
     /// Called with one line per stage event (may be empty).
     std::function<void(const std::string&)> progress;
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
 };
 
 /// Statistics of one run, kept out of the solution so that solutions stay
@@ -29,6 +95,7 @@ struct SynthesisStats {
     int counterexamples = 0;
 };
 
+/// Throws std::invalid_argument when the options are not valid.
 Solution synthesize(const task::Task& task, const SynthesisOptions& options,
                     SynthesisStats* stats = nullptr);
 

@@ -39,11 +39,32 @@ struct Certificate {
 };
 
 struct VerifyOptions {
-    double deviation_tolerance = 1e-3;  ///< m, formats.md guarantee 1
-    double max_joint_step = 0.01;       ///< rad
-    double max_ee_step = 0.005;         ///< m of progress between trace samples
+    /// m: how far the EE may stray from the path anywhere along the
+    /// continuous motion (formats.md guarantee 1).
+    double deviation_tolerance = 1e-3;
+    /// rad: the largest change of one joint between consecutive samples
+    /// that formats.md allows (and certificate.max_joint_step reports).
+    double max_joint_step = 0.01;
+    /// m of progress along the path between consecutive trace samples
+    /// (docs/verification.md): at most 5 mm keeps any two samples on an arc
+    /// within half a turn of each other on arcs of radius above 1.6 mm,
+    /// which the pairwise bounds assume. This is the limit a motion must
+    /// meet, not the step it is planned with: the planner walks finer
+    /// (MotionOptions::max_ee_step, 2 mm) to keep the bounds tight, and a
+    /// motion planned coarser is checked against its own step (options_for).
+    double max_ee_step = 0.005;
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
 };
 
+/// The limits a motion planned with `motion` is certified against: the
+/// same joint step, and the EE progress limit widened to the planning step
+/// when that is coarser (synth plans long paths coarser, see
+/// SynthesisOptions::trace_samples).
+VerifyOptions options_for(const control::MotionOptions& motion, const VerifyOptions& base = {});
+
+/// Throws std::invalid_argument when the options are not valid.
 Certificate certify(const task::Task& task, const kinematics::Robot& robot,
                     const std::vector<control::Sample>& samples,
                     const VerifyOptions& options = {});
