@@ -43,7 +43,7 @@ function(modsynth_stage name)
   file(GLOB own_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*
                                         ${PROJECT_SOURCE_DIR}/include/modsynth/${name}/*.h)
   foreach(file IN LISTS own_files)
-    file(STRINGS ${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]modsynth/")
+    file(STRINGS ${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]modsynth/[a-z_]+/")
     foreach(line IN LISTS includes)
       string(REGEX REPLACE ".*modsynth/([a-z_]+)/.*" "\\1" area "${line}")
       if(NOT area IN_LIST closure)

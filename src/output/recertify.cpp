@@ -1,6 +1,7 @@
 #include <modsynth/output/recertify.h>
 
 #include <modsynth/control/motion.h>
+#include <modsynth/synth/synthesizer.h>
 
 namespace modsynth::output {
 
@@ -11,7 +12,9 @@ std::string recertify(const task::Task& task, io::ParsedSolution& parsed) {
     // The file does not store the progress along each primitive; the
     // verifier needs it, and it follows from the joint angles.
     control::recover_parameters(task, s.robot, s.samples);
-    s.certificate = verify::certify(task, s.robot, s.samples);
+    // With the limits the search certified it against: a long path is
+    // planned with steps coarser than the verifier's default.
+    s.certificate = verify::certify(task, s.robot, s.samples, synth::verify_options_for(task));
     // Figures recomputed from an unchanged motion are the stored ones, so
     // the report of a saved solution matches the one solve wrote.
     return parsed.has_certificate ? ""

@@ -96,15 +96,14 @@ void add_critical_points(const task::Task& task, const kinematics::Robot& robot,
 class Search {
 public:
     Search(const task::Task& task, const SynthesisOptions& options, SynthesisStats& stats)
-        : task_(task), opt_(options), stats_(stats), start_(Clock::now()), motion_(options.motion) {
+        : task_(task),
+          opt_(options),
+          stats_(stats),
+          start_(Clock::now()),
+          motion_(motion_options_for(task, options)) {
         deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(
                                  std::chrono::duration<double>(std::max(0.0, opt_.time_limit)));
         motion_.deadline = deadline_;
-        // A long path is sampled more coarsely rather than without bound;
-        // the verifier certifies whatever steps the motion takes.
-        double total = 0.0;
-        for (const auto& p : task.trajectory) total += geometry::length(p);
-        motion_.max_ee_step = std::max(motion_.max_ee_step, total / opt_.trace_samples);
     }
 
     Solution run();
@@ -395,6 +394,20 @@ bool SynthesisOptions::IsValid(std::string* error) const {
         .within("front_reserve_share", front_reserve_share, 0.0, 1.0)
         .greater("explanation_seconds", explanation_seconds, 0.0)
         .ok();
+}
+
+control::MotionOptions motion_options_for(const task::Task& task, const SynthesisOptions& options) {
+    control::MotionOptions motion = options.motion;
+    // A long path is sampled more coarsely rather than without bound; the
+    // verifier certifies whatever steps the motion takes.
+    double total = 0.0;
+    for (const auto& p : task.trajectory) total += geometry::length(p);
+    motion.max_ee_step = std::max(motion.max_ee_step, total / options.trace_samples);
+    return motion;
+}
+
+verify::VerifyOptions verify_options_for(const task::Task& task, const SynthesisOptions& options) {
+    return verify::options_for(motion_options_for(task, options), options.verify);
 }
 
 Solution synthesize(const task::Task& task, const SynthesisOptions& options, SynthesisStats* stats) {

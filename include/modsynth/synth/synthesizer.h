@@ -95,6 +95,17 @@ struct SynthesisStats {
     int counterexamples = 0;
 };
 
+/// The motion options a run plans `task` with: options.motion, with its EE
+/// step widened on long paths so that the trace has at most
+/// options.trace_samples samples.
+control::MotionOptions motion_options_for(const task::Task& task, const SynthesisOptions& options);
+
+/// What a run certifies a motion of `task` against. A solution read back
+/// from a file is checked with the same limits, so that what was certified
+/// when it was made certifies again.
+verify::VerifyOptions verify_options_for(const task::Task& task,
+                                         const SynthesisOptions& options = {});
+
 /// Throws std::invalid_argument when the options are not valid.
 Solution synthesize(const task::Task& task, const SynthesisOptions& options,
                     SynthesisStats* stats = nullptr);

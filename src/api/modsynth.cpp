@@ -1,0 +1,80 @@
+#include <modsynth/modsynth.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include <modsynth/control/motion.h>
+#include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_io.h>
+#include <modsynth/synth/synthesizer.h>
+
+#include <nlohmann/json.hpp>
+
+namespace modsynth {
+namespace {
+
+// The proof gets at most this much of explain's time; the rest goes to a
+// full run (when there is no proof) or to the suggestions.
+constexpr double kProofSeconds = 10.0;
+
+}  // namespace
+
+Task read_task(std::string_view json_text) { return io::parse_task_text(json_text); }
+
+Task load_task(const std::string& path) { return io::load_task(path); }
+
+Solution solve(const Task& task, const SolveOptions& options) {
+    synth::SynthesisOptions o;
+    o.time_limit = options.time_limit;
+    o.seed = options.seed;
+    o.progress = options.progress;
+    return synth::synthesize(task, o);
+}
+
+Explanation explain(const Task& task, double time_limit, double solve_seconds) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    const auto left = [&] {
+        return time_limit - std::chrono::duration<double>(Clock::now() - start).count();
+    };
+    Explanation out;
+    const synth::InfeasibilityProof proof =
+        synth::prove_infeasible(task, std::max(0.0, std::min(kProofSeconds, left())));
+    if (!proof.proved) {
+        SolveOptions o;
+        o.time_limit = std::max(0.0, left());
+        const Solution s = solve(task, o);
+        out.status = s.status;
+        out.core = s.explanation.core;
+        out.message = s.status == Status::Solved
+                          ? "No conflict: a " + std::to_string(s.robot.dof()) +
+                                "-joint robot does this task."
+                          : "Not proved infeasible (" + proof.open + "); " + s.explanation.message;
+        return out;
+    }
+    out.status = Status::Infeasible;
+    out.core = proof.core;
+    out.message = "Proved infeasible: " + synth::describe_conflict(task, proof.core);
+    out.suggestions = synth::suggest_relaxations(task, proof.core, solve_seconds, std::max(0.0, left()));
+    return out;
+}
+
+Certificate certify(const Task& task, const Solution& solution) {
+    if (solution.status != Status::Solved) return {};
+    io::check_solution_fits(task, solution);
+    // The stored motion need not carry the progress along each primitive
+    // (a document does not); the verifier recovers it from the angles.
+    std::vector<control::Sample> samples = solution.samples;
+    control::recover_parameters(task, solution.robot, samples);
+    return verify::certify(task, solution.robot, samples, synth::verify_options_for(task));
+}
+
+std::string write_solution_json(const Solution& solution) {
+    return io::to_json(solution).dump(1) + '\n';
+}
+
+Solution read_solution(std::string_view json_text) {
+    return io::parse_solution_text(json_text).solution;
+}
+
+}  // namespace modsynth
