@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <set>
 
 #include <modsynth/control/motion.h>
@@ -93,6 +94,18 @@ void add_critical_points(const task::Task& task, const kinematics::Robot& robot,
 }
 
 
+/// What planning and certifying one candidate robot came to: a certified
+/// answer, or what the next refinement must take in (counterexample-guided).
+struct Verdict {
+    std::optional<Solution> solution;
+    /// Motion planning gave up (a deadline, a cap): nothing was learnt.
+    bool gave_up = false;
+    /// Where along the path the robot failed: (primitive, arc length).
+    std::vector<std::pair<int, double>> points;
+    /// Failures in transitions: each asks for more proximal poses there.
+    int deeper_transitions = 0;
+};
+
 class Search {
 public:
     Search(const task::Task& task, const SynthesisOptions& options, SynthesisStats& stats)
@@ -114,15 +127,15 @@ private:
         stage_ = line;
         if (opt_.progress) opt_.progress(text::format("[%7.3fs] ", seconds_since(start_)) + line);
     }
-    bool try_skeleton(const smt::Skeleton& skeleton, Solution& out, int guesses);
-    void shorten(const smt::Skeleton& found, Solution& out);
-    bool refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
-                nlp::SweptVolume swept, Solution& out);
-    bool finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, Solution& out);
-    // Three joints: more proximal poses in every transition, up to the cap.
-    void deepen_transitions(nlp::ArmProblem& problem) const {
-        if (problem.transition_depth < opt_.max_transition_depth) ++problem.transition_depth;
-    }
+    // Each step takes values and gives values: skeleton -> refined robot ->
+    // verdict on its motion -> (certified solution | the next problem).
+    std::optional<Solution> try_skeleton(const smt::Skeleton& skeleton, int guesses);
+    Solution shorten(const smt::Skeleton& found, Solution best);
+    std::optional<Solution> refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
+                                   nlp::SweptVolume swept);
+    Verdict judge(const kinematics::Robot& robot);
+    nlp::ArmProblem learn(nlp::ArmProblem problem, const Verdict& verdict,
+                          const kinematics::Robot& robot) const;
 
     const task::Task& task_;
     const SynthesisOptions& opt_;
@@ -180,10 +193,8 @@ Solution Search::run() {
             ++stats_.skeletons;
             say(text::format("%d joints: skeleton %d (elbow %+d, base region %d)", dof, skeletons, sk.elbow,
                              sk.base_region));
-            if (try_skeleton(sk, out, opt_.guesses_per_skeleton)) {
-                shorten(sk, out);
-                return out;
-            }
+            if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton))
+                return shorten(sk, std::move(*found));
             front.block(sk);
             const auto t1 = Clock::now();
             result = front.check();
@@ -222,7 +233,7 @@ Solution Search::run() {
 // the other branch can need much shorter links (on tasks/rose.json, 0.54 m
 // against 0.97 m). Each other elbow sign and base region gets one initial
 // guess; a fixed amount of work, so that solutions stay repeatable.
-void Search::shorten(const smt::Skeleton& found, Solution& out) {
+Solution Search::shorten(const smt::Skeleton& found, Solution best) {
     for (int region : task::base_region_choices(task_)) {
         for (int elbow : {1, -1}) {
             if ((region == found.base_region && elbow == found.elbow) || remaining() <= 0.0) continue;
@@ -230,37 +241,35 @@ void Search::shorten(const smt::Skeleton& found, Solution& out) {
             variant.base_region = region;
             variant.elbow = elbow;
             say(text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof, elbow, region));
-            Solution candidate;
-            candidate.task_name = out.task_name;
-            if (try_skeleton(variant, candidate, opt_.guesses_per_variant) &&
-                candidate.robot.total_length() < out.robot.total_length() - 1e-6) {
-                say(text::format("    shorter: total length %.4f m", candidate.robot.total_length()));
-                out = std::move(candidate);
+            auto candidate = try_skeleton(variant, opt_.guesses_per_variant);
+            if (candidate && candidate->robot.total_length() < best.robot.total_length() - 1e-6) {
+                say(text::format("    shorter: total length %.4f m", candidate->robot.total_length()));
+                best = std::move(*candidate);
             }
         }
     }
+    return best;
 }
 
-bool Search::try_skeleton(const smt::Skeleton& skeleton, Solution& out, int count) {
+std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int count) {
     const auto guesses =
         initial_guesses(task_, skeleton, count, opt_.seed, deadline_, opt_.guesses);
     for (const auto& g : guesses) {
-        if (remaining() <= 0.0) return false;
+        if (remaining() <= 0.0) return std::nullopt;
         say(text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(), g.robot.base.y(),
                 g.robot.total_length()) +
             text::format(", margin %.4f m", g.margin));
         // SV^over bounds a 2-link arm; with three joints the proximal link
         // moves between primitives and the sampled model is used directly.
-        if (skeleton.dof == 2 && !task_.obstacles.empty() && swept_over_plausible(task_, g.robot) &&
-            refine(skeleton, g.robot, nlp::SweptVolume::Over, out))
-            return true;
-        if (refine(skeleton, g.robot, nlp::SweptVolume::Sampled, out)) return true;
+        if (skeleton.dof == 2 && !task_.obstacles.empty() && swept_over_plausible(task_, g.robot))
+            if (auto s = refine(skeleton, g.robot, nlp::SweptVolume::Over)) return s;
+        if (auto s = refine(skeleton, g.robot, nlp::SweptVolume::Sampled)) return s;
     }
-    return false;
+    return std::nullopt;
 }
 
-bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
-                    nlp::SweptVolume swept, Solution& out) {
+std::optional<Solution> Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
+                                       nlp::SweptVolume swept) {
     const char* name = swept == nlp::SweptVolume::Over ? "SV-over" : "sampled";
     nlp::ArmProblem problem;
     problem.task = &task_;
@@ -283,49 +292,50 @@ bool Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& star
         ++stats_.nlp_solves;
         if (!res.usable()) {
             say(std::string("    ") + name + ": refinement did not converge (" + res.message + ")");
-            return false;
+            return std::nullopt;
         }
         const kinematics::Robot robot = nlp::robot_from(f, res.x);
         std::string links;
         for (double r : robot.link_lengths) links += text::format(links.empty() ? "%.4f" : " + %.4f", r);
         say(std::string("    ") + name + ": candidate links " + links +
             text::format(" m with %zu points, %d variables", problem.points.size(), f.program.num_variables()));
-        const std::size_t before = problem.points.size();
-        const int depth_before = problem.transition_depth;
-        if (finish(robot, problem, out)) return true;
-        if (problem.points.size() == before && problem.transition_depth == depth_before)
-            return false;  // nothing left to learn
-        stats_.counterexamples += static_cast<int>(problem.points.size() - before);
-        problem.start = robot;
-        if (swept == nlp::SweptVolume::Over) problem.swept = nlp::SweptVolume::Sampled;
+        Verdict verdict = judge(robot);
+        if (verdict.solution) return std::move(verdict.solution);
+        if (verdict.gave_up) return std::nullopt;
+        nlp::ArmProblem next = learn(problem, verdict, robot);
+        if (next.points.size() == problem.points.size() &&
+            next.transition_depth == problem.transition_depth)
+            return std::nullopt;  // nothing left to learn
+        stats_.counterexamples += static_cast<int>(next.points.size() - problem.points.size());
+        next.start = robot;
+        if (swept == nlp::SweptVolume::Over) next.swept = nlp::SweptVolume::Sampled;
         name = "sampled";
+        problem = std::move(next);
     }
-    return false;
+    return std::nullopt;
 }
 
-// Plans and certifies the motion. On failure, adds what went wrong to the
-// problem for the next refinement (counterexample-guided): the offending
-// points of a trace, or finer transitions.
-bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, Solution& out) {
-    std::vector<nlp::PathPoint>& points = problem.points;
+// Plans and certifies the motion of one candidate robot.
+Verdict Search::judge(const kinematics::Robot& robot) {
+    Verdict verdict;
     const auto t0 = Clock::now();
     control::MotionFailure failure;
     auto motion = control::plan_motion(task_, robot, motion_, &failure);
     if (!motion && failure.gave_up) {
         say("    motion planning stopped: " + failure.message);
         stats_.verify_seconds += seconds_since(t0);
-        return false;  // nothing learnt: the refinement of this guess ends
+        verdict.gave_up = true;  // the refinement of this guess ends
+        return verdict;
     }
     if (!motion) {
         say("    out of reach at " + failure.message);
         if (failure.transition) {
-            deepen_transitions(problem);
+            verdict.deeper_transitions = 1;
         } else {
-            add_point(points, failure.primitive, failure.s);
+            verdict.points.emplace_back(failure.primitive, failure.s);
         }
-        add_critical_points(task_, robot, points);
         stats_.verify_seconds += seconds_since(t0);
-        return false;
+        return verdict;
     }
     const verify::VerifyOptions vo = verify::options_for(motion_, opt_.verify);
     verify::Certificate cert = verify::certify(task_, robot, *motion, vo);
@@ -338,6 +348,8 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
     stats_.verify_seconds += seconds_since(t0);
     if (cert.ok) {
         control::assign_times(*motion, motion_);
+        Solution& out = verdict.solution.emplace();
+        out.task_name = task_.name;
         out.status = Status::Solved;
         out.robot = robot;
         out.samples = std::move(*motion);
@@ -345,25 +357,36 @@ bool Search::finish(const kinematics::Robot& robot, nlp::ArmProblem& problem, So
         say(text::format("    certified: clearance margin %.4f m, self margin %.4f m, deviation %.2g m",
                 out.certificate.min_clearance, out.certificate.min_self_clearance,
                 out.certificate.max_deviation));
-        return true;
+        return verdict;
     }
     std::set<std::pair<int, long>> seen;
-    int added = 0;
     for (const auto& v : cert.violations) {
         if (v.primitive < 0) continue;
         if (v.transition) {
-            deepen_transitions(problem);
+            ++verdict.deeper_transitions;
             continue;
         }
         if (!seen.insert({v.primitive, std::lround(v.s * 1e3)}).second) continue;
-        add_point(points, v.primitive, v.s);
-        if (++added >= opt_.counterexamples_per_round) break;
+        verdict.points.emplace_back(v.primitive, v.s);
+        if (static_cast<int>(verdict.points.size()) >= opt_.counterexamples_per_round) break;
     }
     if (!cert.violations.empty())
         say("    verification: " + std::to_string(cert.violations.size()) + " violation(s), first: " +
             cert.violations.front().message);
-    add_critical_points(task_, robot, points);
-    return false;
+    return verdict;
+}
+
+// The next refinement's problem: the failed robot's counterexamples, its
+// critical points, and (three joints) more proximal poses in transitions,
+// up to the cap.
+nlp::ArmProblem Search::learn(nlp::ArmProblem problem, const Verdict& verdict,
+                              const kinematics::Robot& robot) const {
+    if (verdict.deeper_transitions > 0 && problem.transition_depth < opt_.max_transition_depth)
+        problem.transition_depth = std::min(opt_.max_transition_depth,
+                                            problem.transition_depth + verdict.deeper_transitions);
+    for (const auto& [primitive, s] : verdict.points) add_point(problem.points, primitive, s);
+    add_critical_points(task_, robot, problem.points);
+    return problem;
 }
 
 }  // namespace
