@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
@@ -82,7 +83,7 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
 
     double reach = 0.0;
     for (const PathSample& p : points) reach = std::max(reach, (p.point - b0).norm());
-    const double share = dof == 2 ? options.start_reach_share_two : options.start_reach_share_three;
+    const double share = !kinematics::has_proximal_link(dof) ? options.start_reach_share_two : options.start_reach_share_three;
     std::vector<double> r0(dof, std::clamp(share * reach, spec.min_link_length, spec.max_link_length));
     Quadratic objective;
     for (int i = 0; i < dof; ++i) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/kinematics.h>
@@ -32,7 +33,7 @@ double distance_to_trail(const std::vector<Vec2>& trail, const Vec2& p) {
 
 bool reachable(const task::Task& task, const kinematics::Robot& robot, const Vec2& p, int proximal_steps) {
     const double d = robot.link_diameter;
-    if (robot.dof() == 2) return kinematics::reaches_clear(kinematics::distal_pair(robot, {}), task.obstacles, d, p);
+    if (!robot.has_proximal_link()) return kinematics::reaches_clear(kinematics::distal_pair(robot, {}), task.obstacles, d, p);
     std::vector<double> lead(robot.dof() - 2, 0.0);
     for (int i = 0; i < proximal_steps; ++i) {
         lead[0] = geometry::kTau * i / proximal_steps;

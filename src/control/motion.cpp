@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/text/format.h>
@@ -58,8 +59,8 @@ std::optional<std::vector<double>> configuration_at(const task::Task& task,
                                                     double s,
                                                     const std::vector<double>* previous) {
     const geometry::Vec2 p = geometry::point_at(task.trajectory[j], s);
-    if (robot.dof() == 2) return arm_configuration(robot, robot.base, 0.0, p, previous);
-    if (robot.dof() != 3 || static_cast<int>(robot.proximal_angles.size()) <= j) return std::nullopt;
+    if (!robot.has_proximal_link()) return arm_configuration(robot, robot.base, 0.0, p, previous);
+    if (static_cast<int>(robot.proximal_angles.size()) <= j) return std::nullopt;
     const double q1 = robot.proximal_angles[j];
     return arm_configuration(robot, robot.tracing_origin(j), q1, p, previous);
 }
@@ -68,7 +69,7 @@ std::optional<std::vector<double>> transition_configuration(const task::Task& ta
                                                             const kinematics::Robot& robot, int j,
                                                             double q1,
                                                             const std::vector<double>* previous) {
-    if (robot.dof() != 3) return std::nullopt;
+    if (!robot.has_proximal_link()) return std::nullopt;
     return arm_configuration(robot, robot.distal_origin(q1), q1, task.trajectory[j].end, previous);
 }
 
@@ -136,7 +137,7 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
     };
     const int m = static_cast<int>(task.trajectory.size());
     for (int j = 0; j < m; ++j) {
-        if (j > 0 && robot.dof() == 3) {
+        if (j > 0 && robot.has_proximal_link()) {
             // The EE holds the transition point while the first joint sweeps
             // the short way round to its angle for the next primitive.
             const double from = out.back().q[0];
@@ -175,7 +176,7 @@ bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
             const double s = 0.5 * (a.s + b.s);
             if (auto q = configuration_at(task, robot, a.primitive, s, &a.q))
                 mid = Sample{a.t, Phase::Trace, a.primitive, s, *q};
-        } else if (robot.dof() == 3 && (a.phase == Phase::Transition || b.phase == Phase::Transition)) {
+        } else if (robot.has_proximal_link() && (a.phase == Phase::Transition || b.phase == Phase::Transition)) {
             const int j = a.phase == Phase::Transition ? a.primitive : b.primitive;
             const double q1 = 0.5 * (a.q[0] + b.q[0]);
             if (auto q = transition_configuration(task, robot, j, q1, &a.q))

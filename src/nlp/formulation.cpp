@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/distance.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
@@ -46,18 +47,18 @@ public:
         }
         qp_.set_objective(objective);
 
-        if (f_.dof == 3) add_proximal_poses();
+        if (kinematics::has_proximal_link(f_.dof)) add_proximal_poses();
         for (const PathPoint& pt : p_.points) add_trace_point(pt);
-        if (f_.dof == 3) {
+        if (kinematics::has_proximal_link(f_.dof)) {
             for (int j = 0; j + 1 < static_cast<int>(t_.trajectory.size()); ++j) add_transition(j);
         }
-        if (p_.swept == SweptVolume::Over && f_.dof == 2) add_swept_over();
+        if (p_.swept == SweptVolume::Over && !kinematics::has_proximal_link(f_.dof)) add_swept_over();
         qp_.finalize();
     }
 
 private:
     // The point the distal pair turns about while primitive j is traced.
-    const Point& origin(int j) const { return f_.dof == 2 ? base_ : proximal_[j]; }
+    const Point& origin(int j) const { return kinematics::has_proximal_link(f_.dof) ? proximal_[j] : base_; }
 
     double need_for(const task::Obstacle& ob) const {
         return rule_.obstacle_distance(ob) + p_.margins.clearance;
@@ -100,7 +101,7 @@ private:
         qp_.add_constraint(side, 0.0, kInfinity, "elbow side " + where);
         keep_links_from_obstacles(o, e, f_.dof - 1, where);
         keep_links_from_obstacles(e, target, f_.dof, where);
-        if (f_.dof == 3) {
+        if (kinematics::has_proximal_link(f_.dof)) {
             // eq. (9): the EE keeps a diameter away from the proximal link.
             keep_apart(base_, o, target, rule_.self_distance() + p_.margins.self,
                        "EE to link 1, " + where);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include <modsynth/geometry/polygon.h>
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/kinematics/reachable_space.h>
 
@@ -158,7 +159,7 @@ bool in_core(const Core& core, const std::string& part) {
 std::string reachable(const task::Task& task, const synth::Solution& s, const plot::Frame& f,
                       std::string* caption) {
     std::string out = "<g id=\"reachable\">\n";
-    if (s.robot.dof() == 2) {
+    if (!s.robot.has_proximal_link()) {
         out += reach_path(distal_pair(s.robot, std::vector<double>{}), task, s, f,
                           " data-primitive=\"all\"");
         *caption =

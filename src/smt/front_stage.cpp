@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/geometry/primitive.h>
@@ -284,7 +285,7 @@ struct FrontStage::Impl {
         for (const auto& v : pts) {
             const z3::expr dv = dist2(v);
             require({name}, dv <= R * R + num(options.slack));
-            if (dof == 2) {
+            if (!kinematics::has_proximal_link(dof)) {
                 require({name}, dv + num(options.slack) >= (r[0] - r[1]) * (r[0] - r[1]), true);
                 require({name, diam}, dv >= num(d2), true);
             }
@@ -293,7 +294,7 @@ struct FrontStage::Impl {
         // enter: an unsat answer is reported as a proof. (With three joints
         // modsynth keeps the proximal link still during a primitive, but a
         // general arm need not, so that restriction stays out of here.)
-        if (dof != 2) return;
+        if (kinematics::has_proximal_link(dof)) return;
         if (p.kind == geometry::PrimitiveKind::Line) {
             // Exact critical point of a line: if the foot of the perpendicular
             // from the base lies inside the segment, it is the closest point.
@@ -354,7 +355,7 @@ struct FrontStage::Impl {
             return coarse == z3::unsat ? Result::Unsat : Result::Unknown;
         }
         model = solver.get_model();
-        if (dof != 2 || expired()) return Result::Sat;  // no refined families for these joint counts
+        if (kinematics::has_proximal_link(dof) || expired()) return Result::Sat;  // no refined families for these joint counts
         set_timeout(fine, std::min(options.time_limit, options.refined_time_limit));
         const z3::check_result refined = fine.check(assumptions());
         if (refined == z3::unsat) {
@@ -440,7 +441,7 @@ bool FrontStage::conflicts(const std::vector<std::string>& parts) {
     if (m.incomplete || m.expired()) return false;
     m.set_timeout(m.solver, m.options.time_limit);
     if (m.solver.check(a) == z3::unsat) return true;
-    if (m.dof != 2) return false;
+    if (kinematics::has_proximal_link(m.dof)) return false;
     m.set_timeout(m.fine, std::min(m.options.time_limit, m.options.refined_time_limit));
     return m.fine.check(a) == z3::unsat;
 }

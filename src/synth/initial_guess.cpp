@@ -5,6 +5,7 @@
 #include <limits>
 #include <random>
 
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/distance.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
@@ -249,7 +250,7 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
                                          std::chrono::steady_clock::time_point deadline,
                                          const InitialGuessOptions& options) {
     text::require_valid(options);
-    if (skeleton.dof == 3)
+    if (kinematics::has_proximal_link(skeleton.dof))
         return three_link_guesses(task, skeleton, count, seed, deadline, options);
     const auto pts = path_points(task, options.scoring_spacing, options);
     const double lo = task.robot.min_link_length, hi = task.robot.max_link_length;

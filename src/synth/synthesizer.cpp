@@ -7,6 +7,7 @@
 #include <optional>
 #include <set>
 
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/control/motion.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/geometry/primitive.h>
@@ -86,7 +87,7 @@ void add_point(std::vector<nlp::PathPoint>& pts, int j, double s) {
 void add_critical_points(const task::Task& task, const kinematics::Robot& robot,
                          std::vector<nlp::PathPoint>& points) {
     for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
-        const bool known = robot.dof() == 2 || j < static_cast<int>(robot.proximal_angles.size());
+        const bool known = !robot.has_proximal_link() || j < static_cast<int>(robot.proximal_angles.size());
         const auto cp = geometry::critical_points(task.trajectory[j], known ? robot.tracing_origin(j) : robot.base);
         add_point(points, j, cp.closest.s);
         add_point(points, j, cp.farthest.s);
@@ -261,7 +262,7 @@ std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int 
             text::format(", margin %.4f m", g.margin));
         // SV^over bounds a 2-link arm; with three joints the proximal link
         // moves between primitives and the sampled model is used directly.
-        if (skeleton.dof == 2 && !task_.obstacles.empty() && swept_over_plausible(task_, g.robot))
+        if (!kinematics::has_proximal_link(skeleton.dof) && !task_.obstacles.empty() && swept_over_plausible(task_, g.robot))
             if (auto s = refine(skeleton, g.robot, nlp::SweptVolume::Over)) return s;
         if (auto s = refine(skeleton, g.robot, nlp::SweptVolume::Sampled)) return s;
     }

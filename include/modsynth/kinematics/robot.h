@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <modsynth/geometry/vec.h>
+#include <modsynth/kinematics/chain_layout.h>
 
 namespace modsynth::kinematics {
 
@@ -21,17 +22,19 @@ struct Robot {
     std::vector<double> proximal_angles;
 
     int dof() const { return static_cast<int>(link_lengths.size()); }
+    /// Three joints: a proximal link that stands still while tracing.
+    bool has_proximal_link() const { return kinematics::has_proximal_link(dof()); }
 
     /// The point the distal pair of links turns about (paper III-A): the base
     /// with two joints; with three, the end of the proximal link at absolute
     /// angle q1.
     geometry::Vec2 distal_origin(double q1) const {
-        return dof() == 3 ? geometry::Vec2(base + link_lengths[0] * geometry::unit(q1)) : base;
+        return has_proximal_link() ? geometry::Vec2(base + link_lengths[0] * geometry::unit(q1)) : base;
     }
     /// The same while primitive j is traced, the proximal link still at
     /// proximal_angles[j].
     geometry::Vec2 tracing_origin(int j) const {
-        return dof() == 3 ? distal_origin(proximal_angles.at(j)) : base;
+        return has_proximal_link() ? distal_origin(proximal_angles.at(j)) : base;
     }
     double total_length() const {
         double sum = 0.0;
