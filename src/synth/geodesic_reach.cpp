@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <array>
+#include <map>
+#include <memory>
 #include <queue>
 #include <unordered_map>
 
@@ -19,7 +22,7 @@ struct Node {
     Vec2 p;
     int disc;     // index into the discs, -1 for a free point
     int partner;  // the other end of this node's tangent segment (circle nodes), -1 if none
-    char clear;   // that segment's visibility: unknown, clear or blocked
+    int segment;  // that segment's index into the blocker lists
     bool exit;    // a way from the box may come straight here: free points and
                   // the four axis-extreme points of each circle
 };
@@ -32,36 +35,52 @@ struct Bound {
 // The visibility graph of the free space among the discs, with the free
 // points given (path points, region corners) as extra nodes. Every node on
 // a circle ends one tangent segment; the arcs between neighbouring nodes of
-// a circle, and whether a segment is clear of the discs, are worked out
-// only when a search first reaches them: most never are.
+// a circle, and which discs block a segment, are worked out only when a
+// search first reaches them: most never are. Searches may leave out some of
+// the discs (`leave_out`): what they blocked is kept by blocker, so trying
+// a proof without an obstacle costs one search, not a new graph.
 class Graph {
 public:
-    explicit Graph(const std::vector<NoGoDisc>& discs) : discs_(discs), circles_(discs.size()) {}
+    explicit Graph(std::vector<NoGoDisc> discs)
+        : discs_(std::move(discs)), circles_(discs_.size()), gone_(discs_.size(), 0) {}
 
-    int add(const Vec2& p, int disc, int partner = -1, bool exit = false) {
-        nodes_.push_back({p, disc, partner, kUnknown, exit || disc < 0});
+    const std::vector<NoGoDisc>& discs() const { return discs_; }
+
+    void leave_out(const std::vector<char>& gone) { gone_ = gone; }
+
+    int add(const Vec2& p, int disc, int partner = -1, bool exit = false, int segment = -1) {
+        nodes_.push_back({p, disc, partner, segment, exit || disc < 0});
         if (disc >= 0) circles_[disc].nodes.push_back(static_cast<int>(nodes_.size()) - 1);
         return static_cast<int>(nodes_.size()) - 1;
     }
 
-    // A straight segment is kept unless it clearly enters a disc: rounding
-    // never removes a way that exists.
-    bool blocked(const Vec2& a, const Vec2& b) const {
+    // The discs a straight segment enters. A segment is kept unless it
+    // clearly enters one: rounding never removes a way that exists.
+    std::vector<int> blockers(const Vec2& a, const Vec2& b) const {
+        std::vector<int> out;
         const Vec2 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
-        for (const auto& d : discs_) {
+        for (int i = 0; i < static_cast<int>(discs_.size()); ++i) {
+            const auto& d = discs_[i];
             const double r = d.radius - kNoGoSlack;
             if (d.center.x() < lo.x() - r || d.center.x() > hi.x() + r || d.center.y() < lo.y() - r ||
                 d.center.y() > hi.y() + r)
                 continue;
-            if (geometry::point_segment(d.center, a, b) < r) return true;
+            if (geometry::point_segment(d.center, a, b) < r) out.push_back(i);
         }
+        return out;
+    }
+
+    bool blocked(const Vec2& a, const Vec2& b) const {
+        for (int i : blockers(a, b))
+            if (!gone_[i]) return true;
         return false;
     }
 
     // A segment between two free points.
     void segment(int u, int v) {
-        free_links_[u].push_back(v);
-        free_links_[v].push_back(u);
+        const int id = new_segment();
+        free_links_[u].push_back({v, id});
+        free_links_[v].push_back({u, id});
     }
 
     int add_free(const Vec2& p) {
@@ -74,7 +93,7 @@ public:
     void tangents_from(int u) {
         for (int i = 0; i < static_cast<int>(discs_.size()); ++i)
             for (const Vec2& t : geometry::tangent_points(nodes_[u].p, discs_[i].center, discs_[i].radius))
-                free_links_[u].push_back(add(t, i, u));
+                free_links_[u].push_back({add(t, i, u, false, new_segment()), nodes_.back().segment});
     }
 
     void build_circles() {
@@ -89,8 +108,9 @@ public:
                 for (const auto& t : geometry::bitangents(discs_[i].center, discs_[i].radius, discs_[j].center,
                                                           discs_[j].radius, kNoGoSlack)) {
                     const int a = static_cast<int>(nodes_.size());
-                    add(t.from, i, a + 1);
-                    add(t.to, j, a);
+                    const int id = new_segment();
+                    add(t.from, i, a + 1, false, id);
+                    add(t.to, j, a, false, id);
                 }
         }
     }
@@ -103,6 +123,7 @@ public:
     // (an axis-extreme node). Stops early, with a bound above `enough` and no route,
     // once every way is known to be longer than `enough`.
     Bound from_box(int s, const Vec2& lo, const Vec2& hi, double enough) {
+        std::unordered_map<int, std::vector<int>>& exits = exits_[{lo.x(), lo.y(), hi.x(), hi.y()}];
         std::vector<double> dist(nodes_.size(), kInf);
         std::vector<int> prev(nodes_.size(), -1), via(nodes_.size(), -1);
         using Item = std::pair<double, int>;
@@ -115,19 +136,16 @@ public:
         Vec2 start = Vec2::Zero();
         const auto relax = [&](int u, int v, double length, int around) {
             const double d = dist[u] + length;
-            if (d >= dist[v]) return;
+            if (d >= dist[v] || (nodes_[v].disc >= 0 && gone_[nodes_[v].disc])) return;
             dist[v] = d;
             prev[v] = u;
             via[v] = around;
             queue.push({d + h(v), v});
         };
-        const auto straight = [&](int u, int v) {
-            // Free-point segments are checked every time: there are few.
+        const auto straight = [&](int u, int v, int id) {
             const Vec2 a = nodes_[u].p, b = nodes_[v].p;
             if (dist[u] + (a - b).norm() >= dist[v]) return;
-            char& c = nodes_[v].disc >= 0 ? nodes_[v].clear : nodes_[u].disc >= 0 ? nodes_[u].clear : scratch_;
-            if (&c == &scratch_ || c == kUnknown) c = blocked(a, b) ? kBlocked : kClear;
-            if (c == kClear) relax(u, v, (a - b).norm(), -1);
+            if (clear(id, a, b)) relax(u, v, (a - b).norm(), -1);
         };
         while (!queue.empty()) {
             const auto [key, u] = queue.top();
@@ -142,33 +160,23 @@ public:
             const Node& n = nodes_[u];
             const Vec2 foot = geometry::nearest_in_box(n.p, lo, hi);
             const double total = dist[u] + (n.p - foot).norm();
-            if (n.exit && total < best.length && !blocked(foot, n.p)) {
+            if (n.exit && total < best.length && all_gone(cached(exits, u, foot, n.p))) {
                 best.length = total;
                 first = u;
                 start = foot;
             }
             if (n.disc < 0) {
-                for (int v : free_links_[u]) straight(u, v);
+                for (const auto& [v, id] : free_links_[u]) straight(u, v, id);
                 continue;
             }
-            if (n.partner >= 0) {
-                // The segment's visibility is kept on both of its ends.
-                Node& m = nodes_[n.partner];
-                if (n.clear == kUnknown && m.clear == kUnknown) {
-                    const char c = blocked(n.p, m.p) ? kBlocked : kClear;
-                    nodes_[u].clear = c;
-                    if (m.disc >= 0) m.clear = c;
-                }
-                const char c = nodes_[u].clear != kUnknown ? nodes_[u].clear : m.clear;
-                if (c == kClear) relax(u, n.partner, (n.p - m.p).norm(), -1);
-            }
+            if (n.partner >= 0) straight(u, n.partner, n.segment);
             const Circle& c = circle(n.disc);
             const int k = c.position.at(u);
             const int count = static_cast<int>(c.order.size());
             const double r = discs_[n.disc].radius;
-            if (c.free[k]) relax(u, c.order[(k + 1) % count], r * c.gap[k], n.disc);
+            if (all_gone(c.covered[k])) relax(u, c.order[(k + 1) % count], r * c.gap[k], n.disc);
             const int before = (k + count - 1) % count;
-            if (c.free[before]) relax(u, c.order[before], r * c.gap[before], n.disc);
+            if (all_gone(c.covered[before])) relax(u, c.order[before], r * c.gap[before], n.disc);
         }
         if (first < 0) return best;
         best.route.push_back({start, -1});
@@ -183,7 +191,32 @@ public:
     const std::vector<Node>& nodes() const { return nodes_; }
 
 private:
-    enum : char { kUnknown, kClear, kBlocked };
+    int new_segment() {
+        segment_blockers_.emplace_back();
+        segment_known_.push_back(0);
+        return static_cast<int>(segment_blockers_.size()) - 1;
+    }
+
+    bool all_gone(const std::vector<int>& discs) const {
+        for (int i : discs)
+            if (!gone_[i]) return false;
+        return true;
+    }
+
+    bool clear(int id, const Vec2& a, const Vec2& b) {
+        if (!segment_known_[id]) {
+            segment_blockers_[id] = blockers(a, b);
+            segment_known_[id] = 1;
+        }
+        return all_gone(segment_blockers_[id]);
+    }
+
+    const std::vector<int>& cached(std::unordered_map<int, std::vector<int>>& cache, int u, const Vec2& a,
+                                   const Vec2& b) const {
+        auto it = cache.find(u);
+        if (it == cache.end()) it = cache.emplace(u, blockers(a, b)).first;
+        return it->second;
+    }
 
     struct Circle {
         std::vector<int> nodes;           // as added
@@ -191,7 +224,7 @@ private:
         std::vector<int> order;           // by angle
         std::unordered_map<int, int> position;  // node -> index in order
         std::vector<double> gap;          // angle from order[k] to order[k+1]
-        std::vector<char> free;           // whether that arc is clear of other discs
+        std::vector<std::vector<int>> covered;  // the other discs that cover some of that arc
     };
 
     // The arcs between neighbouring nodes of circle i, and which of them no
@@ -203,17 +236,18 @@ private:
         const NoGoDisc& me = discs_[i];
         struct Cover {
             double mid, half;
+            int disc;
         };
         std::vector<Cover> covers;
-        bool all = false;
+        std::vector<int> all;  // discs that hold the whole circle
         for (int j = 0; j < static_cast<int>(discs_.size()); ++j) {
             if (j == i || overlap(me, discs_[j]) <= kNoGoSlack) continue;
             const Vec2 v = discs_[j].center - me.center;
             const double d = v.norm();
-            if (d + me.radius <= discs_[j].radius - kNoGoSlack) all = true;
+            if (d + me.radius <= discs_[j].radius - kNoGoSlack) all.push_back(j);
             if (d + discs_[j].radius <= me.radius || d == 0.0) continue;
             const double cos_h = (me.radius * me.radius + d * d - discs_[j].radius * discs_[j].radius) / (2 * me.radius * d);
-            covers.push_back({std::atan2(v.y(), v.x()), std::acos(std::clamp(cos_h, -1.0, 1.0))});
+            covers.push_back({std::atan2(v.y(), v.x()), std::acos(std::clamp(cos_h, -1.0, 1.0)), j});
         }
         std::vector<std::pair<double, int>> around;
         for (int u : c.nodes) {
@@ -228,19 +262,22 @@ private:
             const double b = k + 1 < around.size() ? around[k + 1].first : around[0].first + geometry::kTau;
             const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
             c.gap.push_back(b - a);
-            c.free.push_back(!all && std::all_of(covers.begin(), covers.end(), [&](const Cover& cv) {
-                const double gap = std::abs(std::remainder(mid - cv.mid, geometry::kTau));
-                return gap >= half + cv.half - 1e-9;
-            }));
+            std::vector<int> by = all;
+            for (const Cover& cv : covers)
+                if (std::abs(std::remainder(mid - cv.mid, geometry::kTau)) < half + cv.half - 1e-9) by.push_back(cv.disc);
+            c.covered.push_back(std::move(by));
         }
         return c;
     }
 
-    const std::vector<NoGoDisc>& discs_;
+    std::vector<NoGoDisc> discs_;
     std::vector<Node> nodes_;
     std::vector<Circle> circles_;
-    std::unordered_map<int, std::vector<int>> free_links_;
-    char scratch_ = kUnknown;
+    std::vector<char> gone_;
+    std::unordered_map<int, std::vector<std::pair<int, int>>> free_links_;  // node -> (node, segment)
+    std::vector<std::vector<int>> segment_blockers_;
+    std::vector<char> segment_known_;
+    std::map<std::array<double, 4>, std::unordered_map<int, std::vector<int>>> exits_;  // box -> node -> blockers
 };
 
 bool box_free(const std::vector<NoGoDisc>& discs, const Vec2& lo, const Vec2& hi) {
@@ -253,60 +290,83 @@ double reach(const task::Task& task) {
     return *std::max_element(task.robot.dof.begin(), task.robot.dof.end()) * task.robot.max_link_length;
 }
 
-std::optional<GeodesicWitness> prove(const task::Task& task, const std::vector<int>& obstacles,
-                                     const std::vector<std::vector<PathPoint>>& per_region, bool with_route) {
-    if (task.base_regions.empty() || obstacles.empty()) return std::nullopt;
-    const std::vector<NoGoDisc> discs = no_go_discs(task, obstacles);
-    for (const auto& r : task.base_regions)
-        if (!box_free(discs, r.min, r.max)) return std::nullopt;
-    Graph g(discs);
-    g.build_circles();
+}  // namespace
+
+struct GeodesicProver::Impl {
+    const task::Task& task;
+    std::vector<int> obstacles;
+    Graph graph;
+    std::vector<PathPoint> points;  // every path point, once
     std::vector<int> point_node;
-    std::vector<PathPoint> points;
-    for (const auto& list : per_region)
-        for (const auto& q : list) {
-            const bool seen = std::any_of(points.begin(), points.end(),
-                                          [&](const PathPoint& o) { return o.point == q.point; });
-            if (!seen && free_point(discs, q.point)) {
-                points.push_back(q);
-                point_node.push_back(g.add_free(q.point));
-            }
-        }
+};
+
+GeodesicProver::GeodesicProver(const task::Task& task, const std::vector<int>& obstacles)
+    : impl_(new Impl{task, obstacles, Graph(no_go_discs(task, obstacles)), {}, {}}) {
+    Graph& g = impl_->graph;
+    g.build_circles();
+    for (const auto& q : path_points(task)) {
+        const bool seen = std::any_of(impl_->points.begin(), impl_->points.end(),
+                                      [&](const PathPoint& o) { return o.point == q.point; });
+        if (seen) continue;
+        impl_->points.push_back(q);
+        impl_->point_node.push_back(g.add_free(q.point));
+    }
     for (const auto& r : task.base_regions)
-        for (const Vec2& c : {r.min, Vec2{r.max.x(), r.min.y()}, r.max, Vec2{r.min.x(), r.max.y()}})
-            g.add_free(c);
-    const int circle_nodes = static_cast<int>(g.nodes().size());
-    for (int u = 0; u < circle_nodes; ++u) {
+        for (const Vec2& c : {r.min, Vec2{r.max.x(), r.min.y()}, r.max, Vec2{r.min.x(), r.max.y()}}) g.add_free(c);
+    const int count = static_cast<int>(g.nodes().size());
+    for (int u = 0; u < count; ++u) {
         if (g.nodes()[u].disc >= 0) continue;
         for (int v = 0; v < u; ++v)
             if (g.nodes()[v].disc < 0) g.segment(u, v);
         g.tangents_from(u);
     }
+}
+
+GeodesicProver::~GeodesicProver() = default;
+
+std::optional<GeodesicWitness> GeodesicProver::prove(const std::vector<int>& among, bool with_route,
+                                                     const std::vector<PathPoint>& only) const {
+    const task::Task& task = impl_->task;
+    if (task.base_regions.empty() || among.empty()) return std::nullopt;
+    Graph& g = impl_->graph;
+    std::vector<char> gone(impl_->obstacles.size(), 1);
+    for (int i : among) {
+        const auto at = std::find(impl_->obstacles.begin(), impl_->obstacles.end(), i);
+        if (at == impl_->obstacles.end()) throw std::invalid_argument("obstacle not given to the prover");
+        gone[at - impl_->obstacles.begin()] = 0;
+    }
+    g.leave_out(gone);
+    std::vector<NoGoDisc> discs;
+    for (std::size_t k = 0; k < gone.size(); ++k)
+        if (!gone[k]) discs.push_back(g.discs()[k]);
+    for (const auto& r : task.base_regions)
+        if (!box_free(discs, r.min, r.max)) return std::nullopt;
     const double limit = reach(task);
     const double margin = 1e-9 * (1.0 + limit);
     GeodesicWitness out;
     out.reach = limit;
-    out.obstacles = obstacles;
+    out.obstacles = among;
+    std::sort(out.obstacles.begin(), out.obstacles.end());
     out.detours.resize(task.base_regions.size());
-    std::vector<bool> proved(task.base_regions.size(), false);
-    for (std::size_t k = 0; k < points.size(); ++k) {
-        for (std::size_t r = 0; r < task.base_regions.size(); ++r) {
-            const bool listed = std::any_of(per_region[r].begin(), per_region[r].end(),
-                                            [&](const PathPoint& q) { return q.point == points[k].point; });
-            if (proved[r] || !listed) continue;
-            Bound b = g.from_box(point_node[k], task.base_regions[r].min, task.base_regions[r].max,
+    for (std::size_t r = 0; r < task.base_regions.size(); ++r) {
+        bool proved = false;
+        for (std::size_t k = 0; k < impl_->points.size() && !proved; ++k) {
+            const PathPoint& q = impl_->points[k];
+            const bool listed = only.empty() || std::any_of(only.begin(), only.end(), [&](const PathPoint& o) {
+                                    return o.point == q.point;
+                                });
+            if (!listed || !free_point(discs, q.point)) continue;
+            Bound b = g.from_box(impl_->point_node[k], task.base_regions[r].min, task.base_regions[r].max,
                                  with_route ? kInf : limit + margin);
             if (b.length > limit + margin) {
-                proved[r] = true;
-                out.detours[r] = {static_cast<int>(r), points[k].primitive, points[k].point, b.length, std::move(b.route)};
+                proved = true;
+                out.detours[r] = {static_cast<int>(r), q.primitive, q.point, b.length, std::move(b.route)};
             }
         }
+        if (!proved) return std::nullopt;
     }
-    if (!std::all_of(proved.begin(), proved.end(), [](bool p) { return p; })) return std::nullopt;
     return out;
 }
-
-}  // namespace
 
 double geodesic_distance(const std::vector<NoGoDisc>& discs, const Vec2& lo, const Vec2& hi, const Vec2& p,
                          std::vector<RouteStep>* route) {
@@ -326,15 +386,7 @@ double geodesic_distance(const std::vector<NoGoDisc>& discs, const Vec2& lo, con
 
 std::optional<GeodesicWitness> prove_geodesic_reach(const task::Task& task, const std::vector<int>& obstacles,
                                                     bool with_route) {
-    const std::vector<PathPoint> all = path_points(task);
-    return prove(task, obstacles, std::vector<std::vector<PathPoint>>(task.base_regions.size(), all), with_route);
-}
-
-std::optional<GeodesicWitness> prove_geodesic_reach(const task::Task& task, const std::vector<int>& obstacles,
-                                                    const std::vector<PathPoint>& points, bool with_route) {
-    std::vector<std::vector<PathPoint>> per_region;
-    for (const auto& q : points) per_region.push_back({q});
-    return prove(task, obstacles, per_region, with_route);
+    return GeodesicProver(task, obstacles).prove(obstacles, with_route);
 }
 
 }  // namespace modsynth::synth

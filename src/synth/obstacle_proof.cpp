@@ -117,7 +117,8 @@ std::vector<int> overlap_components(const task::Task& task, const std::set<int>&
 }
 
 std::optional<ObstacleProof> by_geodesic(const task::Task& task) {
-    auto found = prove_geodesic_reach(task, all_obstacles(task));
+    const GeodesicProver prover(task, all_obstacles(task));
+    auto found = prover.prove(all_obstacles(task));
     if (!found) return std::nullopt;
     std::vector<PathPoint> points;
     std::set<int> touched;
@@ -136,12 +137,12 @@ std::optional<ObstacleProof> by_geodesic(const task::Task& task) {
     if (straight) return std::nullopt;
     // Every path point may serve, so that no obstacle left out could make
     // the proof hold again with another point.
-    const auto holds = [&](const std::vector<int>& o) { return prove_geodesic_reach(task, o, false).has_value(); };
+    const auto holds = [&](const std::vector<int>& o) { return prover.prove(o, false).has_value(); };
     std::vector<int> start = overlap_components(task, touched);
     if (!holds(start)) start = all_obstacles(task);
     const std::vector<int> keep = minimise(start, holds);
     ObstacleProof proof;
-    proof.geodesic = prove_geodesic_reach(task, keep);
+    proof.geodesic = prover.prove(keep);
     if (!proof.geodesic) return std::nullopt;
     std::set<int> primitives;
     for (const auto& d : proof.geodesic->detours) primitives.insert(d.primitive);

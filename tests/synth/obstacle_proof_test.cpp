@@ -214,7 +214,7 @@ TEST_CASE("rings: a wall exactly when every gap is narrower than the tube", "[wa
     CHECK(open > 30);
 }
 
-TEST_CASE("walls: a detour proof exactly when the way around is beyond reach", "[walls][property]") {
+TEST_CASE("walls: a detour proof exactly when the way around is beyond reach", "[walls][property][slow]") {
     std::mt19937 rng(16);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     int proved = 0, not_proved = 0;
@@ -256,7 +256,7 @@ TEST_CASE("walls: a detour proof exactly when the way around is beyond reach", "
     CHECK(not_proved > 5);
 }
 
-TEST_CASE("the detour bound never exceeds a way the roadmap finds", "[walls][property][slow]") {
+TEST_CASE("the detour bound never exceeds a way the roadmap finds", "[walls][property]") {
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int trial = 0; trial < 12; ++trial) {

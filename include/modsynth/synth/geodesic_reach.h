@@ -7,6 +7,7 @@
 // segments and arcs of the discs' circles (a visibility graph, exact
 // geometry); the graph keeps every edge that rounding leaves in doubt, so
 // its distances never exceed the true ones.
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -25,10 +26,24 @@ namespace modsynth::synth {
 std::optional<GeodesicWitness> prove_geodesic_reach(const task::Task& task, const std::vector<int>& obstacles,
                                                     bool with_route = true);
 
-/// The same with the path point of each region fixed (points[k] for
-/// base_regions[k]).
-std::optional<GeodesicWitness> prove_geodesic_reach(const task::Task& task, const std::vector<int>& obstacles,
-                                                    const std::vector<PathPoint>& points, bool with_route = true);
+/// The visibility graph of a set of obstacles, kept to try the proof among
+/// subsets of them (what minimising a core does) without building it again.
+class GeodesicProver {
+public:
+    GeodesicProver(const task::Task& task, const std::vector<int>& obstacles);
+    ~GeodesicProver();
+    GeodesicProver(const GeodesicProver&) = delete;
+    GeodesicProver& operator=(const GeodesicProver&) = delete;
+
+    /// prove_geodesic_reach among `among` (a subset of the constructor's
+    /// obstacles), trying only the path points in `only` when it is not empty.
+    std::optional<GeodesicWitness> prove(const std::vector<int>& among, bool with_route = true,
+                                         const std::vector<PathPoint>& only = {}) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 /// Lower bound on the length of every way through the free space of `discs`
 /// from a point of the box [lo, hi] to p, and the way that attains it.
