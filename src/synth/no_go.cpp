@@ -31,7 +31,10 @@ std::vector<PathPoint> path_points(const task::Task& task) {
         out.push_back({j, geometry::point_at(p, geometry::length(p) / 2)});
         if (j + 1 == static_cast<int>(task.trajectory.size())) out.push_back({j, p.end});
     }
-    return out;
+    if (out.size() <= kMaxPathPoints) return out;
+    std::vector<PathPoint> spread;
+    for (std::size_t k = 0; k < kMaxPathPoints; ++k) spread.push_back(out[k * (out.size() - 1) / (kMaxPathPoints - 1)]);
+    return spread;
 }
 
 bool free_point(const std::vector<NoGoDisc>& discs, const geometry::Vec2& p) {

@@ -179,9 +179,13 @@ std::string index_ranges(std::vector<int> indices) {
 }
 
 std::optional<ObstacleProof> prove_obstacle_infeasible(const task::Task& task) {
-    if (task.base_regions.empty() || task.obstacles.empty() || task.robot.dof.empty()) return std::nullopt;
-    if (auto p = by_separation(task)) return p;
-    return by_geodesic(task);
+    if (task.base_regions.empty() || task.obstacles.empty() || task.robot.dof.empty() ||
+        task.base_regions.size() > kMaxProofRegions)
+        return std::nullopt;
+    if (task.obstacles.size() <= kMaxWallObstacles)
+        if (auto p = by_separation(task)) return p;
+    if (task.obstacles.size() <= kMaxDetourObstacles) return by_geodesic(task);
+    return std::nullopt;
 }
 
 }  // namespace modsynth::synth

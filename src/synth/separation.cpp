@@ -16,6 +16,7 @@ using geometry::Vec2;
 // Region cells are split this many times at most where the wall crosses a
 // region: beyond that the region is not proved separated.
 constexpr int kMaxDepth = 7;
+constexpr std::size_t kTriedPoints = 3;
 
 // Whether segments ab and cd cross at a point interior to both (signs of
 // orientations; touching counts as not crossing, and the result is only a
@@ -35,9 +36,27 @@ struct Edge {
 // cycle (a repeated node would split it into two shorter walks, one odd).
 std::vector<int> shortest_odd_cycle(const std::vector<std::vector<Edge>>& adj) {
     const int n = static_cast<int>(adj.size());
+    // Components of the doubled graph first (one pass): a node lies on an
+    // odd closed walk exactly when both its copies share a component, so the
+    // shortest-walk searches below run only where there is one.
+    std::vector<int> component(2 * n, -1);
+    for (int root = 0; root < 2 * n; ++root) {
+        if (component[root] >= 0) continue;
+        std::vector<int> stack{root};
+        component[root] = root;
+        while (!stack.empty()) {
+            const int u = stack.back();
+            stack.pop_back();
+            for (const Edge& e : adj[u / 2]) {
+                const int v = 2 * e.to + ((u % 2) ^ e.parity);
+                if (component[v] < 0) component[v] = root, stack.push_back(v);
+            }
+        }
+    }
     std::vector<int> best;
     std::vector<int> dist(2 * n), parent(2 * n);
     for (int s = 0; s < n; ++s) {
+        if (component[2 * s] != component[2 * s + 1]) continue;
         std::fill(dist.begin(), dist.end(), -1);
         std::queue<int> queue;
         dist[2 * s] = 0;
@@ -159,11 +178,10 @@ std::optional<SeparationWitness> prove_separation(const task::Task& task, const 
     SeparationWitness out;
     for (int region = 0; region < static_cast<int>(task.base_regions.size()); ++region) {
         std::optional<Wall> best;
-        for (const auto& q : points) {
-            auto w = find_wall(task, discs, region, q);
-            if (w && (!best || w->cycle.size() < best->cycle.size())) best = std::move(w);
-            if (best) break;  // the path is connected: one point is as good as another
-        }
+        // When the path keeps out of the discs, one point is as good as
+        // another (the path is connected); a few are tried in case it does not.
+        for (std::size_t k = 0; k < points.size() && k < kTriedPoints && !best; ++k)
+            best = find_wall(task, discs, region, points[k]);
         if (!best) return std::nullopt;
         out.walls.push_back(std::move(*best));
     }

@@ -2,6 +2,7 @@
 // Where no part of any arm can be: each obstacle grown by the tube's radius.
 // Every link (and so the base and the end-effector) keeps out of these open
 // discs (formats.md, guarantee 3), whatever the joint count and lengths.
+#include <cstddef>
 #include <vector>
 
 #include <modsynth/geometry/vec.h>
@@ -19,6 +20,13 @@ struct NoGoDisc {
 /// point as free: rounding must never close a gap a tube could thread.
 constexpr double kNoGoSlack = 1e-9;
 
+/// Sizes beyond which the obstacle proofs are not tried, so that they stay
+/// a matter of milliseconds before the front stage (src/synth/obstacle_proof.cpp).
+constexpr std::size_t kMaxPathPoints = 24;
+constexpr std::size_t kMaxWallObstacles = 400;
+constexpr std::size_t kMaxDetourObstacles = 120;
+constexpr std::size_t kMaxProofRegions = 10;
+
 /// The no-go discs of the listed obstacles.
 std::vector<NoGoDisc> no_go_discs(const task::Task& task, const std::vector<int>& obstacles);
 
@@ -29,7 +37,9 @@ std::vector<int> all_obstacles(const task::Task& task);
 double overlap(const NoGoDisc& a, const NoGoDisc& b);
 
 /// Points of the path the end-effector must visit, as (primitive, point):
-/// the start, middle and end of every primitive.
+/// the start, middle and end of every primitive; on long paths at most
+/// kMaxPathPoints of them, evenly spread (any point the arm must visit
+/// serves a proof: fewer only make proofs rarer).
 struct PathPoint {
     int primitive = 0;
     geometry::Vec2 point = geometry::Vec2::Zero();
