@@ -1,16 +1,15 @@
+#include <modsynth/geometry/distance.h>
+#include <modsynth/geometry/tangents.h>
 #include <modsynth/synth/geodesic_reach.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
-#include <array>
 #include <map>
 #include <memory>
 #include <queue>
 #include <unordered_map>
-
-#include <modsynth/geometry/distance.h>
-#include <modsynth/geometry/tangents.h>
 
 namespace modsynth::synth {
 namespace {
@@ -62,8 +61,8 @@ public:
         for (int i = 0; i < static_cast<int>(discs_.size()); ++i) {
             const auto& d = discs_[i];
             const double r = d.radius - kNoGoSlack;
-            if (d.center.x() < lo.x() - r || d.center.x() > hi.x() + r || d.center.y() < lo.y() - r ||
-                d.center.y() > hi.y() + r)
+            if (d.center.x() < lo.x() - r || d.center.x() > hi.x() + r ||
+                d.center.y() < lo.y() - r || d.center.y() > hi.y() + r)
                 continue;
             if (geometry::point_segment(d.center, a, b) < r) out.push_back(i);
         }
@@ -92,8 +91,10 @@ public:
     // Tangent segments from a free point to every circle.
     void tangents_from(int u) {
         for (int i = 0; i < static_cast<int>(discs_.size()); ++i)
-            for (const Vec2& t : geometry::tangent_points(nodes_[u].p, discs_[i].center, discs_[i].radius))
-                free_links_[u].push_back({add(t, i, u, false, new_segment()), nodes_.back().segment});
+            for (const Vec2& t :
+                 geometry::tangent_points(nodes_[u].p, discs_[i].center, discs_[i].radius))
+                free_links_[u].push_back(
+                    {add(t, i, u, false, new_segment()), nodes_.back().segment});
     }
 
     void build_circles() {
@@ -103,10 +104,12 @@ public:
             // The points where a way leaving a side of an axis-aligned box
             // at right angles first touches the circle.
             for (int k = 0; k < 4; ++k)
-                add(discs_[i].center + discs_[i].radius * geometry::unit(k * geometry::kPi / 2), i, -1, true);
+                add(discs_[i].center + discs_[i].radius * geometry::unit(k * geometry::kPi / 2), i,
+                    -1, true);
             for (int j = i + 1; j < n; ++j)
-                for (const auto& t : geometry::bitangents(discs_[i].center, discs_[i].radius, discs_[j].center,
-                                                          discs_[j].radius, kNoGoSlack)) {
+                for (const auto& t :
+                     geometry::bitangents(discs_[i].center, discs_[i].radius, discs_[j].center,
+                                          discs_[j].radius, kNoGoSlack)) {
                     const int a = static_cast<int>(nodes_.size());
                     const int id = new_segment();
                     add(t.from, i, a + 1, false, id);
@@ -211,19 +214,19 @@ private:
         return all_gone(segment_blockers_[id]);
     }
 
-    const std::vector<int>& cached(std::unordered_map<int, std::vector<int>>& cache, int u, const Vec2& a,
-                                   const Vec2& b) const {
+    const std::vector<int>& cached(std::unordered_map<int, std::vector<int>>& cache, int u,
+                                   const Vec2& a, const Vec2& b) const {
         auto it = cache.find(u);
         if (it == cache.end()) it = cache.emplace(u, blockers(a, b)).first;
         return it->second;
     }
 
     struct Circle {
-        std::vector<int> nodes;           // as added
+        std::vector<int> nodes;  // as added
         bool ready = false;
-        std::vector<int> order;           // by angle
+        std::vector<int> order;                 // by angle
         std::unordered_map<int, int> position;  // node -> index in order
-        std::vector<double> gap;          // angle from order[k] to order[k+1]
+        std::vector<double> gap;                // angle from order[k] to order[k+1]
         std::vector<std::vector<int>> covered;  // the other discs that cover some of that arc
     };
 
@@ -246,8 +249,11 @@ private:
             const double d = v.norm();
             if (d + me.radius <= discs_[j].radius - kNoGoSlack) all.push_back(j);
             if (d + discs_[j].radius <= me.radius || d == 0.0) continue;
-            const double cos_h = (me.radius * me.radius + d * d - discs_[j].radius * discs_[j].radius) / (2 * me.radius * d);
-            covers.push_back({std::atan2(v.y(), v.x()), std::acos(std::clamp(cos_h, -1.0, 1.0)), j});
+            const double cos_h =
+                (me.radius * me.radius + d * d - discs_[j].radius * discs_[j].radius) /
+                (2 * me.radius * d);
+            covers.push_back(
+                {std::atan2(v.y(), v.x()), std::acos(std::clamp(cos_h, -1.0, 1.0)), j});
         }
         std::vector<std::pair<double, int>> around;
         for (int u : c.nodes) {
@@ -259,12 +265,14 @@ private:
             c.position[around[k].second] = static_cast<int>(k);
             c.order.push_back(around[k].second);
             const double a = around[k].first;
-            const double b = k + 1 < around.size() ? around[k + 1].first : around[0].first + geometry::kTau;
+            const double b =
+                k + 1 < around.size() ? around[k + 1].first : around[0].first + geometry::kTau;
             const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
             c.gap.push_back(b - a);
             std::vector<int> by = all;
             for (const Cover& cv : covers)
-                if (std::abs(std::remainder(mid - cv.mid, geometry::kTau)) < half + cv.half - 1e-9) by.push_back(cv.disc);
+                if (std::abs(std::remainder(mid - cv.mid, geometry::kTau)) < half + cv.half - 1e-9)
+                    by.push_back(cv.disc);
             c.covered.push_back(std::move(by));
         }
         return c;
@@ -274,10 +282,12 @@ private:
     std::vector<Node> nodes_;
     std::vector<Circle> circles_;
     std::vector<char> gone_;
-    std::unordered_map<int, std::vector<std::pair<int, int>>> free_links_;  // node -> (node, segment)
+    std::unordered_map<int, std::vector<std::pair<int, int>>>
+        free_links_;  // node -> (node, segment)
     std::vector<std::vector<int>> segment_blockers_;
     std::vector<char> segment_known_;
-    std::map<std::array<double, 4>, std::unordered_map<int, std::vector<int>>> exits_;  // box -> node -> blockers
+    std::map<std::array<double, 4>, std::unordered_map<int, std::vector<int>>>
+        exits_;  // box -> node -> blockers
 };
 
 bool box_free(const std::vector<NoGoDisc>& discs, const Vec2& lo, const Vec2& hi) {
@@ -287,7 +297,8 @@ bool box_free(const std::vector<NoGoDisc>& discs, const Vec2& lo, const Vec2& hi
 }
 
 double reach(const task::Task& task) {
-    return *std::max_element(task.robot.dof.begin(), task.robot.dof.end()) * task.robot.max_link_length;
+    return *std::max_element(task.robot.dof.begin(), task.robot.dof.end()) *
+           task.robot.max_link_length;
 }
 
 }  // namespace
@@ -312,7 +323,8 @@ GeodesicProver::GeodesicProver(const task::Task& task, const std::vector<int>& o
         impl_->point_node.push_back(g.add_free(q.point));
     }
     for (const auto& r : task.base_regions)
-        for (const Vec2& c : {r.min, Vec2{r.max.x(), r.min.y()}, r.max, Vec2{r.min.x(), r.max.y()}}) g.add_free(c);
+        for (const Vec2& c : {r.min, Vec2{r.max.x(), r.min.y()}, r.max, Vec2{r.min.x(), r.max.y()}})
+            g.add_free(c);
     const int count = static_cast<int>(g.nodes().size());
     for (int u = 0; u < count; ++u) {
         if (g.nodes()[u].disc >= 0) continue;
@@ -332,7 +344,8 @@ std::optional<GeodesicWitness> GeodesicProver::prove(const std::vector<int>& amo
     std::vector<char> gone(impl_->obstacles.size(), 1);
     for (int i : among) {
         const auto at = std::find(impl_->obstacles.begin(), impl_->obstacles.end(), i);
-        if (at == impl_->obstacles.end()) throw std::invalid_argument("obstacle not given to the prover");
+        if (at == impl_->obstacles.end())
+            throw std::invalid_argument("obstacle not given to the prover");
         gone[at - impl_->obstacles.begin()] = 0;
     }
     g.leave_out(gone);
@@ -352,15 +365,16 @@ std::optional<GeodesicWitness> GeodesicProver::prove(const std::vector<int>& amo
         bool proved = false;
         for (std::size_t k = 0; k < impl_->points.size() && !proved; ++k) {
             const PathPoint& q = impl_->points[k];
-            const bool listed = only.empty() || std::any_of(only.begin(), only.end(), [&](const PathPoint& o) {
-                                    return o.point == q.point;
-                                });
+            const bool listed =
+                only.empty() || std::any_of(only.begin(), only.end(),
+                                            [&](const PathPoint& o) { return o.point == q.point; });
             if (!listed || !free_point(discs, q.point)) continue;
-            Bound b = g.from_box(impl_->point_node[k], task.base_regions[r].min, task.base_regions[r].max,
-                                 with_route ? kInf : limit + margin);
+            Bound b = g.from_box(impl_->point_node[k], task.base_regions[r].min,
+                                 task.base_regions[r].max, with_route ? kInf : limit + margin);
             if (b.length > limit + margin) {
                 proved = true;
-                out.detours[r] = {static_cast<int>(r), q.primitive, q.point, b.length, std::move(b.route)};
+                out.detours[r] = {static_cast<int>(r), q.primitive, q.point, b.length,
+                                  std::move(b.route)};
             }
         }
         if (!proved) return std::nullopt;
@@ -368,12 +382,13 @@ std::optional<GeodesicWitness> GeodesicProver::prove(const std::vector<int>& amo
     return out;
 }
 
-double geodesic_distance(const std::vector<NoGoDisc>& discs, const Vec2& lo, const Vec2& hi, const Vec2& p,
-                         std::vector<RouteStep>* route) {
+double geodesic_distance(const std::vector<NoGoDisc>& discs, const Vec2& lo, const Vec2& hi,
+                         const Vec2& p, std::vector<RouteStep>* route) {
     Graph g(discs);
     g.build_circles();
     std::vector<int> free{g.add_free(p)};
-    for (const Vec2& c : {lo, Vec2{hi.x(), lo.y()}, hi, Vec2{lo.x(), hi.y()}}) free.push_back(g.add_free(c));
+    for (const Vec2& c : {lo, Vec2{hi.x(), lo.y()}, hi, Vec2{lo.x(), hi.y()}})
+        free.push_back(g.add_free(c));
     for (std::size_t k = 0; k < free.size(); ++k) {
         for (std::size_t m = 0; m < k; ++m) g.segment(free[k], free[m]);
         g.tangents_from(free[k]);
@@ -384,7 +399,8 @@ double geodesic_distance(const std::vector<NoGoDisc>& discs, const Vec2& lo, con
     return b.length;
 }
 
-std::optional<GeodesicWitness> prove_geodesic_reach(const task::Task& task, const std::vector<int>& obstacles,
+std::optional<GeodesicWitness> prove_geodesic_reach(const task::Task& task,
+                                                    const std::vector<int>& obstacles,
                                                     bool with_route) {
     return GeodesicProver(task, obstacles).prove(obstacles, with_route);
 }

@@ -1,6 +1,5 @@
-#include <modsynth/synth/no_go.h>
-
 #include <modsynth/geometry/primitive.h>
+#include <modsynth/synth/no_go.h>
 
 namespace modsynth::synth {
 
@@ -33,7 +32,8 @@ std::vector<PathPoint> path_points(const task::Task& task) {
     }
     if (out.size() <= kMaxPathPoints) return out;
     std::vector<PathPoint> spread;
-    for (std::size_t k = 0; k < kMaxPathPoints; ++k) spread.push_back(out[k * (out.size() - 1) / (kMaxPathPoints - 1)]);
+    for (std::size_t k = 0; k < kMaxPathPoints; ++k)
+        spread.push_back(out[k * (out.size() - 1) / (kMaxPathPoints - 1)]);
     return spread;
 }
 

@@ -1,14 +1,13 @@
-#include <modsynth/synth/obstacle_proof.h>
-
-#include <algorithm>
-#include <set>
-
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/synth/geodesic_reach.h>
 #include <modsynth/synth/no_go.h>
+#include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/synth/separation.h>
 #include <modsynth/text/format.h>
+
+#include <algorithm>
+#include <set>
 
 namespace modsynth::synth {
 namespace {
@@ -42,7 +41,8 @@ std::vector<std::string> core_of(const std::vector<int>& obstacles, const std::s
 
 std::string part_list(const std::set<int>& indices, const char* name) {
     std::string s;
-    for (int j : indices) s += (s.empty() ? "" : ", ") + std::string(name) + "[" + std::to_string(j) + "]";
+    for (int j : indices)
+        s += (s.empty() ? "" : ", ") + std::string(name) + "[" + std::to_string(j) + "]";
     return s;
 }
 
@@ -58,14 +58,17 @@ std::optional<ObstacleProof> by_separation(const task::Task& task) {
     std::set<int> used;
     for (const auto& w : found->walls) used.insert(w.cycle.begin(), w.cycle.end());
     const std::vector<int> keep =
-        minimise({used.begin(), used.end()}, [&](const std::vector<int>& o) { return prove_separation(task, o).has_value(); });
+        minimise({used.begin(), used.end()},
+                 [&](const std::vector<int>& o) { return prove_separation(task, o).has_value(); });
     ObstacleProof proof;
     proof.separation = prove_separation(task, keep);
     if (!proof.separation) return std::nullopt;  // cannot happen: keep was checked
     std::set<int> primitives;
     for (const auto& w : proof.separation->walls) primitives.insert(w.primitive);
     const bool tube = !prove_separation(without_tube(task), keep);
-    proof.core = core_of(keep, primitives, tube ? std::vector<std::string>{"robot.link_diameter"} : std::vector<std::string>{});
+    proof.core = core_of(
+        keep, primitives,
+        tube ? std::vector<std::string>{"robot.link_diameter"} : std::vector<std::string>{});
     // One sentence per distinct wall.
     std::string said;
     std::set<std::vector<int>> walls;
@@ -83,17 +86,22 @@ std::optional<ObstacleProof> by_separation(const task::Task& task) {
             if (s == sorted) regions.insert(v.base_region);
         }
         const bool every = regions.size() == task.base_regions.size();
-        const std::string where = every ? (task.base_regions.size() > 1 ? "every base region" : "the base region")
-                                        : part_list(regions, "base_regions");
+        const std::string where =
+            every ? (task.base_regions.size() > 1 ? "every base region" : "the base region")
+                  : part_list(regions, "base_regions");
         const std::string path = "trajectory[" + std::to_string(w.primitive) + "]";
-        said += (said.empty() ? "" : "; ") + std::string("obstacles ") + index_ranges(w.cycle) + " form a closed wall around " +
-                (around_path ? path + "; " + where + (regions.size() > 1 ? " are" : " is") + " outside it"
-                             : where + "; " + path + " is outside it");
+        said += (said.empty() ? "" : "; ") + std::string("obstacles ") + index_ranges(w.cycle) +
+                " form a closed wall around " +
+                (around_path
+                     ? path + "; " + where + (regions.size() > 1 ? " are" : " is") + " outside it"
+                     : where + "; " + path + " is outside it");
     }
-    said += tube ? text::format(": the gaps between them are narrower than the tube (%.4f m), and an arm is one "
-                                "tube from its base to the path.",
-                                task.robot.link_diameter)
-                 : ": they overlap, and an arm is one tube from its base to the path.";
+    said +=
+        tube ? text::format(
+                   ": the gaps between them are narrower than the tube (%.4f m), and an arm is one "
+                   "tube from its base to the path.",
+                   task.robot.link_diameter)
+             : ": they overlap, and an arm is one tube from its base to the path.";
     proof.message = said;
     return proof;
 }
@@ -108,7 +116,8 @@ std::vector<int> overlap_components(const task::Task& task, const std::set<int>&
         const int i = stack.back();
         stack.pop_back();
         for (std::size_t j = 0; j < discs.size(); ++j)
-            if (!in[j] && overlap(discs[i], discs[j]) > kNoGoSlack) in[j] = true, stack.push_back(static_cast<int>(j));
+            if (!in[j] && overlap(discs[i], discs[j]) > kNoGoSlack)
+                in[j] = true, stack.push_back(static_cast<int>(j));
     }
     std::vector<int> out;
     for (std::size_t i = 0; i < in.size(); ++i)
@@ -137,7 +146,9 @@ std::optional<ObstacleProof> by_geodesic(const task::Task& task) {
     if (straight) return std::nullopt;
     // Every path point may serve, so that no obstacle left out could make
     // the proof hold again with another point.
-    const auto holds = [&](const std::vector<int>& o) { return prover.prove(o, false).has_value(); };
+    const auto holds = [&](const std::vector<int>& o) {
+        return prover.prove(o, false).has_value();
+    };
     std::vector<int> start = overlap_components(task, touched);
     if (!holds(start)) start = all_obstacles(task);
     const std::vector<int> keep = minimise(start, holds);
@@ -147,17 +158,22 @@ std::optional<ObstacleProof> by_geodesic(const task::Task& task) {
     std::set<int> primitives;
     for (const auto& d : proof.geodesic->detours) primitives.insert(d.primitive);
     std::vector<std::string> robot{"robot.max_link_length"};
-    if (!prove_geodesic_reach(without_tube(task), keep, false)) robot.push_back("robot.link_diameter");
+    if (!prove_geodesic_reach(without_tube(task), keep, false))
+        robot.push_back("robot.link_diameter");
     proof.core = core_of(keep, primitives, robot);
     const int links = *std::max_element(task.robot.dof.begin(), task.robot.dof.end());
     std::string said;
     for (const auto& d : proof.geodesic->detours) {
-        said += (said.empty() ? "" : "; ") + std::string("the shortest way around obstacles ") + index_ranges(keep) +
-                " from " + (task.base_regions.size() > 1 ? "base_regions[" + std::to_string(d.base_region) + "]" : "the base region") +
-                " to trajectory[" + std::to_string(d.primitive) + "]" + text::format(" is %.2f m", d.lower_bound);
+        said +=
+            (said.empty() ? "" : "; ") + std::string("the shortest way around obstacles ") +
+            index_ranges(keep) + " from " +
+            (task.base_regions.size() > 1 ? "base_regions[" + std::to_string(d.base_region) + "]"
+                                          : "the base region") +
+            " to trajectory[" + std::to_string(d.primitive) + "]" +
+            text::format(" is %.2f m", d.lower_bound);
     }
-    said += text::format("; %d links of at most %.2f m reach %.2f m.", links, task.robot.max_link_length,
-                         proof.geodesic->reach);
+    said += text::format("; %d links of at most %.2f m reach %.2f m.", links,
+                         task.robot.max_link_length, proof.geodesic->reach);
     proof.message = said;
     return proof;
 }

@@ -1,12 +1,11 @@
+#include <modsynth/geometry/distance.h>
+#include <modsynth/geometry/polygon.h>
+#include <modsynth/synth/no_go.h>
 #include <modsynth/synth/separation.h>
 
 #include <algorithm>
 #include <array>
 #include <queue>
-
-#include <modsynth/geometry/distance.h>
-#include <modsynth/geometry/polygon.h>
-#include <modsynth/synth/no_go.h>
 
 namespace modsynth::synth {
 namespace {
@@ -24,7 +23,8 @@ constexpr std::size_t kTriedPoints = 3;
 bool crosses(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
     const double d1 = geometry::cross(b - a, c - a), d2 = geometry::cross(b - a, d - a);
     const double d3 = geometry::cross(d - c, a - c), d4 = geometry::cross(d - c, b - c);
-    return ((d1 > 0) != (d2 > 0)) && d1 != 0 && d2 != 0 && ((d3 > 0) != (d4 > 0)) && d3 != 0 && d4 != 0;
+    return ((d1 > 0) != (d2 > 0)) && d1 != 0 && d2 != 0 && ((d3 > 0) != (d4 > 0)) && d3 != 0 &&
+           d4 != 0;
 }
 
 struct Edge {
@@ -74,7 +74,9 @@ std::vector<int> shortest_odd_cycle(const std::vector<std::vector<Edge>>& adj) {
                 queue.push(v);
             }
         }
-        if (dist[2 * s + 1] < 0 || (!best.empty() && dist[2 * s + 1] >= static_cast<int>(best.size()))) continue;
+        if (dist[2 * s + 1] < 0 ||
+            (!best.empty() && dist[2 * s + 1] >= static_cast<int>(best.size())))
+            continue;
         best.clear();
         for (int v = 2 * s + 1; v != 2 * s; v = parent[v]) best.push_back(v / 2);
         std::reverse(best.begin(), best.end());
@@ -97,17 +99,19 @@ double polygon_box(const std::vector<Vec2>& poly, const Vec2& lo, const Vec2& hi
 
 // Every point of the cell [lo, hi] is either inside a disc of the wall or on
 // the other side of the polygon from the path point (winding number `wq`).
-bool cell_separated(const std::vector<Vec2>& poly, const std::vector<NoGoDisc>& discs, int wq, const Vec2& lo,
-                    const Vec2& hi, int depth, int& budget) {
+bool cell_separated(const std::vector<Vec2>& poly, const std::vector<NoGoDisc>& discs, int wq,
+                    const Vec2& lo, const Vec2& hi, int depth, int& budget) {
     if (--budget < 0) return false;
     const std::array<Vec2, 4> corners{lo, Vec2{hi.x(), lo.y()}, hi, Vec2{lo.x(), hi.y()}};
     for (const auto& d : discs) {
         // A disc is convex: holding the corners, it holds the cell.
-        if (std::all_of(corners.begin(), corners.end(),
-                        [&](const Vec2& c) { return (c - d.center).norm() < d.radius - kNoGoSlack; }))
+        if (std::all_of(corners.begin(), corners.end(), [&](const Vec2& c) {
+                return (c - d.center).norm() < d.radius - kNoGoSlack;
+            }))
             return true;
     }
-    if (polygon_box(poly, lo, hi) > kNoGoSlack) return geometry::winding_number(poly, 0.5 * (lo + hi)) != wq;
+    if (polygon_box(poly, lo, hi) > kNoGoSlack)
+        return geometry::winding_number(poly, 0.5 * (lo + hi)) != wq;
     if (depth == 0) return false;
     const Vec2 m = 0.5 * (lo + hi);
     return cell_separated(poly, discs, wq, lo, m, depth - 1, budget) &&
@@ -116,8 +120,8 @@ bool cell_separated(const std::vector<Vec2>& poly, const std::vector<NoGoDisc>& 
            cell_separated(poly, discs, wq, {lo.x(), m.y()}, {m.x(), hi.y()}, depth - 1, budget);
 }
 
-std::optional<Wall> find_wall(const task::Task& task, const std::vector<NoGoDisc>& discs, int region,
-                              const PathPoint& q) {
+std::optional<Wall> find_wall(const task::Task& task, const std::vector<NoGoDisc>& discs,
+                              int region, const PathPoint& q) {
     const auto& r = task.base_regions[region];
     const Vec2 b = 0.5 * (r.min + r.max);
     const int n = static_cast<int>(discs.size());
@@ -128,8 +132,8 @@ std::optional<Wall> find_wall(const task::Task& task, const std::vector<NoGoDisc
         for (int i = 0; i < n; ++i) {
             for (int j = i + 1; j < n; ++j) {
                 if (overlap(discs[i], discs[j]) <= kNoGoSlack) continue;
-                if (clear_of_region &&
-                    geometry::segment_box(discs[i].center, discs[j].center, r.min, r.max) <= kNoGoSlack)
+                if (clear_of_region && geometry::segment_box(discs[i].center, discs[j].center,
+                                                             r.min, r.max) <= kNoGoSlack)
                     continue;
                 const int parity = crosses(discs[i].center, discs[j].center, q.point, b) ? 1 : 0;
                 adj[i].push_back({j, parity});
@@ -169,7 +173,8 @@ bool wall_separates(const task::Task& task, const Wall& wall) {
     return cell_separated(poly, discs, wq, r.min, r.max, kMaxDepth, budget);
 }
 
-std::optional<SeparationWitness> prove_separation(const task::Task& task, const std::vector<int>& obstacles) {
+std::optional<SeparationWitness> prove_separation(const task::Task& task,
+                                                  const std::vector<int>& obstacles) {
     if (task.base_regions.empty() || obstacles.size() < 3) return std::nullopt;
     const std::vector<NoGoDisc> discs = no_go_discs(task, obstacles);
     std::vector<PathPoint> points;

@@ -11,7 +11,9 @@ namespace {
 
 using geometry::Vec2;
 
-double no_go(const task::Task& t, int i) { return t.obstacles.at(i).radius + t.robot.link_diameter / 2; }
+double no_go(const task::Task& t, int i) {
+    return t.obstacles.at(i).radius + t.robot.link_diameter / 2;
+}
 
 double seg_dist(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 d = b - a;
@@ -42,11 +44,13 @@ double on_path(const task::Task& t, int j, const Vec2& p) {
     // starts, middles and ends).
     double best = 1e300;
     const double len = geometry::length(prim);
-    for (int i = 0; i <= 2000; ++i) best = std::min(best, (geometry::point_at(prim, len * i / 2000) - p).norm());
+    for (int i = 0; i <= 2000; ++i)
+        best = std::min(best, (geometry::point_at(prim, len * i / 2000) - p).norm());
     return best;
 }
 
-bool free_of(const task::Task& t, const std::vector<int>& obstacles, const Vec2& a, const Vec2& b, double slack) {
+bool free_of(const task::Task& t, const std::vector<int>& obstacles, const Vec2& a, const Vec2& b,
+             double slack) {
     for (int i : obstacles)
         if (seg_dist(t.obstacles.at(i).center, a, b) < no_go(t, i) - slack) return false;
     return true;
@@ -70,16 +74,22 @@ std::string check_separation_witness(const task::Task& t, const synth::Separatio
         if (wall.overlaps.size() != c.size()) return at + "overlaps do not match the cycle";
         std::vector<Vec2> poly;
         for (std::size_t k = 0; k < c.size(); ++k) {
-            if (c[k] < 0 || c[k] >= static_cast<int>(t.obstacles.size())) return at + "no such obstacle";
+            if (c[k] < 0 || c[k] >= static_cast<int>(t.obstacles.size()))
+                return at + "no such obstacle";
             const int a = c[k], b = c[(k + 1) % c.size()];
-            const double depth = no_go(t, a) + no_go(t, b) - (t.obstacles[a].center - t.obstacles[b].center).norm();
-            if (depth <= 0) return at + "obstacles " + std::to_string(a) + " and " + std::to_string(b) + " do not overlap";
+            const double depth =
+                no_go(t, a) + no_go(t, b) - (t.obstacles[a].center - t.obstacles[b].center).norm();
+            if (depth <= 0)
+                return at + "obstacles " + std::to_string(a) + " and " + std::to_string(b) +
+                       " do not overlap";
             if (std::abs(depth - wall.overlaps[k]) > 1e-9) return at + "overlap misreported";
             poly.push_back(t.obstacles[a].center);
         }
-        if (on_path(t, wall.primitive, wall.point) > 1e-6) return at + "the point is not on its primitive";
+        if (on_path(t, wall.primitive, wall.point) > 1e-6)
+            return at + "the point is not on its primitive";
         for (int i : c)
-            if ((wall.point - t.obstacles[i].center).norm() <= no_go(t, i)) return at + "the path point is inside the wall";
+            if ((wall.point - t.obstacles[i].center).norm() <= no_go(t, i))
+                return at + "the path point is inside the wall";
         const int pq = ray_parity(poly, wall.point);
         const auto& r = t.base_regions.at(wall.base_region);
         constexpr int kGrid = 60;
@@ -90,15 +100,16 @@ std::string check_separation_witness(const task::Task& t, const synth::Separatio
                 const bool blocked = std::any_of(c.begin(), c.end(), [&](int i) {
                     return (b - t.obstacles[i].center).norm() < no_go(t, i);
                 });
-                if (!blocked && ray_parity(poly, b) == pq) return at + "a free base position is on the path's side";
+                if (!blocked && ray_parity(poly, b) == pq)
+                    return at + "a free base position is on the path's side";
             }
         }
     }
     return "";
 }
 
-double roadmap_distance(const task::Task& t, const task::BaseRegion& region, const Vec2& p, int per_circle,
-                        const std::vector<int>& among) {
+double roadmap_distance(const task::Task& t, const task::BaseRegion& region, const Vec2& p,
+                        int per_circle, const std::vector<int>& among) {
     const std::vector<int> obstacles = among.empty() ? every(t) : among;
     std::vector<Vec2> pts{p};
     const std::size_t first_region = pts.size();
@@ -146,16 +157,20 @@ std::string check_geodesic_witness(const task::Task& t, const synth::GeodesicWit
         const std::string at = "detour of base_regions[" + std::to_string(d.base_region) + "]: ";
         const auto& r = t.base_regions.at(d.base_region);
         if (d.lower_bound <= w.reach) return at + "the bound is within reach";
-        if (on_path(t, d.primitive, d.point) > 1e-6) return at + "the point is not on its primitive";
+        if (on_path(t, d.primitive, d.point) > 1e-6)
+            return at + "the point is not on its primitive";
         if (d.route.size() < 2) return at + "no route";
-        if (!r.contains(d.route.front().point, 1e-9)) return at + "the route does not start in the region";
-        if ((d.route.back().point - d.point).norm() > 1e-9) return at + "the route does not end at the point";
+        if (!r.contains(d.route.front().point, 1e-9))
+            return at + "the route does not start in the region";
+        if ((d.route.back().point - d.point).norm() > 1e-9)
+            return at + "the route does not end at the point";
         double length = 0;
         for (std::size_t k = 1; k < d.route.size(); ++k) {
             const Vec2 a = d.route[k - 1].point, b = d.route[k].point;
             const int o = d.route[k].around;
             if (o < 0) {
-                if (!free_of(t, w.obstacles, a, b, 1e-7)) return at + "a straight step enters an obstacle";
+                if (!free_of(t, w.obstacles, a, b, 1e-7))
+                    return at + "a straight step enters an obstacle";
                 length += (b - a).norm();
                 continue;
             }
@@ -164,14 +179,18 @@ std::string check_geodesic_witness(const task::Task& t, const synth::GeodesicWit
             if (std::abs((a - c).norm() - rad) > 1e-7 || std::abs((b - c).norm() - rad) > 1e-7)
                 return at + "an arc step leaves its circle";
             const double from = std::atan2((a - c).y(), (a - c).x());
-            const double sweep = std::remainder(std::atan2((b - c).y(), (b - c).x()) - from, geometry::kTau);
+            const double sweep =
+                std::remainder(std::atan2((b - c).y(), (b - c).x()) - from, geometry::kTau);
             for (int i = 0; i <= 16; ++i) {
-                const Vec2 q = c + rad * Vec2(std::cos(from + sweep * i / 16), std::sin(from + sweep * i / 16));
-                if (!free_of(t, w.obstacles, q, q, 1e-7)) return at + "an arc step runs inside another obstacle";
+                const Vec2 q = c + rad * Vec2(std::cos(from + sweep * i / 16),
+                                              std::sin(from + sweep * i / 16));
+                if (!free_of(t, w.obstacles, q, q, 1e-7))
+                    return at + "an arc step runs inside another obstacle";
             }
             length += rad * std::abs(sweep);
         }
-        if (std::abs(length - d.lower_bound) > 1e-6 * (1 + length)) return at + "the route is not as long as the bound";
+        if (std::abs(length - d.lower_bound) > 1e-6 * (1 + length))
+            return at + "the route is not as long as the bound";
         // Falsification: no way the roadmap finds may be shorter.
         const double found = roadmap_distance(t, r, d.point, 48, w.obstacles);
         if (found < d.lower_bound - 1e-9) return at + "the roadmap found a shorter way";

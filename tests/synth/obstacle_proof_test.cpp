@@ -1,10 +1,3 @@
-#include <catch2/catch.hpp>
-
-#include <algorithm>
-#include <chrono>
-#include <filesystem>
-#include <random>
-
 #include <modsynth/geometry/distance.h>
 #include <modsynth/output/solution_io.h>
 #include <modsynth/output/solution_reader.h>
@@ -14,6 +7,12 @@
 #include <modsynth/synth/separation.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/task/task_io.h>
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <filesystem>
+#include <random>
 
 #include "../support/fixtures.h"
 #include "../support/witness_checker.h"
@@ -37,7 +36,8 @@ std::vector<int> core_obstacles(const std::vector<std::string>& core) {
 // n posts of radius r evenly on a circle of radius ring around c.
 std::vector<task::Obstacle> ring(const Vec2& c, double ring, int n, double r, double phase = 0.0) {
     std::vector<task::Obstacle> out;
-    for (int k = 0; k < n; ++k) out.push_back({c + ring * geometry::unit(phase + geometry::kTau * k / n), r});
+    for (int k = 0; k < n; ++k)
+        out.push_back({c + ring * geometry::unit(phase + geometry::kTau * k / n), r});
     return out;
 }
 
@@ -58,7 +58,8 @@ task::Task walled(double half, double max_link) {
     t.name = "walled";
     t.trajectory.push_back(geometry::make_line({1.0, -0.1}, {1.0, 0.1}));
     const int n = static_cast<int>(std::ceil(2 * half / 0.09)) + 1;
-    for (int k = 0; k < n; ++k) t.obstacles.push_back({{0.5, -half + 2 * half * k / (n - 1)}, 0.05});
+    for (int k = 0; k < n; ++k)
+        t.obstacles.push_back({{0.5, -half + 2 * half * k / (n - 1)}, 0.05});
     t.base_regions.push_back({{-0.05, -0.05}, {0.05, 0.05}});
     t.robot.max_link_length = max_link;
     return t;
@@ -82,8 +83,12 @@ TEST_CASE("a ring of posts around the path is a closed wall", "[walls]") {
     // The two decoys (12, 13) are no part of it; the posts overlap, so the
     // tube's diameter is not either.
     CHECK(core_obstacles(proof->core) == std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11});
-    CHECK(std::find(proof->core.begin(), proof->core.end(), "robot.link_diameter") == proof->core.end());
-    CHECK(proof->message.rfind("obstacles 0-11 form a closed wall around trajectory[0]; the base region is outside it", 0) == 0);
+    CHECK(std::find(proof->core.begin(), proof->core.end(), "robot.link_diameter") ==
+          proof->core.end());
+    CHECK(
+        proof->message.rfind(
+            "obstacles 0-11 form a closed wall around trajectory[0]; the base region is outside it",
+            0) == 0);
     CHECK(took < 0.05);
     // A base region that reaches across the wall, where only the post's no-go
     // disc covers its inner part: still separated, cell by cell.
@@ -105,7 +110,8 @@ TEST_CASE("an open sieve whose gaps are narrower than the tube is a closed wall"
     REQUIRE(proof->separation);
     CHECK(testing::check_separation_witness(t, *proof->separation).empty());
     CHECK(core_obstacles(proof->core) == std::vector<int>{2, 3, 4, 5, 6, 7, 8, 9, 10, 11});
-    CHECK(std::find(proof->core.begin(), proof->core.end(), "robot.link_diameter") != proof->core.end());
+    CHECK(std::find(proof->core.begin(), proof->core.end(), "robot.link_diameter") !=
+          proof->core.end());
     // Posts apart in the task, closed only by the tube: a thinner one passes.
     task::Task thin = t;
     thin.robot.link_diameter = 0.02;
@@ -128,7 +134,8 @@ TEST_CASE("a long wall whose way around is beyond reach", "[walls]") {
     const auto core = core_obstacles(proof->core);
     CHECK(core.size() >= 20);
     CHECK(std::find(core.begin(), core.end(), 45) == core.end());  // the decoy
-    CHECK(std::find(proof->core.begin(), proof->core.end(), "robot.max_link_length") != proof->core.end());
+    CHECK(std::find(proof->core.begin(), proof->core.end(), "robot.max_link_length") !=
+          proof->core.end());
     CHECK(proof->message.find("3 links of at most 1.00 m reach 3.00 m") != std::string::npos);
     // Measured on a machine shared with other work: a generous bound.
     CHECK(took < 0.25);
@@ -171,11 +178,13 @@ TEST_CASE("the witnesses travel in the solution JSON and still check after readi
         if (s.explanation.separation) {
             REQUIRE(back.explanation.separation);
             CHECK(testing::check_separation_witness(t, *back.explanation.separation).empty());
-            CHECK(back.explanation.separation->walls[0].cycle == s.explanation.separation->walls[0].cycle);
+            CHECK(back.explanation.separation->walls[0].cycle ==
+                  s.explanation.separation->walls[0].cycle);
         } else {
             REQUIRE(back.explanation.geodesic);
             CHECK(testing::check_geodesic_witness(t, *back.explanation.geodesic).empty());
-            CHECK(back.explanation.geodesic->detours[0].lower_bound == s.explanation.geodesic->detours[0].lower_bound);
+            CHECK(back.explanation.geodesic->detours[0].lower_bound ==
+                  s.explanation.geodesic->detours[0].lower_bound);
         }
     }
 }
@@ -208,13 +217,15 @@ TEST_CASE("rings: a wall exactly when every gap is narrower than the tube", "[wa
         }
         // The path keeps clear of the posts (else the task is invalid).
         bool valid = true;
-        for (const auto& p : posts) valid = valid && geometry::point_primitive(p.center, t.trajectory[0]) > p.radius + 0.02;
+        for (const auto& p : posts)
+            valid = valid && geometry::point_primitive(p.center, t.trajectory[0]) > p.radius + 0.02;
         if (!valid || std::abs(widest - t.robot.link_diameter) < 1e-6) continue;
         const bool closed = widest < t.robot.link_diameter;
         INFO("trial " << trial << ": widest gap " << widest);
         const auto proof = synth::prove_obstacle_infeasible(t);
         CHECK(proof.has_value() == closed);
-        if (proof && proof->separation) CHECK(testing::check_separation_witness(t, *proof->separation).empty());
+        if (proof && proof->separation)
+            CHECK(testing::check_separation_witness(t, *proof->separation).empty());
         // The base moved inside the ring: base and path on one side.
         task::Task inside = t;
         inside.base_regions = {{{0.47, 0.27}, {0.53, 0.33}}};
@@ -225,7 +236,8 @@ TEST_CASE("rings: a wall exactly when every gap is narrower than the tube", "[wa
     CHECK(open > 30);
 }
 
-TEST_CASE("walls: a detour proof exactly when the way around is beyond reach", "[walls][property][slow]") {
+TEST_CASE("walls: a detour proof exactly when the way around is beyond reach",
+          "[walls][property][slow]") {
     std::mt19937 rng(16);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     int proved = 0, not_proved = 0;
@@ -240,7 +252,8 @@ TEST_CASE("walls: a detour proof exactly when the way around is beyond reach", "
         // nearest path point through that end: a lower bound. Through a
         // point well clear of the end: an upper bound.
         const Vec2 corner(0.05, 0.05), q(1.0, 0.1), start(1.0, -0.1);
-        const double lower = (Vec2(0.5, half + r) - corner).norm() + (q - Vec2(0.5, half + r)).norm();
+        const double lower =
+            (Vec2(0.5, half + r) - corner).norm() + (q - Vec2(0.5, half + r)).norm();
         const double upper = (Vec2(0.5, half + r + 0.05) - Vec2(0.05, -0.05)).norm() +
                              (start - Vec2(0.5, half + r + 0.05)).norm();
         if (lower > reach + 1e-6 || upper < reach - 1e-6) {
@@ -286,10 +299,12 @@ TEST_CASE("the detour bound never exceeds a way the roadmap finds", "[walls][pro
 
 TEST_CASE("no planted feasible task is proved infeasible by its obstacles", "[walls]") {
     int checked = 0;
-    for (const char* dir : {"tests/fixtures/planted-obstacles", "tests/fixtures/planted", "tests/fixtures/valid"}) {
+    for (const char* dir :
+         {"tests/fixtures/planted-obstacles", "tests/fixtures/planted", "tests/fixtures/valid"}) {
         for (const auto& e : std::filesystem::directory_iterator(testing::source_path(dir))) {
             const std::string path = e.path().string();
-            if (path.size() < 5 || path.substr(path.size() - 5) != ".json" || path.find(".expect.") != std::string::npos ||
+            if (path.size() < 5 || path.substr(path.size() - 5) != ".json" ||
+                path.find(".expect.") != std::string::npos ||
                 path.find("/ir-") != std::string::npos || path.find("/io-") != std::string::npos)
                 continue;
             task::Task t;

@@ -1,8 +1,8 @@
 #pragma once
 // Lines tangent to circles: the edges of shortest paths among discs.
-#include <vector>
-
 #include <modsynth/geometry/vec.h>
+
+#include <vector>
 
 namespace modsynth::geometry {
 

@@ -7,13 +7,13 @@
 // segments and arcs of the discs' circles (a visibility graph, exact
 // geometry); the graph keeps every edge that rounding leaves in doubt, so
 // its distances never exceed the true ones.
-#include <memory>
-#include <optional>
-#include <vector>
-
 #include <modsynth/synth/no_go.h>
 #include <modsynth/synth/wall_witness.h>
 #include <modsynth/task/task.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
 
 namespace modsynth::synth {
 
@@ -23,7 +23,8 @@ namespace modsynth::synth {
 /// (the proof needs the region free), or the task has no base regions.
 /// Without `with_route`, a search stops as soon as its bound exceeds the
 /// reach: the detours then carry that bound and no route.
-std::optional<GeodesicWitness> prove_geodesic_reach(const task::Task& task, const std::vector<int>& obstacles,
+std::optional<GeodesicWitness> prove_geodesic_reach(const task::Task& task,
+                                                    const std::vector<int>& obstacles,
                                                     bool with_route = true);
 
 /// The visibility graph of a set of obstacles, kept to try the proof among
@@ -47,7 +48,8 @@ private:
 
 /// Lower bound on the length of every way through the free space of `discs`
 /// from a point of the box [lo, hi] to p, and the way that attains it.
-double geodesic_distance(const std::vector<NoGoDisc>& discs, const geometry::Vec2& lo, const geometry::Vec2& hi,
-                         const geometry::Vec2& p, std::vector<RouteStep>* route = nullptr);
+double geodesic_distance(const std::vector<NoGoDisc>& discs, const geometry::Vec2& lo,
+                         const geometry::Vec2& hi, const geometry::Vec2& p,
+                         std::vector<RouteStep>* route = nullptr);
 
 }  // namespace modsynth::synth

@@ -2,11 +2,11 @@
 // Where no part of any arm can be: each obstacle grown by the tube's radius.
 // Every link (and so the base and the end-effector) keeps out of these open
 // discs (formats.md, guarantee 3), whatever the joint count and lengths.
-#include <cstddef>
-#include <vector>
-
 #include <modsynth/geometry/vec.h>
 #include <modsynth/task/task.h>
+
+#include <cstddef>
+#include <vector>
 
 namespace modsynth::synth {
 

@@ -3,12 +3,12 @@
 // closed wall between the base regions and the path (separation.h), or a
 // detour around the obstacles longer than any arm (geodesic_reach.h). Both
 // hold for every allowed joint count and every link length.
+#include <modsynth/synth/wall_witness.h>
+#include <modsynth/task/task.h>
+
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <modsynth/synth/wall_witness.h>
-#include <modsynth/task/task.h>
 
 namespace modsynth::synth {
 

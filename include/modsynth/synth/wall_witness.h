@@ -2,9 +2,9 @@
 // The data of an obstacle-infeasibility proof (formats.md, "explanation.
 // separation" and "explanation.geodesic"): enough for a reader to re-check
 // the claim with nothing but the task.
-#include <vector>
-
 #include <modsynth/geometry/vec.h>
+
+#include <vector>
 
 namespace modsynth::synth {
 
@@ -16,8 +16,9 @@ struct Wall {
     int base_region = 0;
     int primitive = 0;
     geometry::Vec2 point = geometry::Vec2::Zero();
-    std::vector<int> cycle;         ///< obstacle indices in order around the wall
-    std::vector<double> overlaps;   ///< depth of overlap of cycle[k] and cycle[k+1] (last: with cycle[0]), m
+    std::vector<int> cycle;  ///< obstacle indices in order around the wall
+    std::vector<double>
+        overlaps;  ///< depth of overlap of cycle[k] and cycle[k+1] (last: with cycle[0]), m
 };
 
 struct SeparationWitness {
