@@ -76,7 +76,7 @@ int run_explain(const ExplainArgs& a) {
         }
         return s.status == synth::Status::Solved ? kOk : s.status == synth::Status::Infeasible ? kInfeasible : kUnknown;
     }
-    const std::string message = "Proved infeasible: " + synth::describe_conflict(task, proof.core);
+    const std::string message = "Proved infeasible: " + proof.message;
     {
         std::lock_guard<std::mutex> lock(mutex);
         status = synth::Status::Infeasible;

@@ -124,3 +124,22 @@ double disc_segment(const Vec2& center, double radius, const Vec2& a, const Vec2
 }
 
 }  // namespace modsynth::geometry
+
+namespace modsynth::geometry {
+
+Vec2 nearest_in_box(const Vec2& p, const Vec2& lo, const Vec2& hi) { return p.cwiseMax(lo).cwiseMin(hi); }
+
+double point_box(const Vec2& p, const Vec2& lo, const Vec2& hi) { return (p - nearest_in_box(p, lo, hi)).norm(); }
+
+double segment_box(const Vec2& a, const Vec2& b, const Vec2& lo, const Vec2& hi) {
+    const Vec2 corners[4] = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
+    double best = std::min(point_box(a, lo, hi), point_box(b, lo, hi));
+    for (int k = 0; k < 4 && best > 0.0; ++k) {
+        // Disjoint convex sets are nearest at a vertex of one of them, and
+        // they meet if and only if the segment meets a side (or lies inside).
+        best = std::min(best, segment_segment(a, b, corners[k], corners[(k + 1) % 4]));
+    }
+    return best;
+}
+
+}  // namespace modsynth::geometry

@@ -87,3 +87,25 @@ double disc_convex_polygon(const Vec2& center, double radius, const std::vector<
 }
 
 }  // namespace modsynth::geometry
+
+namespace modsynth::geometry {
+
+int winding_number(const std::vector<Vec2>& polygon, const Vec2& p) {
+    // Signed crossings of the horizontal ray from p to +x (Sunday's
+    // algorithm): orientation signs only, no angles.
+    int w = 0;
+    const std::size_t n = polygon.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2& a = polygon[i];
+        const Vec2& b = polygon[(i + 1) % n];
+        const double side = cross(b - a, p - a);
+        if (a.y() <= p.y()) {
+            if (b.y() > p.y() && side > 0.0) ++w;
+        } else if (b.y() <= p.y() && side < 0.0) {
+            --w;
+        }
+    }
+    return w;
+}
+
+}  // namespace modsynth::geometry

@@ -91,6 +91,80 @@ synth::Status parse_status(const json& doc) {
     return synth::status_from_string(text(required(doc, "", "status"), "status"), "status");
 }
 
+geometry::Vec2 parse_point(const json& j, const std::string& part) {
+    require_array(j, part, "2 numbers");
+    if (j.size() != 2) throw InputError(part, "expected [x, y], got " + std::to_string(j.size()) + " numbers");
+    return {finite_number(j[0], element(part, 0)), finite_number(j[1], element(part, 1))};
+}
+
+int index(const json& j, const std::string& part) {
+    return integer(j, part, 0, std::numeric_limits<int>::max());
+}
+
+synth::SeparationWitness parse_separation(const json& j, const std::string& part) {
+    require_object(j, part);
+    synth::SeparationWitness w;
+    const std::string wp = member(part, "walls");
+    const json& walls = required(j, part, "walls");
+    require_array(walls, wp, "walls");
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+        const std::string p = element(wp, k);
+        const json& x = walls[k];
+        require_object(x, p);
+        synth::Wall wall;
+        wall.base_region = index(required(x, p, "base_region"), member(p, "base_region"));
+        wall.primitive = index(required(x, p, "primitive"), member(p, "primitive"));
+        wall.point = parse_point(required(x, p, "point"), member(p, "point"));
+        const json& cycle = required(x, p, "cycle");
+        require_array(cycle, member(p, "cycle"), "obstacle indices");
+        for (std::size_t i = 0; i < cycle.size(); ++i) wall.cycle.push_back(index(cycle[i], element(member(p, "cycle"), i)));
+        const json& overlaps = required(x, p, "overlaps");
+        require_array(overlaps, member(p, "overlaps"), "numbers");
+        for (std::size_t i = 0; i < overlaps.size(); ++i)
+            wall.overlaps.push_back(finite_number(overlaps[i], element(member(p, "overlaps"), i)));
+        if (wall.overlaps.size() != wall.cycle.size())
+            throw InputError(member(p, "overlaps"), "expected one overlap per obstacle of the cycle");
+        w.walls.push_back(std::move(wall));
+    }
+    return w;
+}
+
+synth::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
+    require_object(j, part);
+    synth::GeodesicWitness w;
+    w.reach = finite_number(required(j, part, "reach"), member(part, "reach"));
+    const std::string op = member(part, "obstacles");
+    const json& obstacles = required(j, part, "obstacles");
+    require_array(obstacles, op, "obstacle indices");
+    for (std::size_t i = 0; i < obstacles.size(); ++i) w.obstacles.push_back(index(obstacles[i], element(op, i)));
+    const std::string dp = member(part, "detours");
+    const json& detours = required(j, part, "detours");
+    require_array(detours, dp, "detours");
+    for (std::size_t k = 0; k < detours.size(); ++k) {
+        const std::string p = element(dp, k);
+        const json& x = detours[k];
+        require_object(x, p);
+        synth::Detour d;
+        d.base_region = index(required(x, p, "base_region"), member(p, "base_region"));
+        d.primitive = index(required(x, p, "primitive"), member(p, "primitive"));
+        d.point = parse_point(required(x, p, "point"), member(p, "point"));
+        d.lower_bound = finite_number(required(x, p, "lower_bound"), member(p, "lower_bound"));
+        const std::string rp = member(p, "route");
+        const json& route = required(x, p, "route");
+        require_array(route, rp, "steps");
+        for (std::size_t i = 0; i < route.size(); ++i) {
+            const std::string sp = element(rp, i);
+            require_object(route[i], sp);
+            synth::RouteStep s;
+            s.point = parse_point(required(route[i], sp, "point"), member(sp, "point"));
+            if (const json* a = optional(route[i], "around")) s.around = index(*a, member(sp, "around"));
+            d.route.push_back(s);
+        }
+        w.detours.push_back(std::move(d));
+    }
+    return w;
+}
+
 synth::Explanation parse_explanation(const json& doc) {
     const std::string part = "explanation";
     const json& e = required(doc, "", "explanation");
@@ -104,6 +178,8 @@ synth::Explanation parse_explanation(const json& doc) {
             out.core.push_back(text((*core)[i], element(cp, i)));
         }
     }
+    if (const json* s = optional(e, "separation")) out.separation = parse_separation(*s, member(part, "separation"));
+    if (const json* g = optional(e, "geodesic")) out.geodesic = parse_geodesic(*g, member(part, "geodesic"));
     return out;
 }
 

@@ -6,6 +6,40 @@
 #include <modsynth/io/json_numbers.h>
 
 namespace modsynth::io {
+namespace {
+
+nlohmann::json point(const geometry::Vec2& p) { return {p.x(), p.y()}; }
+
+nlohmann::json to_json(const synth::SeparationWitness& w) {
+    nlohmann::json walls = nlohmann::json::array();
+    for (const auto& x : w.walls)
+        walls.push_back({{"base_region", x.base_region},
+                         {"primitive", x.primitive},
+                         {"point", point(x.point)},
+                         {"cycle", x.cycle},
+                         {"overlaps", x.overlaps}});
+    return {{"walls", walls}};
+}
+
+nlohmann::json to_json(const synth::GeodesicWitness& w) {
+    nlohmann::json detours = nlohmann::json::array();
+    for (const auto& d : w.detours) {
+        nlohmann::json route = nlohmann::json::array();
+        for (const auto& s : d.route) {
+            nlohmann::json step = {{"point", point(s.point)}};
+            if (s.around >= 0) step["around"] = s.around;
+            route.push_back(step);
+        }
+        detours.push_back({{"base_region", d.base_region},
+                           {"primitive", d.primitive},
+                           {"point", point(d.point)},
+                           {"lower_bound", d.lower_bound},
+                           {"route", route}});
+    }
+    return {{"reach", w.reach}, {"obstacles", w.obstacles}, {"detours", detours}};
+}
+
+}  // namespace
 
 nlohmann::json to_json(const synth::Solution& s) {
     nlohmann::json doc;
@@ -14,6 +48,8 @@ nlohmann::json to_json(const synth::Solution& s) {
     doc["status"] = synth::to_string(s.status);
     if (s.status != synth::Status::Solved) {
         doc["explanation"] = {{"message", s.explanation.message}, {"core", s.explanation.core}};
+        if (s.explanation.separation) doc["explanation"]["separation"] = to_json(*s.explanation.separation);
+        if (s.explanation.geodesic) doc["explanation"]["geodesic"] = to_json(*s.explanation.geodesic);
         return doc;
     }
     const auto& r = s.robot;

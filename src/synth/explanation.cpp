@@ -9,6 +9,7 @@
 
 #include <modsynth/geometry/distance.h>
 #include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/text/format.h>
 
@@ -58,8 +59,10 @@ std::string joint_counts(const task::Task& task) {
 }
 
 // Front stage verdict over every allowed joint count: true when some count
-// is satisfiable (the conflict is gone), false when all are unsat or undecided.
+// is satisfiable (the conflict is gone) and no obstacle proof holds, false
+// when all are unsat or undecided.
 bool conflict_free(const task::Task& task, double time_limit, Clock::time_point deadline) {
+    if (prove_obstacle_infeasible(task)) return false;
     for (int dof : task.robot.dof) {
         smt::FrontStageOptions o;
         o.time_limit = time_limit;
@@ -134,6 +137,14 @@ std::vector<std::string> common_core(const task::Task& task,
 
 InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
     InfeasibilityProof proof;
+    if (auto walls = prove_obstacle_infeasible(task)) {
+        proof.proved = true;
+        proof.core = std::move(walls->core);
+        proof.message = std::move(walls->message);
+        proof.separation = std::move(walls->separation);
+        proof.geodesic = std::move(walls->geodesic);
+        return proof;
+    }
     const Clock::time_point deadline = after(time_limit);
     std::vector<std::vector<std::string>> cores;
     for (int dof : task.robot.dof) {
@@ -152,7 +163,10 @@ InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
                                                " joints: no core within the time limit";
     }
     proof.proved = proof.open.empty() && !cores.empty();
-    if (proof.proved) proof.core = common_core(task, cores, std::max(0.0, seconds_until(deadline)));
+    if (proof.proved) {
+        proof.core = common_core(task, cores, std::max(0.0, seconds_until(deadline)));
+        proof.message = describe_conflict(task, proof.core);
+    }
     return proof;
 }
 

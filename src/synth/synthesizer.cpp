@@ -16,6 +16,7 @@
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
+#include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/verify/verifier.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -151,6 +152,20 @@ private:
 Solution Search::run() {
     Solution out;
     out.task_name = task_.name;
+    // Walls and detours first: exact geometry in milliseconds, where the
+    // front stage could only search.
+    const auto t_walls = Clock::now();
+    if (auto walls = prove_obstacle_infeasible(task_)) {
+        stats_.front_seconds += seconds_since(t_walls);
+        say("obstacles: proved infeasible, " + walls->message);
+        out.status = Status::Infeasible;
+        out.explanation.message = "Proved infeasible: " + walls->message;
+        out.explanation.core = std::move(walls->core);
+        out.explanation.separation = std::move(walls->separation);
+        out.explanation.geodesic = std::move(walls->geodesic);
+        return out;
+    }
+    stats_.front_seconds += seconds_since(t_walls);
     std::vector<std::vector<std::string>> cores;
     bool all_unsat = true;
     for (int dof : task_.robot.dof) {

@@ -186,7 +186,8 @@ TEST_CASE("docs/formats.md: the project additions are marked and cover the exten
     for (const char* key : {"`robot.module_length`", "`robot.module_width`", "`robot.module_height`",
                             "`robot.adapter_length`", "`robot.ee_rod_diameter`", "`robot.elbow`",
                             "`certificate.min_clearance_margin`", "`certificate.min_self_collision_margin`",
-                            "`certificate.max_ee_deviation`", "`certificate.max_joint_step`"}) {
+                            "`certificate.max_ee_deviation`", "`certificate.max_joint_step`",
+                            "`explanation.separation`", "`explanation.geodesic`"}) {
         INFO(key);
         CHECK(text.find(key) != std::string::npos);
     }

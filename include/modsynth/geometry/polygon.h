@@ -16,5 +16,9 @@ bool point_in_convex_polygon(const Vec2& p, const std::vector<Vec2>& polygon);
 double point_convex_polygon(const Vec2& p, const std::vector<Vec2>& polygon);
 /// Gap between a disc and a convex polygon (ccw), 0 when they overlap.
 double disc_convex_polygon(const Vec2& center, double radius, const std::vector<Vec2>& polygon);
+/// How many times the closed polygon (any shape, self-crossings allowed; the
+/// last vertex joins the first) winds counter-clockwise around p. Exact for
+/// points well off the polygon; on it, either neighbouring value.
+int winding_number(const std::vector<Vec2>& polygon, const Vec2& p);
 
 }  // namespace modsynth::geometry

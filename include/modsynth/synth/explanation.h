@@ -2,9 +2,11 @@
 // Explaining infeasible tasks: proofs over every allowed joint count, cores
 // in task terms, a sentence a non-expert can act on, and the smallest
 // changes that remove the conflict, each re-checked before it is offered.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <modsynth/synth/solution.h>
 #include <modsynth/synth/status.h>
 #include <modsynth/task/task.h>
 
@@ -17,6 +19,11 @@ struct InfeasibilityProof {
     std::vector<std::string> core;
     /// When not proved: which joint counts stayed satisfiable or undecided.
     std::string open;
+    /// When proved: the proof in words, and the witnesses of an obstacle
+    /// proof (then `core` is that proof's).
+    std::string message;
+    std::optional<SeparationWitness> separation;
+    std::optional<GeodesicWitness> geodesic;
 };
 
 /// The front stage over every allowed joint count, within `time_limit`

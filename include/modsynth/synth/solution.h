@@ -1,11 +1,13 @@
 #pragma once
 // What synthesis answers: a certified robot and its control, or a reason.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <modsynth/control/motion.h>
 #include <modsynth/kinematics/robot.h>
 #include <modsynth/synth/status.h>
+#include <modsynth/synth/wall_witness.h>
 #include <modsynth/verify/verifier.h>
 
 namespace modsynth::synth {
@@ -13,6 +15,10 @@ namespace modsynth::synth {
 struct Explanation {
     std::string message;
     std::vector<std::string> core;  ///< task parts, named as in formats.md
+    /// The data of an obstacle proof, when the task was proved infeasible
+    /// that way (formats.md, "explanation.separation", ".geodesic").
+    std::optional<SeparationWitness> separation;
+    std::optional<GeodesicWitness> geodesic;
 };
 
 struct Solution {

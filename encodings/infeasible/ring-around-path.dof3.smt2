@@ -1,0 +1,197 @@
+; 
+(set-info :status unknown)
+(declare-fun r1 () Real)
+(declare-fun robot.min_link_length () Bool)
+(declare-fun robot.max_link_length () Bool)
+(declare-fun r2 () Real)
+(declare-fun r3 () Real)
+(declare-fun robot.link_diameter () Bool)
+(declare-fun base_y () Real)
+(declare-fun base_x () Real)
+(declare-fun in_region_0 () Bool)
+(declare-fun base_regions () Bool)
+(declare-fun |obstacles[0]| () Bool)
+(declare-fun |obstacles[1]| () Bool)
+(declare-fun |obstacles[2]| () Bool)
+(declare-fun |obstacles[3]| () Bool)
+(declare-fun |obstacles[4]| () Bool)
+(declare-fun |obstacles[5]| () Bool)
+(declare-fun |obstacles[6]| () Bool)
+(declare-fun |obstacles[7]| () Bool)
+(declare-fun |obstacles[8]| () Bool)
+(declare-fun |obstacles[9]| () Bool)
+(declare-fun |obstacles[10]| () Bool)
+(declare-fun |obstacles[11]| () Bool)
+(declare-fun |obstacles[12]| () Bool)
+(declare-fun |obstacles[13]| () Bool)
+(declare-fun reach () Real)
+(declare-fun |trajectory[0]| () Bool)
+(assert
+ (> r1 0.0))
+(assert
+ (let (($x16 (and robot.min_link_length)))
+ (=> $x16 (>= r1 (/ 499999.0 10000000.0)))))
+(assert
+ (let (($x21 (and robot.max_link_length)))
+ (=> $x21 (<= r1 (/ 10000001.0 10000000.0)))))
+(assert
+ (> r2 0.0))
+(assert
+ (let (($x16 (and robot.min_link_length)))
+ (=> $x16 (>= r2 (/ 499999.0 10000000.0)))))
+(assert
+ (let (($x21 (and robot.max_link_length)))
+ (=> $x21 (<= r2 (/ 10000001.0 10000000.0)))))
+(assert
+ (> r3 0.0))
+(assert
+ (let (($x16 (and robot.min_link_length)))
+ (=> $x16 (>= r3 (/ 499999.0 10000000.0)))))
+(assert
+ (let (($x21 (and robot.max_link_length)))
+ (=> $x21 (<= r3 (/ 10000001.0 10000000.0)))))
+(assert
+ (=> (and robot.link_diameter) (>= r3 (/ 317499.0 10000000.0))))
+(assert
+ (let (($x45 (and (and (>= base_x (- (/ 500001.0 10000000.0))) (<= base_x (/ 500001.0 10000000.0))) (>= base_y (- (/ 500001.0 10000000.0))))))
+ (=> in_region_0 (and $x45 (<= base_y (/ 500001.0 10000000.0))))))
+(assert
+ (=> (and base_regions) (or in_region_0)))
+(assert
+ (let ((?x57 (- (/ 3.0 10.0) base_y)))
+ (let ((?x58 (* ?x57 ?x57)))
+ (=> (and |obstacles[0]| robot.link_diameter) (>= (+ (* (- (/ 7.0 10.0) base_x) (- (/ 7.0 10.0) base_x)) ?x58) (/ 115140009.0 20000000000.0))))))
+(assert
+ (let ((?x68 (- (/ 2.0 5.0) base_y)))
+ (let ((?x69 (* ?x68 ?x68)))
+ (let ((?x66 (- (/ 134641.0 200000.0) base_x)))
+ (let ((?x70 (* ?x66 ?x66)))
+ (=> (and |obstacles[1]| robot.link_diameter) (>= (+ ?x70 ?x69) (/ 115140009.0 20000000000.0))))))))
+(assert
+ (let ((?x79 (- (/ 94641.0 200000.0) base_y)))
+ (let ((?x80 (* ?x79 ?x79)))
+ (let ((?x77 (- (/ 3.0 5.0) base_x)))
+ (let ((?x81 (* ?x77 ?x77)))
+ (=> (and |obstacles[2]| robot.link_diameter) (>= (+ ?x81 ?x80) (/ 115140009.0 20000000000.0))))))))
+(assert
+ (let ((?x88 (- (/ 1.0 2.0) base_x)))
+ (let ((?x91 (* ?x88 ?x88)))
+ (=> (and |obstacles[3]| robot.link_diameter) (>= (+ ?x91 (* (- (/ 1.0 2.0) base_y) (- (/ 1.0 2.0) base_y))) (/ 115140009.0 20000000000.0))))))
+(assert
+ (let ((?x79 (- (/ 94641.0 200000.0) base_y)))
+ (let ((?x80 (* ?x79 ?x79)))
+ (let ((?x97 (- (/ 2.0 5.0) base_x)))
+ (let ((?x98 (* ?x97 ?x97)))
+ (=> (and |obstacles[4]| robot.link_diameter) (>= (+ ?x98 ?x80) (/ 115140009.0 20000000000.0))))))))
+(assert
+ (let ((?x68 (- (/ 2.0 5.0) base_y)))
+ (let ((?x69 (* ?x68 ?x68)))
+ (let ((?x105 (- (/ 65359.0 200000.0) base_x)))
+ (let ((?x106 (* ?x105 ?x105)))
+ (=> (and |obstacles[5]| robot.link_diameter) (>= (+ ?x106 ?x69) (/ 115140009.0 20000000000.0))))))))
+(assert
+ (let ((?x57 (- (/ 3.0 10.0) base_y)))
+ (let ((?x58 (* ?x57 ?x57)))
+ (=> (and |obstacles[6]| robot.link_diameter) (>= (+ (* (- (/ 3.0 10.0) base_x) (- (/ 3.0 10.0) base_x)) ?x58) (/ 115140009.0 20000000000.0))))))
+(assert
+ (let ((?x120 (- (/ 1.0 5.0) base_y)))
+ (let ((?x121 (* ?x120 ?x120)))
+ (let ((?x105 (- (/ 65359.0 200000.0) base_x)))
+ (let ((?x106 (* ?x105 ?x105)))
+ (=> (and |obstacles[7]| robot.link_diameter) (>= (+ ?x106 ?x121) (/ 115140009.0 20000000000.0))))))))
+(assert
+ (let ((?x128 (- (/ 25359.0 200000.0) base_y)))
+ (let ((?x129 (* ?x128 ?x128)))
+ (let ((?x97 (- (/ 2.0 5.0) base_x)))
+ (let ((?x98 (* ?x97 ?x97)))
+ (=> (and |obstacles[8]| robot.link_diameter) (>= (+ ?x98 ?x129) (/ 115140009.0 20000000000.0))))))))
+(assert
+ (let ((?x88 (- (/ 1.0 2.0) base_x)))
+ (let ((?x91 (* ?x88 ?x88)))
+ (=> (and |obstacles[9]| robot.link_diameter) (>= (+ ?x91 (* (- (/ 1.0 10.0) base_y) (- (/ 1.0 10.0) base_y))) (/ 115140009.0 20000000000.0))))))
+(assert
+ (let ((?x128 (- (/ 25359.0 200000.0) base_y)))
+ (let ((?x129 (* ?x128 ?x128)))
+ (let ((?x77 (- (/ 3.0 5.0) base_x)))
+ (let ((?x81 (* ?x77 ?x77)))
+ (=> (and |obstacles[10]| robot.link_diameter) (>= (+ ?x81 ?x129) (/ 115140009.0 20000000000.0))))))))
+(assert
+ (let ((?x120 (- (/ 1.0 5.0) base_y)))
+ (let ((?x121 (* ?x120 ?x120)))
+ (let ((?x66 (- (/ 134641.0 200000.0) base_x)))
+ (let ((?x70 (* ?x66 ?x66)))
+ (=> (and |obstacles[11]| robot.link_diameter) (>= (+ ?x70 ?x121) (/ 115140009.0 20000000000.0))))))))
+(assert
+ (let ((?x159 (+ (* (- 0.0 base_x) (- 0.0 base_x)) (* (- (/ 9.0 20.0) base_y) (- (/ 9.0 20.0) base_y)))))
+ (=> (and |obstacles[12]| robot.link_diameter) (>= ?x159 (/ 62440089.0 20000000000.0)))))
+(assert
+ (let ((?x170 (+ (* (- (/ 9.0 10.0) base_x) (- (/ 9.0 10.0) base_x)) (* (- 0.0 base_y) (- 0.0 base_y)))))
+ (=> (and |obstacles[13]| robot.link_diameter) (>= ?x170 (/ 86790049.0 20000000000.0)))))
+(assert
+ (= reach (+ (+ r1 r2) r3)))
+(assert
+ (let ((?x185 (+ (* reach reach) (/ 1.0 10000000.0))))
+ (let ((?x57 (- (/ 3.0 10.0) base_y)))
+ (let ((?x58 (* ?x57 ?x57)))
+ (let (($x188 (and |trajectory[0]|)))
+ (=> $x188 (<= (+ (* (- (/ 29.0 50.0) base_x) (- (/ 29.0 50.0) base_x)) ?x58) ?x185)))))))
+(assert
+ (let ((?x185 (+ (* reach reach) (/ 1.0 10000000.0))))
+ (let ((?x193 (- (/ 71313708499.0 200000000000.0) base_y)))
+ (let ((?x194 (* ?x193 ?x193)))
+ (let ((?x191 (- (/ 111313708499.0 200000000000.0) base_x)))
+ (let ((?x195 (* ?x191 ?x191)))
+ (let (($x188 (and |trajectory[0]|)))
+ (=> $x188 (<= (+ ?x195 ?x194) ?x185)))))))))
+(assert
+ (let ((?x185 (+ (* reach reach) (/ 1.0 10000000.0))))
+ (let ((?x88 (- (/ 1.0 2.0) base_x)))
+ (let ((?x91 (* ?x88 ?x88)))
+ (let (($x188 (and |trajectory[0]|)))
+ (=> $x188 (<= (+ ?x91 (* (- (/ 19.0 50.0) base_y) (- (/ 19.0 50.0) base_y))) ?x185)))))))
+(assert
+ (let ((?x185 (+ (* reach reach) (/ 1.0 10000000.0))))
+ (let ((?x193 (- (/ 71313708499.0 200000000000.0) base_y)))
+ (let ((?x194 (* ?x193 ?x193)))
+ (let ((?x206 (- (/ 88686291501.0 200000000000.0) base_x)))
+ (let ((?x207 (* ?x206 ?x206)))
+ (let (($x188 (and |trajectory[0]|)))
+ (=> $x188 (<= (+ ?x207 ?x194) ?x185)))))))))
+(assert
+ (let ((?x185 (+ (* reach reach) (/ 1.0 10000000.0))))
+ (let ((?x57 (- (/ 3.0 10.0) base_y)))
+ (let ((?x58 (* ?x57 ?x57)))
+ (let (($x188 (and |trajectory[0]|)))
+ (=> $x188 (<= (+ (* (- (/ 21.0 50.0) base_x) (- (/ 21.0 50.0) base_x)) ?x58) ?x185)))))))
+(assert
+ (let ((?x185 (+ (* reach reach) (/ 1.0 10000000.0))))
+ (let ((?x218 (- (/ 48686291501.0 200000000000.0) base_y)))
+ (let ((?x219 (* ?x218 ?x218)))
+ (let ((?x206 (- (/ 88686291501.0 200000000000.0) base_x)))
+ (let ((?x207 (* ?x206 ?x206)))
+ (let (($x188 (and |trajectory[0]|)))
+ (=> $x188 (<= (+ ?x207 ?x219) ?x185)))))))))
+(assert
+ (let ((?x185 (+ (* reach reach) (/ 1.0 10000000.0))))
+ (let ((?x88 (- (/ 1.0 2.0) base_x)))
+ (let ((?x91 (* ?x88 ?x88)))
+ (let (($x188 (and |trajectory[0]|)))
+ (=> $x188 (<= (+ ?x91 (* (- (/ 11.0 50.0) base_y) (- (/ 11.0 50.0) base_y))) ?x185)))))))
+(assert
+ (let ((?x185 (+ (* reach reach) (/ 1.0 10000000.0))))
+ (let ((?x218 (- (/ 48686291501.0 200000000000.0) base_y)))
+ (let ((?x219 (* ?x218 ?x218)))
+ (let ((?x191 (- (/ 111313708499.0 200000000000.0) base_x)))
+ (let ((?x195 (* ?x191 ?x191)))
+ (let (($x188 (and |trajectory[0]|)))
+ (=> $x188 (<= (+ ?x195 ?x219) ?x185)))))))))
+(assert
+ (let ((?x185 (+ (* reach reach) (/ 1.0 10000000.0))))
+ (let ((?x57 (- (/ 3.0 10.0) base_y)))
+ (let ((?x58 (* ?x57 ?x57)))
+ (let (($x188 (and |trajectory[0]|)))
+ (=> $x188 (<= (+ (* (- (/ 29.0 50.0) base_x) (- (/ 29.0 50.0) base_x)) ?x58) ?x185)))))))
+(assert
+ (let (($x188 (and |trajectory[0]|)))
+ (=> $x188 (>= (* 2.0 reach) (/ 1599999.0 10000000.0)))))
+(check-sat-assuming (|robot.min_link_length| |robot.max_link_length| |robot.link_diameter| |base_regions| |obstacles[0]| |obstacles[1]| |obstacles[2]| |obstacles[3]| |obstacles[4]| |obstacles[5]| |obstacles[6]| |obstacles[7]| |obstacles[8]| |obstacles[9]| |obstacles[10]| |obstacles[11]| |obstacles[12]| |obstacles[13]| |trajectory[0]|))

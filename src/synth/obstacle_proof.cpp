@@ -1,0 +1,207 @@
+#include <modsynth/geometry/distance.h>
+#include <modsynth/geometry/polygon.h>
+#include <modsynth/synth/geodesic_reach.h>
+#include <modsynth/synth/no_go.h>
+#include <modsynth/synth/obstacle_proof.h>
+#include <modsynth/synth/separation.h>
+#include <modsynth/text/format.h>
+
+#include <algorithm>
+#include <set>
+
+namespace modsynth::synth {
+namespace {
+
+using geometry::Vec2;
+
+// Drops obstacles one at a time while `holds` still does. Both proofs are
+// monotone (fewer obstacles, less blocked), and every obstacle kept failed
+// alone against a superset of what remains, so what remains is minimal.
+// (Trying halves first costs more: in a wall most obstacles are needed, and
+// a failed half only splits.)
+template <typename Holds>
+std::vector<int> minimise(std::vector<int> keep, Holds holds) {
+    for (std::size_t k = keep.size(); k-- > 0;) {
+        std::vector<int> fewer = keep;
+        fewer.erase(fewer.begin() + static_cast<long>(k));
+        if (holds(fewer)) keep = std::move(fewer);
+    }
+    return keep;
+}
+
+std::vector<std::string> core_of(const std::vector<int>& obstacles, const std::set<int>& primitives,
+                                 const std::vector<std::string>& robot_parts) {
+    std::vector<std::string> core;
+    for (int j : primitives) core.push_back("trajectory[" + std::to_string(j) + "]");
+    for (int i : obstacles) core.push_back("obstacles[" + std::to_string(i) + "]");
+    core.push_back("base_regions");
+    for (const auto& p : robot_parts) core.push_back(p);
+    return core;
+}
+
+std::string part_list(const std::set<int>& indices, const char* name) {
+    std::string s;
+    for (int j : indices)
+        s += (s.empty() ? "" : ", ") + std::string(name) + "[" + std::to_string(j) + "]";
+    return s;
+}
+
+task::Task without_tube(const task::Task& task) {
+    task::Task t = task;
+    t.robot.link_diameter = 0.0;
+    return t;
+}
+
+std::optional<ObstacleProof> by_separation(const task::Task& task) {
+    auto found = prove_separation(task, all_obstacles(task));
+    if (!found) return std::nullopt;
+    std::set<int> used;
+    for (const auto& w : found->walls) used.insert(w.cycle.begin(), w.cycle.end());
+    const std::vector<int> keep =
+        minimise({used.begin(), used.end()},
+                 [&](const std::vector<int>& o) { return prove_separation(task, o).has_value(); });
+    ObstacleProof proof;
+    proof.separation = prove_separation(task, keep);
+    if (!proof.separation) return std::nullopt;  // cannot happen: keep was checked
+    std::set<int> primitives;
+    for (const auto& w : proof.separation->walls) primitives.insert(w.primitive);
+    const bool tube = !prove_separation(without_tube(task), keep);
+    proof.core = core_of(
+        keep, primitives,
+        tube ? std::vector<std::string>{"robot.link_diameter"} : std::vector<std::string>{});
+    // One sentence per distinct wall.
+    std::string said;
+    std::set<std::vector<int>> walls;
+    for (const auto& w : proof.separation->walls) {
+        std::vector<int> sorted = w.cycle;
+        std::sort(sorted.begin(), sorted.end());
+        if (!walls.insert(sorted).second) continue;
+        std::vector<Vec2> poly;
+        for (int i : w.cycle) poly.push_back(task.obstacles[i].center);
+        const bool around_path = geometry::winding_number(poly, w.point) != 0;
+        std::set<int> regions;
+        for (const auto& v : proof.separation->walls) {
+            std::vector<int> s = v.cycle;
+            std::sort(s.begin(), s.end());
+            if (s == sorted) regions.insert(v.base_region);
+        }
+        const bool every = regions.size() == task.base_regions.size();
+        const std::string where =
+            every ? (task.base_regions.size() > 1 ? "every base region" : "the base region")
+                  : part_list(regions, "base_regions");
+        const std::string path = "trajectory[" + std::to_string(w.primitive) + "]";
+        said += (said.empty() ? "" : "; ") + std::string("obstacles ") + index_ranges(w.cycle) +
+                " form a closed wall around " +
+                (around_path
+                     ? path + "; " + where + (regions.size() > 1 ? " are" : " is") + " outside it"
+                     : where + "; " + path + " is outside it");
+    }
+    said +=
+        tube ? text::format(
+                   ": the gaps between them are narrower than the tube (%.4f m), and an arm is one "
+                   "tube from its base to the path.",
+                   task.robot.link_diameter)
+             : ": they overlap, and an arm is one tube from its base to the path.";
+    proof.message = said;
+    return proof;
+}
+
+// Obstacles that overlap, directly or through others, one of `seeds`.
+std::vector<int> overlap_components(const task::Task& task, const std::set<int>& seeds) {
+    const auto discs = no_go_discs(task, all_obstacles(task));
+    std::vector<bool> in(discs.size(), false);
+    std::vector<int> stack(seeds.begin(), seeds.end());
+    for (int s : stack) in[s] = true;
+    while (!stack.empty()) {
+        const int i = stack.back();
+        stack.pop_back();
+        for (std::size_t j = 0; j < discs.size(); ++j)
+            if (!in[j] && overlap(discs[i], discs[j]) > kNoGoSlack)
+                in[j] = true, stack.push_back(static_cast<int>(j));
+    }
+    std::vector<int> out;
+    for (std::size_t i = 0; i < in.size(); ++i)
+        if (in[i]) out.push_back(static_cast<int>(i));
+    return out;
+}
+
+std::optional<ObstacleProof> by_geodesic(const task::Task& task) {
+    const GeodesicProver prover(task, all_obstacles(task));
+    auto found = prover.prove(all_obstacles(task));
+    if (!found) return std::nullopt;
+    std::vector<PathPoint> points;
+    std::set<int> touched;
+    for (const auto& d : found->detours) {
+        points.push_back({d.primitive, d.point});
+        for (const auto& s : d.route)
+            if (s.around >= 0) touched.insert(s.around);
+    }
+    // Without any obstacle the path is out of reach: the front stage's
+    // proof, which needs no obstacle, is the better explanation.
+    bool straight = true;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const auto& r = task.base_regions[k];
+        straight = straight && geometry::point_box(points[k].point, r.min, r.max) > found->reach;
+    }
+    if (straight) return std::nullopt;
+    // Every path point may serve, so that no obstacle left out could make
+    // the proof hold again with another point.
+    const auto holds = [&](const std::vector<int>& o) {
+        return prover.prove(o, false).has_value();
+    };
+    std::vector<int> start = overlap_components(task, touched);
+    if (!holds(start)) start = all_obstacles(task);
+    const std::vector<int> keep = minimise(start, holds);
+    ObstacleProof proof;
+    proof.geodesic = prover.prove(keep);
+    if (!proof.geodesic) return std::nullopt;
+    std::set<int> primitives;
+    for (const auto& d : proof.geodesic->detours) primitives.insert(d.primitive);
+    std::vector<std::string> robot{"robot.max_link_length"};
+    if (!prove_geodesic_reach(without_tube(task), keep, false))
+        robot.push_back("robot.link_diameter");
+    proof.core = core_of(keep, primitives, robot);
+    const int links = *std::max_element(task.robot.dof.begin(), task.robot.dof.end());
+    std::string said;
+    for (const auto& d : proof.geodesic->detours) {
+        said +=
+            (said.empty() ? "" : "; ") + std::string("the shortest way around obstacles ") +
+            index_ranges(keep) + " from " +
+            (task.base_regions.size() > 1 ? "base_regions[" + std::to_string(d.base_region) + "]"
+                                          : "the base region") +
+            " to trajectory[" + std::to_string(d.primitive) + "]" +
+            text::format(" is %.2f m", d.lower_bound);
+    }
+    said += text::format("; %d links of at most %.2f m reach %.2f m.", links,
+                         task.robot.max_link_length, proof.geodesic->reach);
+    proof.message = said;
+    return proof;
+}
+
+}  // namespace
+
+std::string index_ranges(std::vector<int> indices) {
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    std::string s;
+    for (std::size_t k = 0; k < indices.size();) {
+        std::size_t e = k;
+        while (e + 1 < indices.size() && indices[e + 1] == indices[e] + 1) ++e;
+        s += (s.empty() ? "" : ", ") + std::to_string(indices[k]);
+        if (e > k) s += (e == k + 1 ? ", " : "-") + std::to_string(indices[e]);
+        k = e + 1;
+    }
+    return s;
+}
+
+std::optional<ObstacleProof> prove_obstacle_infeasible(const task::Task& task) {
+    if (task.base_regions.empty() || task.obstacles.empty() || task.robot.dof.empty() ||
+        task.base_regions.size() > kMaxProofRegions)
+        return std::nullopt;
+    if (task.obstacles.size() <= kMaxWallObstacles)
+        if (auto p = by_separation(task)) return p;
+    if (task.obstacles.size() <= kMaxDetourObstacles) return by_geodesic(task);
+    return std::nullopt;
+}
+
+}  // namespace modsynth::synth
