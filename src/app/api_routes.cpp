@@ -150,8 +150,7 @@ json job_json(const JobState& s) {
 /// (httplib bounds a Content-Length, not a chunked body); nothing after
 /// replying 413 or 400.
 std::optional<std::string> read_capped_body(const Request& req, Response& res,
-                                            const httplib::ContentReader& reader,
-                                            std::size_t max) {
+                                            const httplib::ContentReader& reader, std::size_t max) {
     std::string body;
     // Without a length or chunks a request has no body (RFC 9112, 6.3).
     if (!req.has_header("Content-Length") && !req.has_header("Transfer-Encoding")) return body;
@@ -224,8 +223,10 @@ public:
         server.Get("/api/info", [self](const Request&, Response& res) { self->info(res); });
         post(server, "/api/validate",
              [](const Request&, Response& res, const std::string& body) { validate(body, res); });
-        post(server, "/api/solve", [self](const Request& req, Response& res,
-                                          const std::string& body) { self->solve(req, res, body); });
+        post(server, "/api/solve",
+             [self](const Request& req, Response& res, const std::string& body) {
+                 self->solve(req, res, body);
+             });
         server.Get(R"(/api/jobs/([0-9a-f]+))",
                    [self](const Request& req, Response& res) { self->job(req, res); });
         server.Get(R"(/api/jobs/([0-9a-f]+)/events)",
@@ -258,12 +259,12 @@ public:
     /// A POST route whose handler gets the body, read within max_body.
     template <typename Handler>
     void post(httplib::Server& server, const std::string& pattern, Handler handler) {
-        server.Post(pattern, [self = shared_from_this(), handler](
-                                 const Request& req, Response& res,
-                                 const httplib::ContentReader& reader) {
-            const auto body = read_capped_body(req, res, reader, self->settings_.max_body);
-            if (body) handler(req, res, *body);
-        });
+        server.Post(
+            pattern, [self = shared_from_this(), handler](const Request& req, Response& res,
+                                                          const httplib::ContentReader& reader) {
+                const auto body = read_capped_body(req, res, reader, self->settings_.max_body);
+                if (body) handler(req, res, *body);
+            });
     }
 
 private:
@@ -287,8 +288,9 @@ private:
             return R::Handled;
         }
         if (req.path.size() > kLongestPath) {
-            send_final_error(res, 414, "request path longer than " +
-                                           std::to_string(kLongestPath) + " characters");
+            send_final_error(
+                res, 414,
+                "request path longer than " + std::to_string(kLongestPath) + " characters");
             return R::Handled;
         }
         // httplib would read the body of a POST that no route takes, with
@@ -312,8 +314,9 @@ private:
         }
         // A body announced too large is refused before any of it is read.
         if (!length.empty() && (length.size() > 19 || std::stoull(length) > settings_.max_body)) {
-            send_final_error(res, 413, "request body larger than " +
-                                           std::to_string(settings_.max_body) + " bytes");
+            send_final_error(
+                res, 413,
+                "request body larger than " + std::to_string(settings_.max_body) + " bytes");
             return R::Handled;
         }
         return R::Unhandled;
@@ -420,8 +423,8 @@ private:
             return send_error(res, 429,
                               "too many progress streams open (the most is " +
                                   std::to_string(streams_.per_client()) + " per client and " +
-                                  std::to_string(streams_.total()) +
-                                  " in all); poll " + job_path(id) + " instead");
+                                  std::to_string(streams_.total()) + " in all); poll " +
+                                  job_path(id) + " instead");
         }
         auto seen = std::make_shared<std::optional<std::uint64_t>>();
         res.set_header("Cache-Control", "no-store");

@@ -7,14 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/baseline/comparison.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/output/baseline_io.h>
 #include <modsynth/output/exports.h>
-#include <modsynth/io/task_io.h>
 #include <modsynth/text/format.h>
 
 #include "command.h"
-#include "watchdog.h"
 #include "number_checks.h"
+#include "watchdog.h"
 
 namespace modsynth::app {
 namespace {
@@ -40,7 +40,8 @@ std::string ratio(double theirs, double ours) {
 }
 
 std::string reach(const baseline::Fidelity& f) {
-    return f.whole_path_reachable() ? "yes" : "no: " + fixed(1e3 * f.outside_length, 1) + " mm outside";
+    return f.whole_path_reachable() ? "yes"
+                                    : "no: " + fixed(1e3 * f.outside_length, 1) + " mm outside";
 }
 
 void print_table(const baseline::Comparison& c, int points) {
@@ -51,14 +52,17 @@ void print_table(const baseline::Comparison& c, int points) {
     std::vector<std::vector<std::string>> rows = {
         {"", "modsynth", "discretized (" + std::to_string(points) + " points)", "ratio"},
         {"status", synth::to_string(s.status), baseline::to_string(b.status), ""},
-        {"time (s)", fixed(c.solve_seconds, 3), fixed(b.seconds, 3), ratio(b.seconds, c.solve_seconds)},
+        {"time (s)", fixed(c.solve_seconds, 3), fixed(b.seconds, 3),
+         ratio(b.seconds, c.solve_seconds)},
     };
     auto robot_rows = [&](const std::string& name, auto value) {
-        rows.push_back({name, ours ? value(s.robot) : "-", theirs ? value(b.design.robot) : "-", ""});
+        rows.push_back(
+            {name, ours ? value(s.robot) : "-", theirs ? value(b.design.robot) : "-", ""});
     };
     robot_rows("joints", [](const kinematics::Robot& r) { return std::to_string(r.dof()); });
     robot_rows("link lengths (m)", links);
-    robot_rows("total length (m)", [](const kinematics::Robot& r) { return fixed(r.total_length(), 4); });
+    robot_rows("total length (m)",
+               [](const kinematics::Robot& r) { return fixed(r.total_length(), 4); });
     const baseline::Fidelity* f = c.fidelity ? &*c.fidelity : nullptr;
     const baseline::Fidelity* g = theirs ? &b.fidelity : nullptr;
     rows.push_back({"max EE deviation (mm)", f ? fixed(1e3 * f->max_deviation, 3) : "-",
@@ -67,7 +71,8 @@ void print_table(const baseline::Comparison& c, int points) {
     rows.push_back({"path to EE trail (mm)", f ? fixed(1e3 * f->coverage_gap, 3) : "-",
                     g ? fixed(1e3 * g->coverage_gap, 3) : "-", ""});
     rows.push_back({"path in reachable space", f ? reach(*f) : "-", g ? reach(*g) : "-", ""});
-    rows.push_back({"clearance (mm)", ours ? fixed(1e3 * s.certificate.min_clearance, 2) + " certified" : "-",
+    rows.push_back({"clearance (mm)",
+                    ours ? fixed(1e3 * s.certificate.min_clearance, 2) + " certified" : "-",
                     g ? fixed(1e3 * g->min_clearance, 2) + " sampled" : "-", ""});
     std::vector<std::size_t> width(4, 0);
     for (const auto& row : rows)
@@ -80,7 +85,8 @@ void print_table(const baseline::Comparison& c, int points) {
         }
         std::printf("%s\n", line.substr(0, line.find_last_not_of(' ') + 1).c_str());
     }
-    if (!s.explanation.message.empty() && !ours) std::printf("modsynth: %s\n", s.explanation.message.c_str());
+    if (!s.explanation.message.empty() && !ours)
+        std::printf("modsynth: %s\n", s.explanation.message.c_str());
     if (!b.message.empty()) std::printf("discretized: %s\n", b.message.c_str());
 }
 
@@ -92,8 +98,8 @@ int run_compare(CompareArgs& a) {
     const task::Task task = io::load_task(a.task);
     const double limit = a.time_limit + a.options.time_limit;
     Watchdog watchdog(limit + kWatchdogMargin, [&] {
-        std::fprintf(stderr, "compare: stopped after %.3g s (the two time limits) while: %s\n", limit,
-                     watchdog.stage().c_str());
+        std::fprintf(stderr, "compare: stopped after %.3g s (the two time limits) while: %s\n",
+                     limit, watchdog.stage().c_str());
         return int{kUnknown};
     });
     synth::SynthesisOptions ours;
@@ -125,12 +131,14 @@ int run_compare(CompareArgs& a) {
 Command add_compare(CLI::App& parent) {
     auto a = std::make_shared<CompareArgs>();
     CLI::App* sub = parent.add_subcommand(
-        "compare", "Solve a task with modsynth and with the discretized baseline; print both side by side");
+        "compare",
+        "Solve a task with modsynth and with the discretized baseline; print both side by side");
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file")->required();
     sub->add_option("--time-limit", a->time_limit, "seconds for modsynth's run (default 60)")
         ->check(seconds());
     sub->add_option("--report", a->report, "write an HTML report that shows both robots");
-    sub->add_flag("--json", a->json, "print one JSON object (modsynth-comparison/1) instead of the table");
+    sub->add_flag("--json", a->json,
+                  "print one JSON object (modsynth-comparison/1) instead of the table");
     sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");
     add_baseline_options(*sub, a->options);
     return {sub, [a] { return run_compare(*a); }};

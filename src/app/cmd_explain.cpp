@@ -1,19 +1,19 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <mutex>
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/task_io.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/synthesizer.h>
-#include <modsynth/io/task_io.h>
 
 #include "command.h"
-#include "watchdog.h"
 #include "number_checks.h"
+#include "watchdog.h"
 
 namespace modsynth::app {
 namespace {
@@ -34,7 +34,8 @@ int run_explain(const ExplainArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
     const task::Task task = io::load_task(a.task);
     const auto left = [&] {
-        return a.time_limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return a.time_limit -
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
     std::mutex mutex;  // `out` is shared with the watchdog
     nlohmann::json out;
@@ -47,7 +48,8 @@ int run_explain(const ExplainArgs& a) {
         const std::string note = "stopped at the time limit while " + watchdog.stage();
         if (a.json) {
             out["note"] = note;
-            std::printf("%s\n", out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+            std::printf("%s\n",
+                        out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
         } else {
             std::printf("%s%s\n", status == synth::Status::Infeasible ? "  " : "", note.c_str());
         }
@@ -65,16 +67,20 @@ int run_explain(const ExplainArgs& a) {
         out["status"] = synth::to_string(s.status);
         const std::string message =
             s.status == synth::Status::Solved
-                ? "No conflict: a " + std::to_string(s.robot.dof()) + "-joint robot does this task (run solve)."
+                ? "No conflict: a " + std::to_string(s.robot.dof()) +
+                      "-joint robot does this task (run solve)."
                 : "Not proved infeasible (" + proof.open + "); " + s.explanation.message;
         out["message"] = message;
         out["core"] = s.explanation.core;
         if (a.json) {
-            std::printf("%s\n", out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+            std::printf("%s\n",
+                        out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
         } else {
             std::printf("%s\n", message.c_str());
         }
-        return s.status == synth::Status::Solved ? kOk : s.status == synth::Status::Infeasible ? kInfeasible : kUnknown;
+        return s.status == synth::Status::Solved       ? kOk
+               : s.status == synth::Status::Infeasible ? kInfeasible
+                                                       : kUnknown;
     }
     const std::string message = "Proved infeasible: " + proof.message;
     {
@@ -86,7 +92,8 @@ int run_explain(const ExplainArgs& a) {
         out["suggestions"] = nlohmann::json::array();
         if (!a.json) {
             std::printf("%s\n\nThe conflicting parts:\n", message.c_str());
-            for (const auto& part : proof.core) std::printf("  - %s\n", synth::describe_part(task, part).c_str());
+            for (const auto& part : proof.core)
+                std::printf("  - %s\n", synth::describe_part(task, part).c_str());
             std::printf("\nSmallest changes that remove the conflict (each re-checked):\n");
             std::fflush(stdout);
         }
@@ -95,11 +102,13 @@ int run_explain(const ExplainArgs& a) {
     const auto relaxations = synth::suggest_relaxations(task, proof.core, a.solve_seconds, left());
     watchdog.claim();
     for (const auto& r : relaxations) {
-        out["suggestions"].push_back({{"part", r.part}, {"change", r.change}, {"outcome", r.outcome}});
+        out["suggestions"].push_back(
+            {{"part", r.part}, {"change", r.change}, {"outcome", r.outcome}});
         if (!a.json) std::printf("  - %s\n      then: %s\n", r.change.c_str(), r.outcome.c_str());
     }
     if (a.json) {
-        std::printf("%s\n", out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+        std::printf("%s\n",
+                    out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
     } else if (relaxations.empty()) {
         std::printf("  (none found by changing one part alone)\n");
     }
@@ -113,7 +122,9 @@ Command add_explain(CLI::App& parent) {
     CLI::App* sub = parent.add_subcommand(
         "explain", "Say why a task cannot be done, and the smallest changes that would fix it");
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file")->required();
-    sub->add_option("--time-limit", a->time_limit, "seconds for the whole command: the proof or the full run, then the suggestions (default 60)")
+    sub->add_option("--time-limit", a->time_limit,
+                    "seconds for the whole command: the proof or the full run, then the "
+                    "suggestions (default 60)")
         ->check(seconds());
     sub->add_option("--solve-seconds", a->solve_seconds,
                     "seconds of full synthesis to try on each relaxed task (default 10)")

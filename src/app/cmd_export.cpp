@@ -2,10 +2,10 @@
 #include <memory>
 #include <string>
 
-#include <modsynth/output/exports.h>
-#include <modsynth/output/recertify.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/output/exports.h>
+#include <modsynth/output/recertify.h>
 
 #include "command.h"
 

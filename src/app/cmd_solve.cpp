@@ -5,16 +5,16 @@
 #include <memory>
 #include <string>
 
-#include <modsynth/output/exports.h>
 #include <modsynth/io/solution_io.h>
-#include <modsynth/synth/synthesizer.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/output/exports.h>
+#include <modsynth/synth/synthesizer.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
 #include "command.h"
-#include "watchdog.h"
 #include "number_checks.h"
+#include "watchdog.h"
 
 namespace modsynth::app {
 namespace {
@@ -31,8 +31,8 @@ struct SolveArgs {
 void print_summary(const task::Task& task, const synth::Solution& solution, double seconds,
                    const synth::SynthesisStats& stats, const std::string& output) {
     std::printf("%s: %s in %.3f s (front stage %.3f s, refinement %.3f s, verification %.3f s)\n",
-                text::printable(task.name, 80).c_str(), synth::to_string(solution.status), seconds, stats.front_seconds,
-                stats.refine_seconds, stats.verify_seconds);
+                text::printable(task.name, 80).c_str(), synth::to_string(solution.status), seconds,
+                stats.front_seconds, stats.refine_seconds, stats.verify_seconds);
     if (solution.status != synth::Status::Solved) {
         std::printf("  %s\n", solution.explanation.message.c_str());
         if (!solution.explanation.core.empty()) {
@@ -45,9 +45,10 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
     const auto& r = solution.robot;
     std::printf("  robot: %s\n", robot_summary(r).c_str());
     const auto& c = solution.certificate;
-    std::printf("  certified over the whole motion: clearance margin %.4f m, self-collision margin "
-                "%.4f m, EE deviation <= %.2e m\n",
-                c.min_clearance, c.min_self_clearance, c.max_deviation);
+    std::printf(
+        "  certified over the whole motion: clearance margin %.4f m, self-collision margin "
+        "%.4f m, EE deviation <= %.2e m\n",
+        c.min_clearance, c.min_self_clearance, c.max_deviation);
     std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
                 solution.samples.back().t, output.c_str());
 }
@@ -99,9 +100,12 @@ int run_solve(const SolveArgs& a) {
     }
     print_summary(task, solution, seconds, stats, a.output);
     switch (solution.status) {
-        case synth::Status::Solved: return kOk;
-        case synth::Status::Infeasible: return kInfeasible;
-        case synth::Status::Unknown: return kUnknown;
+        case synth::Status::Solved:
+            return kOk;
+        case synth::Status::Infeasible:
+            return kInfeasible;
+        case synth::Status::Unknown:
+            return kUnknown;
     }
     return kInternal;
 }
@@ -111,19 +115,22 @@ int run_solve(const SolveArgs& a) {
 std::string robot_summary(const kinematics::Robot& r) {
     std::string links;
     for (double l : r.link_lengths) links += text::format(" %.4f", l);
-    return text::format("%d joints, base (%.4f, %.4f), links", r.dof(), r.base.x(), r.base.y()) + links +
-           text::format(" m (total %.4f m), elbow %+d", r.total_length(), r.elbow);
+    return text::format("%d joints, base (%.4f, %.4f), links", r.dof(), r.base.x(), r.base.y()) +
+           links + text::format(" m (total %.4f m), elbow %+d", r.total_length(), r.elbow);
 }
 
 Command add_solve(CLI::App& parent) {
     auto a = std::make_shared<SolveArgs>();
     CLI::App* sub = parent.add_subcommand("solve", "Synthesise a robot and its control for a task");
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file")->required();
-    sub->add_option("-o,--output", a->output, "where to write the modsynth-solution/1 JSON")->required();
+    sub->add_option("-o,--output", a->output, "where to write the modsynth-solution/1 JSON")
+        ->required();
     sub->add_option("--time-limit", a->time_limit, "seconds for the whole run (default 60)")
         ->check(seconds());
-    sub->add_option("--seed", a->seed, "varies initial guesses; same seed, same output (default 0)");
-    sub->add_option("--ee-speed", a->ee_speed, "end-effector speed along the path, m/s (default 0.05)")
+    sub->add_option("--seed", a->seed,
+                    "varies initial guesses; same seed, same output (default 0)");
+    sub->add_option("--ee-speed", a->ee_speed,
+                    "end-effector speed along the path, m/s (default 0.05)")
         ->check(positive());
     sub->add_option("--joint-speed", a->joint_speed, "joint speed limit, rad/s (default 1)")
         ->check(positive());

@@ -66,9 +66,10 @@ void describe(const sockaddr_storage& addr, std::string& ip, int& port) {
 /// A reply written without httplib, to a connection the workers never saw.
 void reply_directly(int sock, int status, const char* reason, const std::string& message) {
     const std::string body = "{\"error\": \"" + message + "\"}";
-    const std::string reply = "HTTP/1.1 " + std::to_string(status) + " " + reason +
-                              "\r\nContent-Type: application/json\r\nContent-Length: " +
-                              std::to_string(body.size()) + "\r\nConnection: close\r\n\r\n" + body;
+    const std::string reply =
+        "HTTP/1.1 " + std::to_string(status) + " " + reason +
+        "\r\nContent-Type: application/json\r\nContent-Length: " + std::to_string(body.size()) +
+        "\r\nConnection: close\r\n\r\n" + body;
     // Best effort: the socket buffer of a fresh connection takes it at once.
     [[maybe_unused]] const auto sent =
         ::send(sock, reply.data(), reply.size(), MSG_DONTWAIT | MSG_NOSIGNAL);
@@ -101,7 +102,9 @@ public:
           read_deadline_(after(limits.read_timeout)),
           write_timeout_ms_(static_cast<int>(limits.write_timeout * 1000)) {}
 
-    bool is_readable() const override { return wait_for(sock_, POLLIN, millis_until(read_deadline_)); }
+    bool is_readable() const override {
+        return wait_for(sock_, POLLIN, millis_until(read_deadline_));
+    }
 
     bool is_writable() const override {
         if (!wait_for(sock_, POLLOUT, write_timeout_ms_)) return false;
@@ -280,7 +283,8 @@ void ConnectionServer::wait_room() {
                 bool done = now >= c.deadline;
                 if (events && !done) {
                     const auto n = ::recv(c.sock, peek.data(), peek.size(), MSG_DONTWAIT);
-                    done = n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR);
+                    done = n == 0 ||
+                           (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR);
                     c.drained += n > 0 ? static_cast<std::size_t>(n) : 0;
                     done = done || c.drained > kLingerBytes;
                 }
@@ -295,7 +299,8 @@ void ConnectionServer::wait_room() {
             bool gone = false;
             if (events || now >= c.deadline) {
                 n = ::recv(c.sock, peek.data(), peek.size(), MSG_PEEK | MSG_DONTWAIT);
-                gone = n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR);
+                gone =
+                    n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR);
             }
             const bool head = n > 0 && (std::string_view(peek.data(), n).find("\r\n\r\n") !=
                                             std::string_view::npos ||

@@ -24,8 +24,10 @@ namespace modsynth::app {
 struct ConnectionLimits {
     std::size_t workers = 16;           ///< requests answered at once
     std::size_t max_connections = 256;  ///< open at once; more are answered 429 and closed
-    double head_timeout = 5.0;  ///< seconds for a request head, from the connection or the last reply
-    double read_timeout = 10.0;   ///< seconds for the rest of a request (its body) once its head came
+    double head_timeout =
+        5.0;  ///< seconds for a request head, from the connection or the last reply
+    double read_timeout =
+        10.0;  ///< seconds for the rest of a request (its body) once its head came
     double write_timeout = 10.0;  ///< seconds a client may leave one write of a reply waiting
 };
 

@@ -68,7 +68,8 @@ bool is_loopback_host_header(std::string_view value, int port) {
         }
         if (host == "::1" || !is_loopback_host(host)) return false;
     }
-    return port_text.empty() || (is_decimal(port_text, 65535) && std::stoi(std::string(port_text)) == port);
+    return port_text.empty() ||
+           (is_decimal(port_text, 65535) && std::stoi(std::string(port_text)) == port);
 }
 
 }  // namespace modsynth::app

@@ -24,7 +24,8 @@ inline CLI::Validator finite_in(double lo, double hi, bool open_lo, const std::s
             if (!CLI::detail::lexical_cast(input, v) || !std::isfinite(v))
                 return "expected a finite number, got '" + text::printable(input) + "'";
             if (open_lo ? v <= lo : v < lo)
-                return text::format("must be %s %g, got %g", open_lo ? "greater than" : "at least", lo, v);
+                return text::format("must be %s %g, got %g", open_lo ? "greater than" : "at least",
+                                    lo, v);
             if (v > hi) return text::format("must be at most %g, got %g", hi, v);
             return {};
         },

@@ -220,7 +220,8 @@ private:
 
 Clock::time_point deadline_after(Clock::time_point start, double limit) {
     if (limit <= 0.0) return Clock::time_point::max();
-    return start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit));
+    return start +
+           std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit));
 }
 
 }  // namespace
@@ -247,7 +248,8 @@ std::optional<ProcessResult> ChildProcess::poll() {
         return r;
     }
     int status = 0;
-    if (waitpid(pid_, &status, WNOHANG) == pid_) result_ = result_of(status, Running{0, pid_, start_});
+    if (waitpid(pid_, &status, WNOHANG) == pid_)
+        result_ = result_of(status, Running{0, pid_, start_});
     return result_;
 }
 
@@ -259,9 +261,7 @@ ProcessResult ChildProcess::kill_now() {
     return *result_;
 }
 
-double ChildProcess::seconds() const {
-    return result_ ? result_->seconds : seconds_since(start_);
-}
+double ChildProcess::seconds() const { return result_ ? result_->seconds : seconds_since(start_); }
 
 void run_processes(const std::vector<ProcessSpec>& specs, int jobs, const FinishHandler& on_finish,
                    const std::function<void()>& on_tick) {

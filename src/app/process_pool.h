@@ -3,8 +3,8 @@
 // Solves are isolated in processes because Ipopt is not thread-safe and Z3's
 // default solver may ignore its own timeout: only a kill from outside bounds
 // a run for sure.
-#include <cstddef>
 #include <chrono>
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <stdexcept>

@@ -251,11 +251,10 @@ void SolveJobs::end_solve(Job& job) {
         return;
     }
     ProcessSpec spec;
-    spec.argv = {
-        executable_,           "explain",
-        "task.json",           "--json",
-        "--time-limit",        number(std::min(kExplainProofSeconds, job.state.time_limit)),
-        "--solve-seconds",     number(limits_.relaxation_seconds)};
+    spec.argv = {executable_,       "explain",
+                 "task.json",       "--json",
+                 "--time-limit",    number(std::min(kExplainProofSeconds, job.state.time_limit)),
+                 "--solve-seconds", number(limits_.relaxation_seconds)};
     spec.log_path = job.path("explain.json");
     spec.stderr_path = job.path("explain.log");
     spec.wall_limit = limits_.explain_limit;

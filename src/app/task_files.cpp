@@ -21,8 +21,8 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }
 
 bool is_companion(const std::string& name) {
-    return ends_with(name, ".expect.json") || ends_with(name, ".core.json") || ends_with(name, ".planted.json") ||
-           ends_with(name, ".solution.json");
+    return ends_with(name, ".expect.json") || ends_with(name, ".core.json") ||
+           ends_with(name, ".planted.json") || ends_with(name, ".solution.json");
 }
 
 std::vector<std::string> tasks_in_folder(const fs::path& folder) {
@@ -84,8 +84,8 @@ fs::path common_folder(const std::vector<fs::path>& paths) {
     for (const auto& p : paths) {
         const fs::path folder = p.parent_path();
         fs::path shared;
-        for (auto a = common.begin(), b = folder.begin(); a != common.end() && b != folder.end() && *a == *b;
-             ++a, ++b)
+        for (auto a = common.begin(), b = folder.begin();
+             a != common.end() && b != folder.end() && *a == *b; ++a, ++b)
             shared /= *a;
         common = shared;
     }
@@ -94,11 +94,13 @@ fs::path common_folder(const std::vector<fs::path>& paths) {
 
 }  // namespace
 
-std::vector<std::string> output_names(const std::vector<std::string>& paths, const std::string& root) {
+std::vector<std::string> output_names(const std::vector<std::string>& paths,
+                                      const std::string& root) {
     if (paths.empty()) return {};
     std::vector<fs::path> full;
     for (const auto& p : paths) full.push_back(fs::absolute(p).lexically_normal());
-    const fs::path base = root.empty() ? common_folder(full) : fs::absolute(root).lexically_normal();
+    const fs::path base =
+        root.empty() ? common_folder(full) : fs::absolute(root).lexically_normal();
     std::vector<fs::path> relative;
     std::map<std::string, std::set<std::string>> uses;
     for (const auto& p : full) {
@@ -126,10 +128,12 @@ Shard parse_shard(const std::string& text) {
     static const std::regex form(R"(\s*([0-9]{1,6})\s*/\s*([0-9]{1,6})\s*)");
     std::smatch m;
     if (!std::regex_match(text, m, form))
-        throw task::InputError("--shard", "expected K/N (e.g. 2/8), got '" + modsynth::text::printable(text) + "'");
+        throw task::InputError(
+            "--shard", "expected K/N (e.g. 2/8), got '" + modsynth::text::printable(text) + "'");
     Shard s{std::stoi(m[1]), std::stoi(m[2])};
     if (s.count < 1 || s.index < 1 || s.index > s.count)
-        throw task::InputError("--shard", "K/N needs 1 <= K <= N, got '" + modsynth::text::printable(text) + "'");
+        throw task::InputError(
+            "--shard", "K/N needs 1 <= K <= N, got '" + modsynth::text::printable(text) + "'");
     return s;
 }
 

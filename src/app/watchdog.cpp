@@ -6,7 +6,8 @@
 
 namespace modsynth::app {
 
-Watchdog::Watchdog(double seconds, std::function<int()> on_expiry) : on_expiry_(std::move(on_expiry)) {
+Watchdog::Watchdog(double seconds, std::function<int()> on_expiry)
+    : on_expiry_(std::move(on_expiry)) {
     const auto until = std::chrono::steady_clock::now() +
                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                            std::chrono::duration<double>(seconds));

@@ -11,15 +11,20 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 }  // namespace
 
 const char* to_string(BaselineResult::Status status) {
     switch (status) {
-        case BaselineResult::Status::Executed: return "executed";
-        case BaselineResult::Status::NoDesign: return "no design";
-        case BaselineResult::Status::NoMotion: return "no motion";
+        case BaselineResult::Status::Executed:
+            return "executed";
+        case BaselineResult::Status::NoDesign:
+            return "no design";
+        case BaselineResult::Status::NoMotion:
+            return "no motion";
     }
     return "?";
 }
@@ -58,14 +63,17 @@ BaselineResult run_baseline(const task::Task& task, const BaselineOptions& optio
         std::to_string(result.design.nlp_solves) + " solves; RRT between the poses");
     const auto t1 = Clock::now();
     PlannerOptions planner = options.planner;
-    planner.time_limit = std::max(0.0, std::min(planner.time_limit, options.time_limit - result.design_seconds));
+    planner.time_limit =
+        std::max(0.0, std::min(planner.time_limit, options.time_limit - result.design_seconds));
     result.motion = plan_rrt(task, result.design.robot, result.design.poses, planner);
     result.planning_seconds = since(t1);
     result.seconds = result.design_seconds + result.planning_seconds;
-    result.status = result.motion.complete ? BaselineResult::Status::Executed : BaselineResult::Status::NoMotion;
+    result.status = result.motion.complete ? BaselineResult::Status::Executed
+                                           : BaselineResult::Status::NoMotion;
     result.message = result.motion.message;
     say("measuring the executed path");
-    result.fidelity = measure_fidelity(task, result.design.robot, result.motion.waypoints, options.fidelity);
+    result.fidelity =
+        measure_fidelity(task, result.design.robot, result.motion.waypoints, options.fidelity);
     return result;
 }
 

@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/primitive.h>
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/nlp/bilinear.h>
@@ -65,14 +65,15 @@ std::vector<Vec2> start_joints(const Vec2& base, const std::vector<double>& r,
 
 std::string where(int k) { return "point " + std::to_string(k); }
 
-Built build(const task::Task& task, const std::vector<PathSample>& points, int dof, const Start& start,
-            const DesignOptions& options) {
+Built build(const task::Task& task, const std::vector<PathSample>& points, int dof,
+            const Start& start, const DesignOptions& options) {
     Built m;
     nlp::QuadraticProgram& qp = m.program;
     const task::RobotSpec& spec = task.robot;
     const kinematics::ClearanceRule rule{spec.link_diameter};
     const Vec2 b0 = start_base(task, start.region, points);
-    double bx_lo = -nlp::kInfinity, bx_hi = nlp::kInfinity, by_lo = -nlp::kInfinity, by_hi = nlp::kInfinity;
+    double bx_lo = -nlp::kInfinity, bx_hi = nlp::kInfinity, by_lo = -nlp::kInfinity,
+           by_hi = nlp::kInfinity;
     if (start.region >= 0) {
         const task::BaseRegion& reg = task.base_regions[start.region];
         bx_lo = reg.min.x(), bx_hi = reg.max.x(), by_lo = reg.min.y(), by_hi = reg.max.y();
@@ -83,8 +84,10 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
 
     double reach = 0.0;
     for (const PathSample& p : points) reach = std::max(reach, (p.point - b0).norm());
-    const double share = !kinematics::has_proximal_link(dof) ? options.start_reach_share_two : options.start_reach_share_three;
-    std::vector<double> r0(dof, std::clamp(share * reach, spec.min_link_length, spec.max_link_length));
+    const double share = !kinematics::has_proximal_link(dof) ? options.start_reach_share_two
+                                                             : options.start_reach_share_three;
+    std::vector<double> r0(dof,
+                           std::clamp(share * reach, spec.min_link_length, spec.max_link_length));
     Quadratic objective;
     for (int i = 0; i < dof; ++i) {
         m.r.push_back(qp.add_variable(spec.min_link_length, spec.max_link_length, r0[i],
@@ -98,7 +101,8 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
         std::vector<Point> chain{base};
         std::vector<std::pair<int, int>> ids;
         for (const Vec2& j0 : start_joints(b0, r0, start.elbows, p, options.start_turn)) {
-            chain.push_back(new_point(qp, "joint " + std::to_string(chain.size()) + " " + where(k), j0));
+            chain.push_back(
+                new_point(qp, "joint " + std::to_string(chain.size()) + " " + where(k), j0));
             ids.push_back({chain.back().x.terms[0].first, chain.back().y.terms[0].first});
         }
         chain.push_back(constant(p));
@@ -107,8 +111,9 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
             add_link(qp, chain[i], chain[i + 1], m.r[i], std::to_string(i + 1) + " " + where(k));
         // Elbow consistency: each consecutive pair bends to its side or is straight.
         for (int i = 1; i < dof; ++i)
-            qp.add_constraint(scaled(cross(chain[i - 1], chain[i], chain[i + 1]), start.elbows[i - 1]), 0.0,
-                              nlp::kInfinity, "elbow " + std::to_string(i) + " " + where(k));
+            qp.add_constraint(
+                scaled(cross(chain[i - 1], chain[i], chain[i + 1]), start.elbows[i - 1]), 0.0,
+                nlp::kInfinity, "elbow " + std::to_string(i) + " " + where(k));
         for (int i = 0; i < dof; ++i) {
             for (int o = 0; o < static_cast<int>(task.obstacles.size()); ++o) {
                 const task::Obstacle& ob = task.obstacles[o];
@@ -124,7 +129,8 @@ Built build(const task::Task& task, const std::vector<PathSample>& points, int d
         }
         if (!previous.empty()) {
             for (int i = 1; i < dof; ++i)
-                add_scaled(objective, squared_distance(previous[i], chain[i]), options.smoothness_weight);
+                add_scaled(objective, squared_distance(previous[i], chain[i]),
+                           options.smoothness_weight);
         }
         previous = chain;
     }

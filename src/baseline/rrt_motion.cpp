@@ -45,7 +45,8 @@ void set_angles(ob::State* state, const std::vector<double>& q) {
 // from one generator seeded by the caller, and plans are repeatable.
 class BiasedSampler : public ob::StateSampler {
 public:
-    BiasedSampler(const ob::StateSpace* space, int n, std::vector<double> goal, double bias, unsigned seed)
+    BiasedSampler(const ob::StateSpace* space, int n, std::vector<double> goal, double bias,
+                  unsigned seed)
         : ob::StateSampler(space), n_(n), goal_(std::move(goal)), bias_(bias), random_(seed) {}
 
     void sampleUniform(ob::State* state) override {
@@ -81,7 +82,8 @@ private:
 
 // Greedy shortcut: from each kept waypoint, jump to the farthest later one
 // that a straight joint-space motion reaches safely.
-std::vector<ob::State*> shortcut(const ob::SpaceInformationPtr& si, const std::vector<ob::State*>& states) {
+std::vector<ob::State*> shortcut(const ob::SpaceInformationPtr& si,
+                                 const std::vector<ob::State*>& states) {
     std::vector<ob::State*> kept{states.front()};
     std::size_t i = 0;
     while (i + 1 < states.size()) {
@@ -106,7 +108,8 @@ bool PlannerOptions::IsValid(std::string* error) const {
 }
 
 PlannedMotion plan_rrt(const task::Task& task, const kinematics::Robot& robot,
-                       const std::vector<std::vector<double>>& poses, const PlannerOptions& options) {
+                       const std::vector<std::vector<double>>& poses,
+                       const PlannerOptions& options) {
     text::require_valid(options);
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     using Clock = std::chrono::steady_clock;
@@ -147,16 +150,16 @@ PlannedMotion plan_rrt(const task::Task& task, const kinematics::Robot& robot,
         planner->setProblemDefinition(problem);
         planner->setup();
         int iterations = 0;
-        const ob::PlannerTerminationCondition stop([&] {
-            return ++iterations > options.max_iterations || Clock::now() >= deadline;
-        });
+        const ob::PlannerTerminationCondition stop(
+            [&] { return ++iterations > options.max_iterations || Clock::now() >= deadline; });
         const ob::PlannerStatus status = planner->solve(stop);
         motion.iterations += iterations;
         if (status != ob::PlannerStatus::EXACT_SOLUTION) {
             motion.failed_pair = static_cast<int>(k);
-            motion.message = "RRT found no collision-free motion from point " + std::to_string(k) + " to point " +
-                             std::to_string(k + 1) + " within " + std::to_string(options.max_iterations) +
-                             " iterations" + (Clock::now() >= deadline ? " (time limit reached)" : "");
+            motion.message = "RRT found no collision-free motion from point " + std::to_string(k) +
+                             " to point " + std::to_string(k + 1) + " within " +
+                             std::to_string(options.max_iterations) + " iterations" +
+                             (Clock::now() >= deadline ? " (time limit reached)" : "");
             return motion;
         }
         auto& path = *problem->getSolutionPath()->as<og::PathGeometric>();

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/primitive.h>
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -25,20 +25,25 @@ std::optional<std::vector<double>> arm_configuration(const kinematics::Robot& ro
                                                      const geometry::Vec2& p,
                                                      const std::vector<double>* previous) {
     const int n = robot.dof();
-    const auto ik = kinematics::inverse_two_link(origin, robot.link_lengths[n - 2], robot.link_lengths[n - 1],
-                                                 p, robot.elbow);
+    const auto ik = kinematics::inverse_two_link(origin, robot.link_lengths[n - 2],
+                                                 robot.link_lengths[n - 1], p, robot.elbow);
     if (!ik) return std::nullopt;
     std::vector<double> q = n == 2 ? std::vector<double>{ik->phi1, ik->q2}
                                    : std::vector<double>{q1, ik->phi1 - q1, ik->q2};
     if (previous) {
-        for (std::size_t k = 0; k < q.size(); ++k) q[k] = kinematics::unwrap_near(q[k], (*previous)[k]);
+        for (std::size_t k = 0; k < q.size(); ++k)
+            q[k] = kinematics::unwrap_near(q[k], (*previous)[k]);
     }
     return q;
 }
 
-std::string transition_name(int j) { return text::format("the transition after trajectory[%d]", j); }
+std::string transition_name(int j) {
+    return text::format("the transition after trajectory[%d]", j);
+}
 
-std::string point_name(int j, double s) { return text::format("trajectory[%d] at %.4f m from its start", j, s); }
+std::string point_name(int j, double s) {
+    return text::format("trajectory[%d] at %.4f m from its start", j, s);
+}
 
 }  // namespace
 
@@ -55,8 +60,7 @@ bool MotionOptions::IsValid(std::string* error) const {
 }
 
 std::optional<std::vector<double>> configuration_at(const task::Task& task,
-                                                    const kinematics::Robot& robot, int j,
-                                                    double s,
+                                                    const kinematics::Robot& robot, int j, double s,
                                                     const std::vector<double>* previous) {
     const geometry::Vec2 p = geometry::point_at(task.trajectory[j], s);
     if (!robot.has_proximal_link()) return arm_configuration(robot, robot.base, 0.0, p, previous);
@@ -80,8 +84,8 @@ namespace {
 // On failure, *failed_at is the parameter that could not be reached.
 // Stops (returning false with *gave_up set) at the sample cap or the deadline.
 template <typename ConfigAt>
-bool walk(double from, double to, double first_step, const MotionOptions& options, Phase phase, int j,
-          std::vector<Sample>& out, double* failed_at, bool* gave_up, ConfigAt config_at) {
+bool walk(double from, double to, double first_step, const MotionOptions& options, Phase phase,
+          int j, std::vector<Sample>& out, double* failed_at, bool* gave_up, ConfigAt config_at) {
     const double max_joint_step = options.max_joint_step;
     const double dir = to >= from ? 1.0 : -1.0;
     double u = from, du = first_step;
@@ -119,18 +123,21 @@ bool walk(double from, double to, double first_step, const MotionOptions& option
 
 std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                                                const kinematics::Robot& robot,
-                                               const MotionOptions& options, MotionFailure* failure) {
+                                               const MotionOptions& options,
+                                               MotionFailure* failure) {
     text::require_valid(options);
     std::vector<Sample> out;
     double failed_at = 0.0;
     bool gave_up = false;
     auto fail = [&](int j, bool transition, double s) -> std::optional<std::vector<Sample>> {
         if (failure) {
-            *failure = {j, transition, s, gave_up, transition ? transition_name(j) : point_name(j, s)};
+            *failure = {j, transition, s, gave_up,
+                        transition ? transition_name(j) : point_name(j, s)};
             if (gave_up) {
-                failure->message = out.size() >= options.max_samples
-                                       ? text::format("%zu samples, the most a motion may have", out.size())
-                                       : std::string("the time limit");
+                failure->message =
+                    out.size() >= options.max_samples
+                        ? text::format("%zu samples, the most a motion may have", out.size())
+                        : std::string("the time limit");
             }
         }
         return std::nullopt;
@@ -141,12 +148,14 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             // The EE holds the transition point while the first joint sweeps
             // the short way round to its angle for the next primitive.
             const double from = out.back().q[0];
-            const double to = from + std::remainder(robot.proximal_angles[j] - from, geometry::kTau);
+            const double to =
+                from + std::remainder(robot.proximal_angles[j] - from, geometry::kTau);
             const std::size_t before = out.size();
-            const bool ok = walk(from, to, options.max_joint_step, options, Phase::Transition,
-                                 j - 1, out, &failed_at, &gave_up, [&](double q1, const std::vector<double>* prev) {
-                                     return transition_configuration(task, robot, j - 1, q1, prev);
-                                 });
+            const bool ok =
+                walk(from, to, options.max_joint_step, options, Phase::Transition, j - 1, out,
+                     &failed_at, &gave_up, [&](double q1, const std::vector<double>* prev) {
+                         return transition_configuration(task, robot, j - 1, q1, prev);
+                     });
             if (!ok) return fail(j - 1, true, failed_at);
             if (out.size() > before) out.pop_back();  // the last pose is the next trace's first
         }
@@ -176,7 +185,8 @@ bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
             const double s = 0.5 * (a.s + b.s);
             if (auto q = configuration_at(task, robot, a.primitive, s, &a.q))
                 mid = Sample{a.t, Phase::Trace, a.primitive, s, *q};
-        } else if (robot.has_proximal_link() && (a.phase == Phase::Transition || b.phase == Phase::Transition)) {
+        } else if (robot.has_proximal_link() &&
+                   (a.phase == Phase::Transition || b.phase == Phase::Transition)) {
             const int j = a.phase == Phase::Transition ? a.primitive : b.primitive;
             const double q1 = 0.5 * (a.q[0] + b.q[0]);
             if (auto q = transition_configuration(task, robot, j, q1, &a.q))
@@ -201,7 +211,8 @@ void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
         const double length = geometry::length(prim);
         const geometry::Vec2 ee = kinematics::forward(robot.base, robot.link_lengths, a.q).back();
         double s = geometry::nearest(prim, ee).s;
-        const bool first = i == 0 || samples[i - 1].phase != Phase::Trace || samples[i - 1].primitive != a.primitive;
+        const bool first = i == 0 || samples[i - 1].phase != Phase::Trace ||
+                           samples[i - 1].primitive != a.primitive;
         // A circle's start is also its end: a run begins at 0.
         if (first && prim.kind == geometry::PrimitiveKind::Circle && s > length - kSnap) s = 0.0;
         if (!first && prim.kind == geometry::PrimitiveKind::Circle) {
@@ -222,12 +233,12 @@ void assign_times(std::vector<Sample>& samples, const MotionOptions& options) {
     for (std::size_t i = 1; i < samples.size(); ++i) {
         const Sample& a = samples[i - 1];
         Sample& b = samples[i];
-        const double path = (a.phase == Phase::Trace && b.phase == Phase::Trace &&
-                             a.primitive == b.primitive)
-                                ? std::abs(b.s - a.s)
-                                : 0.0;
-        const double dt = std::max(path / options.ee_speed,
-                                   largest_change(a.q, b.q) / options.joint_speed);
+        const double path =
+            (a.phase == Phase::Trace && b.phase == Phase::Trace && a.primitive == b.primitive)
+                ? std::abs(b.s - a.s)
+                : 0.0;
+        const double dt =
+            std::max(path / options.ee_speed, largest_change(a.q, b.q) / options.joint_speed);
         b.t = std::round((a.t + dt) * options.ticks_per_second) / options.ticks_per_second;
     }
 }

@@ -127,9 +127,13 @@ double disc_segment(const Vec2& center, double radius, const Vec2& a, const Vec2
 
 namespace modsynth::geometry {
 
-Vec2 nearest_in_box(const Vec2& p, const Vec2& lo, const Vec2& hi) { return p.cwiseMax(lo).cwiseMin(hi); }
+Vec2 nearest_in_box(const Vec2& p, const Vec2& lo, const Vec2& hi) {
+    return p.cwiseMax(lo).cwiseMin(hi);
+}
 
-double point_box(const Vec2& p, const Vec2& lo, const Vec2& hi) { return (p - nearest_in_box(p, lo, hi)).norm(); }
+double point_box(const Vec2& p, const Vec2& lo, const Vec2& hi) {
+    return (p - nearest_in_box(p, lo, hi)).norm();
+}
 
 double segment_box(const Vec2& a, const Vec2& b, const Vec2& lo, const Vec2& hi) {
     const Vec2 corners[4] = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};

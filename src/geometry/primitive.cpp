@@ -128,7 +128,9 @@ Primitive make_arc(const Vec2& start, const Vec2& end, const Vec2& center, bool 
     // projection of a projected end can differ from it in the last bit, and
     // a task written back and read again must not drift.
     const double rounding = 1e-13 * (1.0 + center.cwiseAbs().maxCoeff() + p.radius);
-    p.end = std::abs((end - center).norm() - p.radius) <= rounding ? end : center + p.radius * unit(end_angle);
+    p.end = std::abs((end - center).norm() - p.radius) <= rounding
+                ? end
+                : center + p.radius * unit(end_angle);
     // The projected end may coincide with the start even when the given end
     // does not (same ray, other radius).
     if ((p.end - start).norm() <= kSamePoint) return make_circle(start, center, ccw);

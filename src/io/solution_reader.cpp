@@ -93,7 +93,8 @@ synth::Status parse_status(const json& doc) {
 
 geometry::Vec2 parse_point(const json& j, const std::string& part) {
     require_array(j, part, "2 numbers");
-    if (j.size() != 2) throw InputError(part, "expected [x, y], got " + std::to_string(j.size()) + " numbers");
+    if (j.size() != 2)
+        throw InputError(part, "expected [x, y], got " + std::to_string(j.size()) + " numbers");
     return {finite_number(j[0], element(part, 0)), finite_number(j[1], element(part, 1))};
 }
 
@@ -117,13 +118,15 @@ synth::SeparationWitness parse_separation(const json& j, const std::string& part
         wall.point = parse_point(required(x, p, "point"), member(p, "point"));
         const json& cycle = required(x, p, "cycle");
         require_array(cycle, member(p, "cycle"), "obstacle indices");
-        for (std::size_t i = 0; i < cycle.size(); ++i) wall.cycle.push_back(index(cycle[i], element(member(p, "cycle"), i)));
+        for (std::size_t i = 0; i < cycle.size(); ++i)
+            wall.cycle.push_back(index(cycle[i], element(member(p, "cycle"), i)));
         const json& overlaps = required(x, p, "overlaps");
         require_array(overlaps, member(p, "overlaps"), "numbers");
         for (std::size_t i = 0; i < overlaps.size(); ++i)
             wall.overlaps.push_back(finite_number(overlaps[i], element(member(p, "overlaps"), i)));
         if (wall.overlaps.size() != wall.cycle.size())
-            throw InputError(member(p, "overlaps"), "expected one overlap per obstacle of the cycle");
+            throw InputError(member(p, "overlaps"),
+                             "expected one overlap per obstacle of the cycle");
         w.walls.push_back(std::move(wall));
     }
     return w;
@@ -136,7 +139,8 @@ synth::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
     const std::string op = member(part, "obstacles");
     const json& obstacles = required(j, part, "obstacles");
     require_array(obstacles, op, "obstacle indices");
-    for (std::size_t i = 0; i < obstacles.size(); ++i) w.obstacles.push_back(index(obstacles[i], element(op, i)));
+    for (std::size_t i = 0; i < obstacles.size(); ++i)
+        w.obstacles.push_back(index(obstacles[i], element(op, i)));
     const std::string dp = member(part, "detours");
     const json& detours = required(j, part, "detours");
     require_array(detours, dp, "detours");
@@ -157,7 +161,8 @@ synth::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
             require_object(route[i], sp);
             synth::RouteStep s;
             s.point = parse_point(required(route[i], sp, "point"), member(sp, "point"));
-            if (const json* a = optional(route[i], "around")) s.around = index(*a, member(sp, "around"));
+            if (const json* a = optional(route[i], "around"))
+                s.around = index(*a, member(sp, "around"));
             d.route.push_back(s);
         }
         w.detours.push_back(std::move(d));
@@ -178,8 +183,10 @@ synth::Explanation parse_explanation(const json& doc) {
             out.core.push_back(text((*core)[i], element(cp, i)));
         }
     }
-    if (const json* s = optional(e, "separation")) out.separation = parse_separation(*s, member(part, "separation"));
-    if (const json* g = optional(e, "geodesic")) out.geodesic = parse_geodesic(*g, member(part, "geodesic"));
+    if (const json* s = optional(e, "separation"))
+        out.separation = parse_separation(*s, member(part, "separation"));
+    if (const json* g = optional(e, "geodesic"))
+        out.geodesic = parse_geodesic(*g, member(part, "geodesic"));
     return out;
 }
 

@@ -48,8 +48,10 @@ nlohmann::json to_json(const synth::Solution& s) {
     doc["status"] = synth::to_string(s.status);
     if (s.status != synth::Status::Solved) {
         doc["explanation"] = {{"message", s.explanation.message}, {"core", s.explanation.core}};
-        if (s.explanation.separation) doc["explanation"]["separation"] = to_json(*s.explanation.separation);
-        if (s.explanation.geodesic) doc["explanation"]["geodesic"] = to_json(*s.explanation.geodesic);
+        if (s.explanation.separation)
+            doc["explanation"]["separation"] = to_json(*s.explanation.separation);
+        if (s.explanation.geodesic)
+            doc["explanation"]["geodesic"] = to_json(*s.explanation.geodesic);
         return doc;
     }
     const auto& r = s.robot;

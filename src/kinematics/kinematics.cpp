@@ -60,7 +60,8 @@ std::optional<TwoLinkAngles> inverse_two_link(const Vec2& origin, double r1, dou
 }
 
 Vec2 elbow_towards(const Vec2& origin, double r1, double r2, const Vec2& target, int elbow) {
-    if (auto ik = inverse_two_link(origin, r1, r2, target, elbow)) return origin + r1 * geometry::unit(ik->phi1);
+    if (auto ik = inverse_two_link(origin, r1, r2, target, elbow))
+        return origin + r1 * geometry::unit(ik->phi1);
     const Vec2 d = target - origin;
     const Vec2 dir = d.norm() > 1e-12 ? Vec2(d.normalized()) : Vec2(1.0, 0.0);
     return origin + r1 * (0.8 * dir - 0.6 * elbow * geometry::perp(dir)).normalized();

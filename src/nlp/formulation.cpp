@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/distance.h>
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/nlp/bilinear.h>
@@ -18,7 +18,9 @@ using geometry::Vec2;
 
 using namespace bilinear;
 
-std::string part(const char* what, int i) { return std::string(what) + "[" + std::to_string(i) + "]"; }
+std::string part(const char* what, int i) {
+    return std::string(what) + "[" + std::to_string(i) + "]";
+}
 
 class Builder {
 public:
@@ -52,30 +54,39 @@ public:
         if (kinematics::has_proximal_link(f_.dof)) {
             for (int j = 0; j + 1 < static_cast<int>(t_.trajectory.size()); ++j) add_transition(j);
         }
-        if (p_.swept == SweptVolume::Over && !kinematics::has_proximal_link(f_.dof)) add_swept_over();
+        if (p_.swept == SweptVolume::Over && !kinematics::has_proximal_link(f_.dof))
+            add_swept_over();
         qp_.finalize();
     }
 
 private:
     // The point the distal pair turns about while primitive j is traced.
-    const Point& origin(int j) const { return kinematics::has_proximal_link(f_.dof) ? proximal_[j] : base_; }
+    const Point& origin(int j) const {
+        return kinematics::has_proximal_link(f_.dof) ? proximal_[j] : base_;
+    }
 
     double need_for(const task::Obstacle& ob) const {
         return rule_.obstacle_distance(ob) + p_.margins.clearance;
     }
 
-    Point new_point(const std::string& name, const Vec2& v) { return bilinear::new_point(qp_, name, v); }
+    Point new_point(const std::string& name, const Vec2& v) {
+        return bilinear::new_point(qp_, name, v);
+    }
 
-    void link(const Point& a, const Point& b, int r, const std::string& tag) { add_link(qp_, a, b, r, tag); }
+    void link(const Point& a, const Point& b, int r, const std::string& tag) {
+        add_link(qp_, a, b, r, tag);
+    }
 
     // Pairs farther apart than the horizon in the initial guess are left to
     // the verification.
-    void keep_apart(const Point& a, const Point& b, const Point& c, double need, const std::string& tag) {
+    void keep_apart(const Point& a, const Point& b, const Point& c, double need,
+                    const std::string& tag) {
         if (geometry::point_segment(c.value, a.value, b.value) - need > p_.horizon) return;
         add_keep_apart(qp_, a, b, c, need, tag);
     }
 
-    void keep_links_from_obstacles(const Point& a, const Point& b, int link, const std::string& where) {
+    void keep_links_from_obstacles(const Point& a, const Point& b, int link,
+                                   const std::string& where) {
         for (int o = 0; o < static_cast<int>(t_.obstacles.size()); ++o)
             keep_apart(
                 a, b, constant(t_.obstacles[o].center), need_for(t_.obstacles[o]),
@@ -87,7 +98,8 @@ private:
     void distal_pair(const Point& o, const Vec2& p, const std::string& where) {
         const int r_a = f_.r[f_.dof - 2], r_b = f_.r[f_.dof - 1];
         const double a0 = p_.start.link_lengths[f_.dof - 2], b0 = p_.start.link_lengths[f_.dof - 1];
-        const Point e = new_point("elbow " + where, kinematics::elbow_towards(o.value, a0, b0, p, f_.elbow));
+        const Point e =
+            new_point("elbow " + where, kinematics::elbow_towards(o.value, a0, b0, p, f_.elbow));
         const Point target = constant(p);
         link(o, e, r_a, "distal 1 " + where);
         link(e, target, r_b, "distal 2 " + where);
@@ -117,8 +129,10 @@ private:
     void add_proximal_poses() {
         for (int j = 0; j < static_cast<int>(t_.trajectory.size()); ++j) {
             const double angle = p_.start.proximal_angles.at(j);
-            proximal_.push_back(new_point("proximal " + part("trajectory", j), p_.start.distal_origin(angle)));
-            f_.proximal.push_back({proximal_.back().x.terms[0].first, proximal_.back().y.terms[0].first});
+            proximal_.push_back(
+                new_point("proximal " + part("trajectory", j), p_.start.distal_origin(angle)));
+            f_.proximal.push_back(
+                {proximal_.back().x.terms[0].first, proximal_.back().y.terms[0].first});
             link(base_, proximal_.back(), f_.r[0], "proximal " + part("trajectory", j));
             keep_links_from_obstacles(base_, proximal_.back(), 1, part("trajectory", j));
         }
@@ -136,8 +150,8 @@ private:
         bisect(proximal_[j], a0, proximal_[j + 1], c0, p_.transition_depth, p, r1, j);
     }
 
-    void bisect(const Point& a, double angle_a, const Point& c, double angle_c, int depth, const Vec2& p,
-                double r1, int j) {
+    void bisect(const Point& a, double angle_a, const Point& c, double angle_c, int depth,
+                const Vec2& p, double r1, int j) {
         if (depth <= 0) return;
         const double mid = 0.5 * (angle_a + angle_c);
         const Vec2 t0 = p_.start.distal_origin(mid);
@@ -147,7 +161,8 @@ private:
         const Affine sum = (a.x - base_.x) + (c.x - base_.x);
         const Affine sum_y = (a.y - base_.y) + (c.y - base_.y);
         const double len0 = ((a.value - p_.start.base) + (c.value - p_.start.base)).norm();
-        const int lambda = qp_.add_variable(0.0, 1e3, len0 > 1e-9 ? r1 / len0 : 1.0, "lambda " + where);
+        const int lambda =
+            qp_.add_variable(0.0, 1e3, len0 > 1e-9 ? r1 / len0 : 1.0, "lambda " + where);
         const Affine lam{0.0, {{lambda, 1.0}}};
         for (const auto& [coord, s] : {std::pair{&t.x, &sum}, std::pair{&t.y, &sum_y}}) {
             Quadratic q;
@@ -183,14 +198,16 @@ private:
                     add_product(q, n.y, v.y - c.y);
                     return q;
                 };
-                qp_.add_constraint(support(base_).add(f_.r[0], -1.0), need, kInfinity, "SV disc " + tag);
+                qp_.add_constraint(support(base_).add(f_.r[0], -1.0), need, kInfinity,
+                                   "SV disc " + tag);
                 if (prim.kind == geometry::PrimitiveKind::Line) {
                     for (const Vec2& v : {prim.start, prim.end})
-                        qp_.add_constraint(support(constant(v)), need, kInfinity, "SV primitive " + tag);
+                        qp_.add_constraint(support(constant(v)), need, kInfinity,
+                                           "SV primitive " + tag);
                 } else {
                     // The arc lies in its circle's disc: a sound, simpler bound.
-                    qp_.add_constraint(support(constant(prim.center)).add(-prim.radius), need, kInfinity,
-                                       "SV primitive " + tag);
+                    qp_.add_constraint(support(constant(prim.center)).add(-prim.radius), need,
+                                       kInfinity, "SV primitive " + tag);
                 }
                 qp_.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0,
                                    "SV unit " + tag);

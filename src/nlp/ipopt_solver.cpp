@@ -47,8 +47,8 @@ public:
         return true;
     }
 
-    bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*,
-                            Index, bool init_lambda, Number*) override {
+    bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index,
+                            bool init_lambda, Number*) override {
         if (!init_x || init_z || init_lambda) return false;
         std::copy(p_.start().begin(), p_.start().begin() + n, x);
         return true;
@@ -79,8 +79,8 @@ public:
         }
         return true;
     }
-    bool eval_h(Index, const Number*, bool, Number sigma, Index, const Number* lambda, bool,
-                Index, Index* rows, Index* cols, Number* values) override {
+    bool eval_h(Index, const Number*, bool, Number sigma, Index, const Number* lambda, bool, Index,
+                Index* rows, Index* cols, Number* values) override {
         if (values == nullptr) {
             const auto& s = p_.hessian_structure();
             for (std::size_t k = 0; k < s.size(); ++k) {
@@ -99,14 +99,18 @@ public:
         result.x.assign(x, x + n);
         result.objective = obj;
         switch (status) {
-            case Ipopt::SUCCESS: result.status = SolverResult::Status::Optimal; break;
+            case Ipopt::SUCCESS:
+                result.status = SolverResult::Status::Optimal;
+                break;
             case Ipopt::STOP_AT_ACCEPTABLE_POINT:
                 result.status = SolverResult::Status::Acceptable;
                 break;
             case Ipopt::LOCAL_INFEASIBILITY:
                 result.status = SolverResult::Status::Infeasible;
                 break;
-            default: result.status = SolverResult::Status::Failed; break;
+            default:
+                result.status = SolverResult::Status::Failed;
+                break;
         }
         result.message = "Ipopt status " + std::to_string(static_cast<int>(status)) + " (" +
                          describe(status) + ")";
@@ -198,7 +202,8 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
     }
     const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(nlp);
     SolverResult result = nlp->result;
-    if (result.x.empty()) result.message = "Ipopt returned " + std::to_string(static_cast<int>(status));
+    if (result.x.empty())
+        result.message = "Ipopt returned " + std::to_string(static_cast<int>(status));
     if (!result.usable()) result.message += worst_violations(program, result.x, options);
     if (auto stats = app->Statistics(); Ipopt::IsValid(stats))
         result.iterations = stats->IterationCount();

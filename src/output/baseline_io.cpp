@@ -19,7 +19,8 @@ nlohmann::json robot_json(const kinematics::Robot& r) {
 }
 
 nlohmann::json ratio(double a, double b) {
-    return b > 0.0 && std::isfinite(a) && std::isfinite(b) ? nlohmann::json(a / b) : nlohmann::json(nullptr);
+    return b > 0.0 && std::isfinite(a) && std::isfinite(b) ? nlohmann::json(a / b)
+                                                           : nlohmann::json(nullptr);
 }
 
 }  // namespace
@@ -42,9 +43,11 @@ nlohmann::json to_json(const baseline::BaselineResult& r, bool with_motion) {
     if (!r.message.empty()) doc["message"] = r.message;
     nlohmann::json points = nlohmann::json::array();
     for (const auto& p : r.points)
-        points.push_back({{"primitive", p.primitive}, {"s", p.s}, {"point", {p.point.x(), p.point.y()}}});
+        points.push_back(
+            {{"primitive", p.primitive}, {"s", p.s}, {"point", {p.point.x(), p.point.y()}}});
     doc["points"] = std::move(points);
-    doc["seconds"] = {{"design", r.design_seconds}, {"planning", r.planning_seconds}, {"total", r.seconds}};
+    doc["seconds"] = {
+        {"design", r.design_seconds}, {"planning", r.planning_seconds}, {"total", r.seconds}};
     doc["nlp_solves"] = r.design.nlp_solves;
     if (!r.design.found) return doc;
     doc["robot"] = robot_json(r.design.robot);
@@ -62,7 +65,8 @@ nlohmann::json to_json(const baseline::Comparison& c) {
     nlohmann::json doc;
     doc["format"] = "modsynth-comparison/1";
     doc["task"] = c.solution.task_name;
-    nlohmann::json ours = {{"status", synth::to_string(c.solution.status)}, {"seconds", c.solve_seconds}};
+    nlohmann::json ours = {{"status", synth::to_string(c.solution.status)},
+                           {"seconds", c.solve_seconds}};
     if (c.solution.status == synth::Status::Solved) {
         ours["robot"] = robot_json(c.solution.robot);
         ours["certified_max_ee_deviation"] = c.solution.certificate.max_deviation;
@@ -73,7 +77,8 @@ nlohmann::json to_json(const baseline::Comparison& c) {
     nlohmann::json ratios;
     ratios["time"] = ratio(c.baseline.seconds, c.solve_seconds);
     if (c.fidelity && c.baseline.design.found) {
-        ratios["max_ee_deviation"] = ratio(c.baseline.fidelity.max_deviation, c.fidelity->max_deviation);
+        ratios["max_ee_deviation"] =
+            ratio(c.baseline.fidelity.max_deviation, c.fidelity->max_deviation);
         ratios["total_length"] =
             ratio(c.baseline.design.robot.total_length(), c.solution.robot.total_length());
     }

@@ -13,7 +13,6 @@
 namespace modsynth::output {
 namespace {
 
-
 std::string mm(double metres) { return text::format("%.1f", 1000.0 * metres); }
 
 std::string parts(const task::Task& task, const kinematics::Robot& robot) {

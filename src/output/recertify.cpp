@@ -32,9 +32,10 @@ std::string uncertified_reason(const verify::Certificate& c) {
                     : std::string());
     }
     const verify::Violation& v = c.violations.front();
-    std::string out = v.sample >= 0 ? "samples[" + std::to_string(v.sample) + "]: " + v.message
-                                    : v.message;
-    if (c.violations.size() > 1) out += " (and " + std::to_string(c.violations.size() - 1) + " more)";
+    std::string out =
+        v.sample >= 0 ? "samples[" + std::to_string(v.sample) + "]: " + v.message : v.message;
+    if (c.violations.size() > 1)
+        out += " (and " + std::to_string(c.violations.size() - 1) + " more)";
     return out;
 }
 

@@ -21,7 +21,6 @@ using plot::Frame;
 constexpr double kPlotWidth = 900.0;
 constexpr double kPlotHeight = 720.0;
 
-
 std::string mm(double metres, const char* format = "%.1f") {
     return text::format(format, 1000.0 * metres) + " mm";
 }
@@ -142,8 +141,8 @@ std::string describe_part(const task::Task& task, const std::string& part) {
     const int j = index_in(part, "trajectory");
     if (j >= 0 && j < static_cast<int>(task.trajectory.size())) {
         const auto& p = task.trajectory[j];
-        return std::string(kind_name(p.kind)) + " of " + text::format("%.3f m", geometry::length(p)) +
-               " from " + point_text(p.start);
+        return std::string(kind_name(p.kind)) + " of " +
+               text::format("%.3f m", geometry::length(p)) + " from " + point_text(p.start);
     }
     const int o = index_in(part, "obstacles");
     if (o >= 0 && o < static_cast<int>(task.obstacles.size())) {
@@ -240,9 +239,10 @@ std::string controls(bool comparison) {
            "primitive's</label>"
            "<label><input type=\"checkbox\" data-layer=\"poses\" checked> poses</label>"
            "<label><input type=\"checkbox\" data-layer=\"trail\" checked> trail</label>" +
-           std::string(comparison ? "<label><input type=\"checkbox\" data-layer=\"baseline\" checked> "
-                                    "discretized baseline</label>"
-                                  : "") +
+           std::string(comparison
+                           ? "<label><input type=\"checkbox\" data-layer=\"baseline\" checked> "
+                             "discretized baseline</label>"
+                           : "") +
            "</div>\n";
 }
 
@@ -264,7 +264,8 @@ std::string motion_data(const synth::Solution& s, const Frame& f) {
     return "<script type=\"application/json\" id=\"motion-data\">{\"base\":[" +
            text::format("%.9g", s.robot.base.x()) + "," + text::format("%.9g", s.robot.base.y()) +
            "],\"L\":" + list(s.robot.link_lengths, "%.9g") +
-           ",\"f\":{\"x0\":" + text::format("%.9g", f.min.x()) + ",\"y1\":" + text::format("%.9g", f.max.y()) +
+           ",\"f\":{\"x0\":" + text::format("%.9g", f.min.x()) +
+           ",\"y1\":" + text::format("%.9g", f.max.y()) +
            ",\"s\":" + text::format("%.9g", f.scale) + ",\"p\":" + text::format("%.9g", f.pad) +
            "},\"t\":" + list(t, "%.6f") + ",\"q\":" + list(q, "%.6f") +
            ",\"ph\":" + list(ph, "%.0f") + ",\"pr\":" + list(pr, "%.0f") + "}</script>\n";

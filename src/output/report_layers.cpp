@@ -12,13 +12,13 @@
 namespace modsynth::output::layers {
 namespace {
 
-using plot::n2;
-using plot::pt;
 using geometry::Vec2;
 using kinematics::distal_pair;
 using kinematics::DistalPair;
 using kinematics::reachable_space;
 using kinematics::ReachGrid;
+using plot::n2;
+using plot::pt;
 
 /// Pixels per reachable-space cell: fine enough to show the shape, coarse
 /// enough to keep the file small.

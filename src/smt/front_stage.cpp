@@ -8,10 +8,10 @@
 #include <map>
 #include <optional>
 
-#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/geometry/primitive.h>
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -97,7 +97,8 @@ struct FrontStage::Impl {
 
     double seconds_left() const {
         if (options.deadline == std::chrono::steady_clock::time_point::max()) return 1e9;
-        return std::chrono::duration<double>(options.deadline - std::chrono::steady_clock::now()).count();
+        return std::chrono::duration<double>(options.deadline - std::chrono::steady_clock::now())
+            .count();
     }
     bool expired() const { return seconds_left() <= 0.0; }
 
@@ -128,7 +129,8 @@ struct FrontStage::Impl {
     }
 
     // A constraint family guarded by the literals of the task parts it uses.
-    void require(std::initializer_list<std::string> parts, const z3::expr& e, bool is_refined = false) {
+    void require(std::initializer_list<std::string> parts, const z3::expr& e,
+                 bool is_refined = false) {
         z3::expr_vector guards(ctx);
         for (const auto& part : parts) guards.push_back(literal(part));
         const z3::expr guarded = z3::implies(z3::mk_and(guards), e);
@@ -189,7 +191,8 @@ struct FrontStage::Impl {
             // The last link ends on the path.
             for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
                 if (geometry::point_primitive(ob.center, task.trajectory[j]) < need)
-                    require({"trajectory[" + std::to_string(j) + "]", name, diam}, ctx.bool_val(false));
+                    require({"trajectory[" + std::to_string(j) + "]", name, diam},
+                            ctx.bool_val(false));
             }
         }
 
@@ -234,7 +237,8 @@ struct FrontStage::Impl {
 
     // One span per primitive: to the primitive owning the hull vertex
     // farthest from it. The widest pair of the path is among these.
-    void encode_farthest_spans(const z3::expr& R, const std::vector<std::vector<geometry::Vec2>>& pts) {
+    void encode_farthest_spans(const z3::expr& R,
+                               const std::vector<std::vector<geometry::Vec2>>& pts) {
         std::vector<geometry::Vec2> all;
         for (const auto& v : pts) all.insert(all.end(), v.begin(), v.end());
         std::vector<geometry::Vec2> hull = geometry::convex_hull(all);
@@ -252,7 +256,8 @@ struct FrontStage::Impl {
             double best = 1e300;
             for (std::size_t j = 0; j < pts.size(); ++j)
                 for (const auto& a : pts[j])
-                    if ((a - h).squaredNorm() < best) best = (a - h).squaredNorm(), found = static_cast<int>(j);
+                    if ((a - h).squaredNorm() < best)
+                        best = (a - h).squaredNorm(), found = static_cast<int>(j);
             owner.push_back(found);
         }
         for (std::size_t j = 0; j < pts.size(); ++j) {
@@ -264,7 +269,8 @@ struct FrontStage::Impl {
             int partner = static_cast<int>(j);
             for (std::size_t h = 0; h < hull.size(); ++h)
                 for (const auto& a : pts[j])
-                    if ((a - hull[h]).norm() > span) span = (a - hull[h]).norm(), partner = owner[h];
+                    if ((a - hull[h]).norm() > span)
+                        span = (a - hull[h]).norm(), partner = owner[h];
             const std::string pj = "trajectory[" + std::to_string(j) + "]";
             if (partner == static_cast<int>(j)) {
                 require({pj}, 2 * R >= num(span - options.slack));
@@ -299,8 +305,10 @@ struct FrontStage::Impl {
             // Exact critical point of a line: if the foot of the perpendicular
             // from the base lies inside the segment, it is the closest point.
             const geometry::Vec2 d = p.end - p.start;
-            const z3::expr t = (bx - num(p.start.x())) * num(d.x()) + (by - num(p.start.y())) * num(d.y());
-            const z3::expr cr = num(d.x()) * (by - num(p.start.y())) - num(d.y()) * (bx - num(p.start.x()));
+            const z3::expr t =
+                (bx - num(p.start.x())) * num(d.x()) + (by - num(p.start.y())) * num(d.y());
+            const z3::expr cr =
+                num(d.x()) * (by - num(p.start.y())) - num(d.y()) * (bx - num(p.start.x()));
             const double l2 = d.squaredNorm();
             z3::expr interior = ctx.bool_const(("closest_interior_" + std::to_string(j)).c_str());
             fine.add(z3::implies(interior, t >= 0 && t <= num(l2)));
@@ -355,7 +363,8 @@ struct FrontStage::Impl {
             return coarse == z3::unsat ? Result::Unsat : Result::Unknown;
         }
         model = solver.get_model();
-        if (kinematics::has_proximal_link(dof) || expired()) return Result::Sat;  // no refined families for these joint counts
+        if (kinematics::has_proximal_link(dof) || expired())
+            return Result::Sat;  // no refined families for these joint counts
         set_timeout(fine, std::min(options.time_limit, options.refined_time_limit));
         const z3::check_result refined = fine.check(assumptions());
         if (refined == z3::unsat) {
@@ -453,7 +462,8 @@ std::string FrontStage::smtlib() const {
     const auto pos = s.rfind("(check-sat)");
     if (pos != std::string::npos) s.erase(pos);
     s += "(check-sat-assuming (";
-    for (std::size_t i = 0; i < impl_->names.size(); ++i) s += (i ? " |" : "|") + impl_->names[i] + "|";
+    for (std::size_t i = 0; i < impl_->names.size(); ++i)
+        s += (i ? " |" : "|") + impl_->names[i] + "|";
     return s + "))\n";
 }
 

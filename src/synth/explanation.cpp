@@ -1,9 +1,9 @@
 #include <modsynth/synth/explanation.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <chrono>
 #include <optional>
 #include <utility>
 
@@ -27,7 +27,6 @@ Clock::time_point after(double seconds) {
 double seconds_until(Clock::time_point t) {
     return std::chrono::duration<double>(t - Clock::now()).count();
 }
-
 
 bool has(const std::vector<std::string>& v, const std::string& s) {
     return std::find(v.begin(), v.end(), s) != v.end();
@@ -77,7 +76,8 @@ bool conflict_free(const task::Task& task, double time_limit, Clock::time_point 
 // `free(value)` holds, assuming monotonicity; nullopt if not even at hi, or
 // when the deadline passes first.
 template <typename Free>
-std::optional<double> smallest(double lo, double hi, double tolerance, Clock::time_point deadline, Free free) {
+std::optional<double> smallest(double lo, double hi, double tolerance, Clock::time_point deadline,
+                               Free free) {
     if (!free(hi)) return std::nullopt;
     while (hi - lo > tolerance) {
         if (Clock::now() >= deadline) return std::nullopt;
@@ -98,7 +98,8 @@ std::pair<Status, std::string> attempt(const task::Task& relaxed, double seconds
     const Solution s = synthesize(relaxed, options);
     if (s.status == Status::Solved) {
         std::string links;
-        for (double r : s.robot.link_lengths) links += text::format(links.empty() ? "%.3f" : " + %.3f", r);
+        for (double r : s.robot.link_lengths)
+            links += text::format(links.empty() ? "%.3f" : " + %.3f", r);
         return {s.status,
                 "solved: " + std::to_string(s.robot.dof()) + " joints, links " + links + " m"};
     }
@@ -159,8 +160,9 @@ InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
             continue;
         }
         cores.push_back(fs.minimal_core());
-        if (cores.back().empty()) proof.open += (proof.open.empty() ? "" : "; ") + std::to_string(dof) +
-                                               " joints: no core within the time limit";
+        if (cores.back().empty())
+            proof.open += (proof.open.empty() ? "" : "; ") + std::to_string(dof) +
+                          " joints: no core within the time limit";
     }
     proof.proved = proof.open.empty() && !cores.empty();
     if (proof.proved) {
@@ -180,8 +182,8 @@ std::string describe_conflict(const task::Task& task, const std::vector<std::str
     const std::string arms = "an arm of " + joint_counts(task) + " links";
     if (!traj.empty() && longest && obst.empty() && !shortest) {
         return listing(traj) + (traj.size() > 1 ? " cannot all be reached" : " is out of reach") +
-               (base ? " from every allowed base position" : " from any base position") + " by " + arms +
-               text::format(" of at most %.2f m.", task.robot.max_link_length);
+               (base ? " from every allowed base position" : " from any base position") + " by " +
+               arms + text::format(" of at most %.2f m.", task.robot.max_link_length);
     }
     if (traj.empty() && !obst.empty() && base && tube) {
         return listing(obst) + (obst.size() > 1 ? " cover" : " covers") +
@@ -189,16 +191,20 @@ std::string describe_conflict(const task::Task& task, const std::vector<std::str
     }
     if (!traj.empty() && !obst.empty() && tube && !base && !longest) {
         return listing(obst) + " lies closer to " + listing(traj) +
-               text::format(" than half the tube diameter (%.4f m): the last link, which ends on the path, would "
+               text::format(
+                   " than half the tube diameter (%.4f m): the last link, which ends on the path, "
+                   "would "
                    "touch it.",
                    task.robot.link_diameter / 2);
     }
     if (!traj.empty() && shortest) {
         return listing(traj) + " passes too close to " +
                (base ? std::string("every allowed base position") : std::string("the base")) +
-               text::format(" for links of at least %.2f m: the arm cannot fold that tightly.", task.robot.min_link_length);
+               text::format(" for links of at least %.2f m: the arm cannot fold that tightly.",
+                            task.robot.min_link_length);
     }
-    return "These parts of the task cannot all be satisfied by " + arms + ": " + listing(core) + ".";
+    return "These parts of the task cannot all be satisfied by " + arms + ": " + listing(core) +
+           ".";
 }
 
 std::string describe_part(const task::Task& task, const std::string& part) {
@@ -213,30 +219,36 @@ std::string describe_part(const task::Task& task, const std::string& part) {
                        text::format(" to (%.3f, %.3f)", p.end.x(), p.end.y()) +
                        text::format(" around (%.3f, %.3f)", p.center.x(), p.center.y());
             case geometry::PrimitiveKind::Circle:
-                return part + text::format(": a circle of radius %.3f m around (%.3f, %.3f)", p.radius, p.center.x(),
-                                  p.center.y());
+                return part + text::format(": a circle of radius %.3f m around (%.3f, %.3f)",
+                                           p.radius, p.center.x(), p.center.y());
         }
     }
     if (part.rfind("obstacles[", 0) == 0) {
         const auto& o = task.obstacles.at(index_of(part));
-        return part + text::format(": a disc of radius %.3f m at (%.3f, %.3f)", o.radius, o.center.x(), o.center.y());
+        return part + text::format(": a disc of radius %.3f m at (%.3f, %.3f)", o.radius,
+                                   o.center.x(), o.center.y());
     }
     if (part == "base_regions") {
         std::string s = "base_regions: the base must stand in";
         for (std::size_t k = 0; k < task.base_regions.size(); ++k) {
             const auto& r = task.base_regions[k];
-            s += (k ? " or" : "") + text::format(" [%.3f, %.3f] x", r.min.x(), r.max.x()) + text::format(" [%.3f, %.3f]", r.min.y(), r.max.y());
+            s += (k ? " or" : "") + text::format(" [%.3f, %.3f] x", r.min.x(), r.max.x()) +
+                 text::format(" [%.3f, %.3f]", r.min.y(), r.max.y());
         }
         return s;
     }
-    if (part == "robot.max_link_length") return part + text::format(": links of at most %.3f m", task.robot.max_link_length);
-    if (part == "robot.min_link_length") return part + text::format(": links of at least %.3f m", task.robot.min_link_length);
-    if (part == "robot.link_diameter") return part + text::format(": tubes %.4f m thick", task.robot.link_diameter);
+    if (part == "robot.max_link_length")
+        return part + text::format(": links of at most %.3f m", task.robot.max_link_length);
+    if (part == "robot.min_link_length")
+        return part + text::format(": links of at least %.3f m", task.robot.min_link_length);
+    if (part == "robot.link_diameter")
+        return part + text::format(": tubes %.4f m thick", task.robot.link_diameter);
     if (part == "robot.dof") return part + ": " + joint_counts(task) + " joints";
     return part;
 }
 
-std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::vector<std::string>& core,
+std::vector<Relaxation> suggest_relaxations(const task::Task& task,
+                                            const std::vector<std::string>& core,
                                             double solve_seconds, double time_limit) {
     constexpr double kCheck = 5.0;  // seconds per front-stage check
     const Clock::time_point deadline = after(time_limit);
@@ -247,7 +259,8 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
         return synth::smallest(lo, hi, tolerance, deadline, free);
     };
     std::vector<Relaxation> out;
-    auto offer = [&](const std::string& part, const std::string& change, const task::Task& relaxed) {
+    auto offer = [&](const std::string& part, const std::string& change,
+                     const task::Task& relaxed) {
         // Re-checked here, whatever the search that found it assumed.
         if (!conflict_free(relaxed, kCheck)) return;
         auto [status, outcome] = attempt(relaxed, std::min(solve_seconds, seconds_until(deadline)));
@@ -264,8 +277,9 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             });
             if (!v) continue;
             t.robot.max_link_length = std::ceil(*v * 100.0) / 100.0;
-            offer(part, text::format("robot.max_link_length >= %.2f m", t.robot.max_link_length) +
-                            (traj.empty() ? "" : " would make " + listing(traj) + " reachable"),
+            offer(part,
+                  text::format("robot.max_link_length >= %.2f m", t.robot.max_link_length) +
+                      (traj.empty() ? "" : " would make " + listing(traj) + " reachable"),
                   t);
         } else if (part == "robot.min_link_length") {
             const auto v = smallest(-task.robot.min_link_length, 0.0, 0.002, [&](double x) {
@@ -274,7 +288,8 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             });
             if (!v) continue;
             t.robot.min_link_length = std::floor(-*v * 1000.0) / 1000.0;
-            offer(part, text::format("robot.min_link_length <= %.3f m", t.robot.min_link_length), t);
+            offer(part, text::format("robot.min_link_length <= %.3f m", t.robot.min_link_length),
+                  t);
         } else if (part == "robot.link_diameter") {
             const auto v = smallest(-task.robot.link_diameter, -1e-4, 0.0005, [&](double x) {
                 t.robot.link_diameter = -x;
@@ -289,10 +304,12 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             // the nearest region just to there.
             auto grown = [&](double d) {
                 task::Task g = task;
-                for (auto& r : g.base_regions) r.min -= Vec2::Constant(d), r.max += Vec2::Constant(d);
+                for (auto& r : g.base_regions)
+                    r.min -= Vec2::Constant(d), r.max += Vec2::Constant(d);
                 return g;
             };
-            const auto v = smallest(0.0, 20.0, 0.005, [&](double d) { return conflict_free(grown(d), kCheck); });
+            const auto v = smallest(0.0, 20.0, 0.005,
+                                    [&](double d) { return conflict_free(grown(d), kCheck); });
             if (!v) continue;
             // Where the base can stand: the model of a satisfiable joint count.
             std::optional<Vec2> found;
@@ -310,7 +327,8 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             std::size_t nearest = 0;
             double gap = 1e300;
             for (std::size_t k = 0; k < task.base_regions.size(); ++k) {
-                const Vec2 clamp = b.cwiseMax(task.base_regions[k].min).cwiseMin(task.base_regions[k].max);
+                const Vec2 clamp =
+                    b.cwiseMax(task.base_regions[k].min).cwiseMin(task.base_regions[k].max);
                 if ((b - clamp).norm() < gap) gap = (b - clamp).norm(), nearest = k;
             }
             task::Task e = task;
@@ -332,7 +350,8 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             });
             if (v) {
                 s.obstacles[o].radius = std::floor(-*v * 1000.0) / 1000.0;
-                offer(part, part + text::format(" with radius <= %.3f m", s.obstacles[o].radius), s);
+                offer(part, part + text::format(" with radius <= %.3f m", s.obstacles[o].radius),
+                      s);
             } else {
                 offer(part, "without " + part, t);
             }
@@ -350,15 +369,18 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::v
             const Vec2 dir = (target - mid).normalized();
             auto moved = [&](double d) {
                 task::Task m = task;
-                for (geometry::Primitive& p : m.trajectory) p.start += d * dir, p.end += d * dir, p.center += d * dir;
+                for (geometry::Primitive& p : m.trajectory)
+                    p.start += d * dir, p.end += d * dir, p.center += d * dir;
                 return m;
             };
             const auto v = smallest(0.0, (target - mid).norm(), 0.005,
                                     [&](double d) { return conflict_free(moved(d), kCheck); });
             if (!v) continue;
             const double d = std::ceil(*v * 100.0) / 100.0;
-            offer(part, "move the path" + text::format(" %.2f m towards (%.2f, %.2f)", d, target.x(), target.y()) +
-                            " to bring " + part + " within reach",
+            offer(part,
+                  "move the path" +
+                      text::format(" %.2f m towards (%.2f, %.2f)", d, target.x(), target.y()) +
+                      " to bring " + part + " within reach",
                   moved(d));
         }
     }

@@ -5,8 +5,8 @@
 #include <limits>
 #include <random>
 
-#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/geometry/distance.h>
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/text/option_check.h>
@@ -60,7 +60,8 @@ double pose_margin(const task::Task& task, const Vec2& base, const Vec2& origin,
     return worst;
 }
 
-double margin_at(const task::Task& task, const kinematics::Robot& robot, const std::vector<Vec2>& pts) {
+double margin_at(const task::Task& task, const kinematics::Robot& robot,
+                 const std::vector<Vec2>& pts) {
     double worst = std::numeric_limits<double>::infinity();
     for (const Vec2& p : pts)
         worst = std::min(worst, pose_margin(task, robot.base, robot.base, robot.link_lengths[0],
@@ -85,7 +86,8 @@ double choose_proximal_angles(const task::Task& task, kinematics::Robot& robot,
         for (int k = 0; k < angles; ++k) {
             double w = std::numeric_limits<double>::infinity();
             for (const Vec2& p : per_primitive[j]) {
-                w = std::min(w, pose_margin(task, robot.base, origin(theta(k)), a, c, robot.elbow, true, p));
+                w = std::min(
+                    w, pose_margin(task, robot.base, origin(theta(k)), a, c, robot.elbow, true, p));
                 if (w < -options.hopeless_margin) break;  // hopeless: stop early
             }
             trace[j][k] = w;
@@ -97,8 +99,8 @@ double choose_proximal_angles(const task::Task& task, kinematics::Robot& robot,
             std::max(1, static_cast<int>(std::ceil(std::abs(delta) / options.sweep_step)));
         double w = std::numeric_limits<double>::infinity();
         for (int i = 1; i < steps; ++i)
-            w = std::min(w, pose_margin(task, robot.base, origin(from + delta * i / steps), a, c, robot.elbow,
-                                        true, task.trajectory[j].end));
+            w = std::min(w, pose_margin(task, robot.base, origin(from + delta * i / steps), a, c,
+                                        robot.elbow, true, task.trajectory[j].end));
         return w;
     };
     std::vector<std::vector<double>> best(m, std::vector<double>(angles, kNone));
@@ -115,7 +117,8 @@ double choose_proximal_angles(const task::Task& task, kinematics::Robot& robot,
             }
         }
     }
-    int k = static_cast<int>(std::max_element(best[m - 1].begin(), best[m - 1].end()) - best[m - 1].begin());
+    int k = static_cast<int>(std::max_element(best[m - 1].begin(), best[m - 1].end()) -
+                             best[m - 1].begin());
     const double margin = best[m - 1][k];
     robot.proximal_angles.assign(m, 0.0);
     for (int j = m - 1; j >= 0; --j) {
@@ -156,8 +159,8 @@ Vec2 uniform_in(std::mt19937& rng, const Vec2& lo, const Vec2& hi) {
     return {lo.x() + u(rng) * (hi.x() - lo.x()), lo.y() + u(rng) * (hi.y() - lo.y())};
 }
 
-void search_region(const task::Task& task, const smt::Skeleton& skeleton, const std::vector<Vec2>& pts,
-                   Vec2& lo, Vec2& hi) {
+void search_region(const task::Task& task, const smt::Skeleton& skeleton,
+                   const std::vector<Vec2>& pts, Vec2& lo, Vec2& hi) {
     if (skeleton.base_region >= 0) {
         lo = task.base_regions[skeleton.base_region].min;
         hi = task.base_regions[skeleton.base_region].max;
@@ -210,7 +213,8 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
             static_cast<int>(std::clamp(std::ceil(len / options.proximal_spacing), 4.0,
                                         static_cast<double>(options.max_proximal_points)));
         per_primitive.emplace_back();
-        for (int i = 0; i <= n; ++i) per_primitive.back().push_back(geometry::point_at(prim, len * i / n));
+        for (int i = 0; i <= n; ++i)
+            per_primitive.back().push_back(geometry::point_at(prim, len * i / n));
         for (const Vec2& a : per_primitive.back())
             for (const Vec2& b : per_primitive.back()) span = std::max(span, (a - b).norm());
     }
@@ -231,10 +235,11 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
         for (const Vec2& p : pts) far = std::max(far, (p - robot.base).norm());
         // The distal pair must cover each primitive from one point; the whole
         // arm must reach the farthest point.
-        const double distal = std::max(span / 2.0 * (1.1 + 0.6 * u(rng)), 0.6 * far * u(rng)) + 0.02;
+        const double distal =
+            std::max(span / 2.0 * (1.1 + 0.6 * u(rng)), 0.6 * far * u(rng)) + 0.02;
         const double a = std::clamp(distal * (0.35 + 0.3 * u(rng)), lmin, lmax);
         const double c = std::clamp(distal - a, lmin, lmax);
-        const double r1 = std::clamp((far - (a + c) * (0.5 + 0.4 * u(rng))) , lmin, lmax);
+        const double r1 = std::clamp((far - (a + c) * (0.5 + 0.4 * u(rng))), lmin, lmax);
         robot.link_lengths = {r1, a, c};
         const double margin = choose_proximal_angles(task, robot, per_primitive, options);
         all.push_back({robot, margin});
@@ -275,7 +280,8 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
     for (int i = 0;
          i < options.candidates_two && (i % 16 != 0 || std::chrono::steady_clock::now() < deadline);
          ++i) {
-        const Vec2 base(bmin.x() + u(rng) * (bmax.x() - bmin.x()), bmin.y() + u(rng) * (bmax.y() - bmin.y()));
+        const Vec2 base(bmin.x() + u(rng) * (bmax.x() - bmin.x()),
+                        bmin.y() + u(rng) * (bmax.y() - bmin.y()));
         double far = 0.0, near = std::numeric_limits<double>::infinity();
         for (const auto& prim : task.trajectory) {
             const auto cp = geometry::critical_points(prim, base);

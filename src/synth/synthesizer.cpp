@@ -7,19 +7,19 @@
 #include <optional>
 #include <set>
 
-#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/control/motion.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/geometry/primitive.h>
+#include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/obstacle_proof.h>
-#include <modsynth/verify/verifier.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
+#include <modsynth/verify/verifier.h>
 
 namespace modsynth::synth {
 namespace {
@@ -29,7 +29,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
-
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
     std::string s;
@@ -68,7 +67,8 @@ bool swept_over_plausible(const task::Task& task, const kinematics::Robot& robot
         const double len = geometry::length(prim);
         for (int i = 0; i <= 16; ++i) pts.push_back(geometry::point_at(prim, len * i / 16));
         for (int i = 0; i < 32; ++i)
-            pts.push_back(robot.base + robot.link_lengths[0] * geometry::unit(geometry::kTau * i / 32));
+            pts.push_back(robot.base +
+                          robot.link_lengths[0] * geometry::unit(geometry::kTau * i / 32));
         const auto hull = geometry::convex_hull(pts);
         for (const auto& ob : task.obstacles)
             if (geometry::point_in_convex_polygon(ob.center, hull)) return false;
@@ -88,13 +88,14 @@ void add_point(std::vector<nlp::PathPoint>& pts, int j, double s) {
 void add_critical_points(const task::Task& task, const kinematics::Robot& robot,
                          std::vector<nlp::PathPoint>& points) {
     for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
-        const bool known = !robot.has_proximal_link() || j < static_cast<int>(robot.proximal_angles.size());
-        const auto cp = geometry::critical_points(task.trajectory[j], known ? robot.tracing_origin(j) : robot.base);
+        const bool known =
+            !robot.has_proximal_link() || j < static_cast<int>(robot.proximal_angles.size());
+        const auto cp = geometry::critical_points(task.trajectory[j],
+                                                  known ? robot.tracing_origin(j) : robot.base);
         add_point(points, j, cp.closest.s);
         add_point(points, j, cp.farthest.s);
     }
 }
-
 
 /// What planning and certifying one candidate robot came to: a certified
 /// answer, or what the next refinement must take in (counterexample-guided).
@@ -192,13 +193,16 @@ Solution Search::run() {
             const auto known = std::find_if(cores.begin(), cores.end(),
                                             [&](const auto& c) { return front.conflicts(c); });
             cores.push_back(known != cores.end() ? *known : front.minimal_core());
-            say(std::to_string(dof) + " joints: proved infeasible, conflict between " + join(cores.back(), ", "));
-            tried_.push_back(std::to_string(dof) + " joints proved infeasible (" + join(cores.back(), ", ") + ")");
+            say(std::to_string(dof) + " joints: proved infeasible, conflict between " +
+                join(cores.back(), ", "));
+            tried_.push_back(std::to_string(dof) + " joints proved infeasible (" +
+                             join(cores.back(), ", ") + ")");
             continue;
         }
         all_unsat = false;
         if (result == smt::FrontStage::Result::Unknown) {
-            say(std::to_string(dof) + " joints: front stage gave up (" + front.reason_unknown() + ")");
+            say(std::to_string(dof) + " joints: front stage gave up (" + front.reason_unknown() +
+                ")");
             tried_.push_back(std::to_string(dof) + " joints: front stage undecided");
             continue;
         }
@@ -207,8 +211,8 @@ Solution Search::run() {
             const smt::Skeleton sk = front.skeleton();
             ++skeletons;
             ++stats_.skeletons;
-            say(text::format("%d joints: skeleton %d (elbow %+d, base region %d)", dof, skeletons, sk.elbow,
-                             sk.base_region));
+            say(text::format("%d joints: skeleton %d (elbow %+d, base region %d)", dof, skeletons,
+                             sk.elbow, sk.base_region));
             if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton))
                 return shorten(sk, std::move(*found));
             front.block(sk);
@@ -226,7 +230,8 @@ Solution Search::run() {
         out.status = Status::Infeasible;
         out.explanation.core = common_core(
             task_, cores, std::max(0.1, std::min(opt_.explanation_seconds, remaining())));
-        out.explanation.message = "Proved infeasible: " + describe_conflict(task_, out.explanation.core);
+        out.explanation.message =
+            "Proved infeasible: " + describe_conflict(task_, out.explanation.core);
         stats_.front_seconds += seconds_since(t0);
         return out;
     }
@@ -239,7 +244,8 @@ Solution Search::run() {
                               join(tried_, "; ") + ".";
     for (const auto& c : cores)
         for (const auto& part : c)
-            if (std::find(out.explanation.core.begin(), out.explanation.core.end(), part) == out.explanation.core.end())
+            if (std::find(out.explanation.core.begin(), out.explanation.core.end(), part) ==
+                out.explanation.core.end())
                 out.explanation.core.push_back(part);
     return out;
 }
@@ -252,14 +258,17 @@ Solution Search::run() {
 Solution Search::shorten(const smt::Skeleton& found, Solution best) {
     for (int region : task::base_region_choices(task_)) {
         for (int elbow : {1, -1}) {
-            if ((region == found.base_region && elbow == found.elbow) || remaining() <= 0.0) continue;
+            if ((region == found.base_region && elbow == found.elbow) || remaining() <= 0.0)
+                continue;
             smt::Skeleton variant = found;
             variant.base_region = region;
             variant.elbow = elbow;
-            say(text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof, elbow, region));
+            say(text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof,
+                             elbow, region));
             auto candidate = try_skeleton(variant, opt_.guesses_per_variant);
             if (candidate && candidate->robot.total_length() < best.robot.total_length() - 1e-6) {
-                say(text::format("    shorter: total length %.4f m", candidate->robot.total_length()));
+                say(text::format("    shorter: total length %.4f m",
+                                 candidate->robot.total_length()));
                 best = std::move(*candidate);
             }
         }
@@ -272,20 +281,21 @@ std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int 
         initial_guesses(task_, skeleton, count, opt_.seed, deadline_, opt_.guesses);
     for (const auto& g : guesses) {
         if (remaining() <= 0.0) return std::nullopt;
-        say(text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(), g.robot.base.y(),
-                g.robot.total_length()) +
+        say(text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(),
+                         g.robot.base.y(), g.robot.total_length()) +
             text::format(", margin %.4f m", g.margin));
         // SV^over bounds a 2-link arm; with three joints the proximal link
         // moves between primitives and the sampled model is used directly.
-        if (!kinematics::has_proximal_link(skeleton.dof) && !task_.obstacles.empty() && swept_over_plausible(task_, g.robot))
+        if (!kinematics::has_proximal_link(skeleton.dof) && !task_.obstacles.empty() &&
+            swept_over_plausible(task_, g.robot))
             if (auto s = refine(skeleton, g.robot, nlp::SweptVolume::Over)) return s;
         if (auto s = refine(skeleton, g.robot, nlp::SweptVolume::Sampled)) return s;
     }
     return std::nullopt;
 }
 
-std::optional<Solution> Search::refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
-                                       nlp::SweptVolume swept) {
+std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
+                                       const kinematics::Robot& start, nlp::SweptVolume swept) {
     const char* name = swept == nlp::SweptVolume::Over ? "SV-over" : "sampled";
     nlp::ArmProblem problem;
     problem.task = &task_;
@@ -312,9 +322,11 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton, const kine
         }
         const kinematics::Robot robot = nlp::robot_from(f, res.x);
         std::string links;
-        for (double r : robot.link_lengths) links += text::format(links.empty() ? "%.4f" : " + %.4f", r);
+        for (double r : robot.link_lengths)
+            links += text::format(links.empty() ? "%.4f" : " + %.4f", r);
         say(std::string("    ") + name + ": candidate links " + links +
-            text::format(" m with %zu points, %d variables", problem.points.size(), f.program.num_variables()));
+            text::format(" m with %zu points, %d variables", problem.points.size(),
+                         f.program.num_variables()));
         Verdict verdict = judge(robot);
         if (verdict.solution) return std::move(verdict.solution);
         if (verdict.gave_up) return std::nullopt;
@@ -370,9 +382,10 @@ Verdict Search::judge(const kinematics::Robot& robot) {
         out.robot = robot;
         out.samples = std::move(*motion);
         out.certificate = std::move(cert);
-        say(text::format("    certified: clearance margin %.4f m, self margin %.4f m, deviation %.2g m",
-                out.certificate.min_clearance, out.certificate.min_self_clearance,
-                out.certificate.max_deviation));
+        say(text::format(
+            "    certified: clearance margin %.4f m, self margin %.4f m, deviation %.2g m",
+            out.certificate.min_clearance, out.certificate.min_self_clearance,
+            out.certificate.max_deviation));
         return verdict;
     }
     std::set<std::pair<int, long>> seen;
@@ -387,8 +400,8 @@ Verdict Search::judge(const kinematics::Robot& robot) {
         if (static_cast<int>(verdict.points.size()) >= opt_.counterexamples_per_round) break;
     }
     if (!cert.violations.empty())
-        say("    verification: " + std::to_string(cert.violations.size()) + " violation(s), first: " +
-            cert.violations.front().message);
+        say("    verification: " + std::to_string(cert.violations.size()) +
+            " violation(s), first: " + cert.violations.front().message);
     return verdict;
 }
 
@@ -449,7 +462,8 @@ verify::VerifyOptions verify_options_for(const task::Task& task, const Synthesis
     return verify::options_for(motion_options_for(task, options), options.verify);
 }
 
-Solution synthesize(const task::Task& task, const SynthesisOptions& options, SynthesisStats* stats) {
+Solution synthesize(const task::Task& task, const SynthesisOptions& options,
+                    SynthesisStats* stats) {
     text::require_valid(options);
     SynthesisStats local;
     Search search(task, options, stats ? *stats : local);

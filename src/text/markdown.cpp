@@ -8,12 +8,23 @@ std::string markdown_literal(std::string_view text) {
     for (const char c : text) {
         const auto u = static_cast<unsigned char>(c);
         switch (c) {
-            case '<': out += "&lt;"; continue;
-            case '>': out += "&gt;"; continue;
-            case '&': out += "&amp;"; continue;
-            case '"': out += "&quot;"; continue;
-            case '\'': out += "&#39;"; continue;
-            default: break;
+            case '<':
+                out += "&lt;";
+                continue;
+            case '>':
+                out += "&gt;";
+                continue;
+            case '&':
+                out += "&amp;";
+                continue;
+            case '"':
+                out += "&quot;";
+                continue;
+            case '\'':
+                out += "&#39;";
+                continue;
+            default:
+                break;
         }
         if (u < 0x20 || u == 0x7f) {
             out += "\xEF\xBF\xBD";

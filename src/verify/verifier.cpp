@@ -21,7 +21,6 @@ using geometry::Vec2;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kGeomEps = 1e-9;
 
-
 double segment_polygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& poly) {
     if (geometry::point_in_convex_polygon(a, poly) || geometry::point_in_convex_polygon(b, poly))
         return 0.0;
@@ -61,15 +60,16 @@ public:
         if (!structure_ok_) return finish();
         check_order();
         poses_.reserve(samples_.size());
-        for (std::size_t i = 0; i < samples_.size(); ++i) poses_.push_back(pose(static_cast<int>(i)));
+        for (std::size_t i = 0; i < samples_.size(); ++i)
+            poses_.push_back(pose(static_cast<int>(i)));
         for (std::size_t i = 0; i < samples_.size(); ++i) check_sample(static_cast<int>(i));
         for (std::size_t i = 0; i + 1 < samples_.size(); ++i) check_pair(static_cast<int>(i));
         return finish();
     }
 
 private:
-    void violation(Violation::Kind kind, int i, double amount, std::string message, int obstacle = -1,
-                   int link = -1) {
+    void violation(Violation::Kind kind, int i, double amount, std::string message,
+                   int obstacle = -1, int link = -1) {
         Violation v;
         v.kind = kind;
         v.sample = i;
@@ -93,23 +93,28 @@ private:
                       "robot.dof " + std::to_string(n) + " is not allowed by the task");
         for (int k = 0; k < n; ++k) {
             const double r = robot_.link_lengths[k];
-            if (!(r >= task_.robot.min_link_length - kGeomEps && r <= task_.robot.max_link_length + kGeomEps))
-                violation(Violation::Kind::Structure, -1, 0.0,
-                          text::format("link %d length %.6f m is outside the allowed range", k + 1, r));
+            if (!(r >= task_.robot.min_link_length - kGeomEps &&
+                  r <= task_.robot.max_link_length + kGeomEps))
+                violation(
+                    Violation::Kind::Structure, -1, 0.0,
+                    text::format("link %d length %.6f m is outside the allowed range", k + 1, r));
         }
         if (robot_.link_diameter < task_.robot.link_diameter)
             violation(Violation::Kind::Structure, -1, 0.0, "link diameter below the task's");
         if (!task_.base_regions.empty() &&
-            std::none_of(task_.base_regions.begin(), task_.base_regions.end(),
-                         [&](const task::BaseRegion& r) { return r.contains(robot_.base, kGeomEps); }))
+            std::none_of(
+                task_.base_regions.begin(), task_.base_regions.end(),
+                [&](const task::BaseRegion& r) { return r.contains(robot_.base, kGeomEps); }))
             violation(Violation::Kind::Structure, -1, 0.0,
-                      text::format("base (%.6f, %.6f) lies in no base region", robot_.base.x(), robot_.base.y()));
+                      text::format("base (%.6f, %.6f) lies in no base region", robot_.base.x(),
+                                   robot_.base.y()));
         if (samples_.empty()) violation(Violation::Kind::Structure, -1, 0.0, "no samples");
         for (std::size_t i = 0; i < samples_.size(); ++i) {
             if (samples_[i].primitive < 0 ||
                 samples_[i].primitive >= static_cast<int>(task_.trajectory.size())) {
-                violation(Violation::Kind::Structure, static_cast<int>(i), 0.0,
-                          "primitive " + std::to_string(samples_[i].primitive) + " is not in the task");
+                violation(
+                    Violation::Kind::Structure, static_cast<int>(i), 0.0,
+                    "primitive " + std::to_string(samples_[i].primitive) + " is not in the task");
                 break;
             }
         }
@@ -139,8 +144,10 @@ private:
                                   "] out of order or not from its start");
                 expected = a.primitive + 1;
             }
-            if (a.phase == Phase::Transition && (a.primitive != expected - 1 || a.primitive + 1 >= m))
-                violation(Violation::Kind::Order, static_cast<int>(i), 0.0, "transition out of place");
+            if (a.phase == Phase::Transition &&
+                (a.primitive != expected - 1 || a.primitive + 1 >= m))
+                violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
+                          "transition out of place");
             if (!first && a.phase == Phase::Trace) {
                 const double step = a.s - samples_[i - 1].s;
                 if (step < 0.0 || step > opt_.max_ee_step + 1e-12)
@@ -152,7 +159,8 @@ private:
             if (a.phase == Phase::Trace && last &&
                 std::abs(a.s - geometry::length(task_.trajectory[a.primitive])) > 1e-9)
                 violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
-                          "trace of trajectory[" + std::to_string(a.primitive) + "] stops before its end");
+                          "trace of trajectory[" + std::to_string(a.primitive) +
+                              "] stops before its end");
         }
         if (expected != m)
             violation(Violation::Kind::Order, -1, 0.0, "the motion does not trace every primitive");
@@ -179,17 +187,20 @@ private:
                       text::format("EE is %.6f m off the path", p.deviation));
         for (int k = 0; k < n; ++k) {
             for (std::size_t o = 0; o < task_.obstacles.size(); ++o) {
-                const double margin = rule.link_margin(task_.obstacles[o], p.joints[k], p.joints[k + 1]);
+                const double margin =
+                    rule.link_margin(task_.obstacles[o], p.joints[k], p.joints[k + 1]);
                 if (margin < 0.0)
                     violation(Violation::Kind::Clearance, i, -margin,
-                              text::format("link %d is %.6f m too close to obstacles[%zu]", k + 1, -margin, o),
+                              text::format("link %d is %.6f m too close to obstacles[%zu]", k + 1,
+                                           -margin, o),
                               static_cast<int>(o), k);
             }
             if (k < n - 1) {
                 const double margin = rule.self_margin(p.joints[n], p.joints[k], p.joints[k + 1]);
                 if (margin < 0.0)
                     violation(Violation::Kind::SelfCollision, i, -margin,
-                              text::format("EE is %.6f m too close to link %d", -margin, k + 1), -1, k);
+                              text::format("EE is %.6f m too close to link %d", -margin, k + 1), -1,
+                              k);
             }
         }
     }
@@ -228,14 +239,15 @@ private:
             if (samples_ok && refinable) {
                 coarse = true;
             } else if (samples_ok) {
-                violation(Violation::Kind::Clearance, i, -bound, "motion between samples not certified");
+                violation(Violation::Kind::Clearance, i, -bound,
+                          "motion between samples not certified");
             }
         };
 
         // Guarantee 1/2: the EE stays near the path between the samples.
         double sag = 0.0;
-        const bool same_trace = sa.phase == Phase::Trace && sb.phase == Phase::Trace &&
-                                sa.primitive == sb.primitive;
+        const bool same_trace =
+            sa.phase == Phase::Trace && sb.phase == Phase::Trace && sa.primitive == sb.primitive;
         if (same_trace) {
             const geometry::Primitive& prim = task_.trajectory[sa.primitive];
             if (prim.kind != geometry::PrimitiveKind::Line)
@@ -246,25 +258,27 @@ private:
         const double gap = same_trace ? sag : (a.target - b.target).norm();
         const double dev = std::max(a.deviation, b.deviation) + e[n - 1] / 8.0 + gap;
         cert_.max_deviation = std::max(cert_.max_deviation, dev);
-        settle(opt_.deviation_tolerance - dev, std::max(a.deviation, b.deviation) <= opt_.deviation_tolerance);
+        settle(opt_.deviation_tolerance - dev,
+               std::max(a.deviation, b.deviation) <= opt_.deviation_tolerance);
 
         for (int k = 0; k < n; ++k) {
-            const std::vector<Vec2> hull = geometry::convex_hull(
-                {a.joints[k], a.joints[k + 1], b.joints[k], b.joints[k + 1]});
+            const std::vector<Vec2> hull =
+                geometry::convex_hull({a.joints[k], a.joints[k + 1], b.joints[k], b.joints[k + 1]});
             for (const task::Obstacle& ob : task_.obstacles) {
-                const double bound =
-                    geometry::point_convex_polygon(ob.center, hull) - e[k] / 8.0 - rule.obstacle_distance(ob);
+                const double bound = geometry::point_convex_polygon(ob.center, hull) - e[k] / 8.0 -
+                                     rule.obstacle_distance(ob);
                 cert_.min_clearance = std::min(cert_.min_clearance, bound);
                 const bool ok = rule.link_margin(ob, a.joints[k], a.joints[k + 1]) >= 0.0 &&
                                 rule.link_margin(ob, b.joints[k], b.joints[k + 1]) >= 0.0;
                 settle(bound, ok);
             }
             if (k < n - 1) {
-                const double bound = segment_polygon(a.joints[n], b.joints[n], hull) - (e[n - 1] + e[k]) / 8.0 -
-                                     rule.self_distance();
+                const double bound = segment_polygon(a.joints[n], b.joints[n], hull) -
+                                     (e[n - 1] + e[k]) / 8.0 - rule.self_distance();
                 cert_.min_self_clearance = std::min(cert_.min_self_clearance, bound);
-                const bool ok = rule.self_margin(a.joints[n], a.joints[k], a.joints[k + 1]) >= 0.0 &&
-                                rule.self_margin(b.joints[n], b.joints[k], b.joints[k + 1]) >= 0.0;
+                const bool ok =
+                    rule.self_margin(a.joints[n], a.joints[k], a.joints[k + 1]) >= 0.0 &&
+                    rule.self_margin(b.joints[n], b.joints[k], b.joints[k + 1]) >= 0.0;
                 settle(bound, ok);
             }
         }

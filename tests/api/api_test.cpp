@@ -5,7 +5,8 @@
 #include "../support/fixtures.h"
 
 TEST_CASE("the public API reads, solves, writes, reads back and certifies", "[api]") {
-    const modsynth::Task task = modsynth::load_task(modsynth::testing::source_path("tasks/rose.json"));
+    const modsynth::Task task =
+        modsynth::load_task(modsynth::testing::source_path("tasks/rose.json"));
     modsynth::SolveOptions options;
     options.time_limit = 20.0;
     int lines = 0;
@@ -41,7 +42,8 @@ TEST_CASE("the public API names the offending part of a bad task", "[api]") {
 }
 
 TEST_CASE("the public API refuses invalid options, naming the field", "[api]") {
-    const modsynth::Task task = modsynth::load_task(modsynth::testing::source_path("tasks/rose.json"));
+    const modsynth::Task task =
+        modsynth::load_task(modsynth::testing::source_path("tasks/rose.json"));
     modsynth::SolveOptions options;
     options.time_limit = -1.0;
     CHECK_THROWS_WITH(modsynth::solve(task, options), Catch::Contains("time_limit"));

@@ -3,9 +3,9 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/baseline/comparison.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/output/baseline_io.h>
 #include <modsynth/output/report.h>
-#include <modsynth/io/task_io.h>
 
 #include "../support/fixtures.h"
 
@@ -14,7 +14,8 @@ using namespace modsynth;
 // The paper's finding (IV-B, Fig. 6) on its own "paint a rose" task: a robot
 // designed from 25 points of the curve reaches them all, but the motion
 // that connects them does not follow the curve, while modsynth's does.
-TEST_CASE("on the rose, the discretized design strays from the curve and modsynth does not", "[baseline]") {
+TEST_CASE("on the rose, the discretized design strays from the curve and modsynth does not",
+          "[baseline]") {
     const task::Task rose = io::load_task(testing::source_path("tasks/rose.json"));
     const baseline::Comparison c = baseline::compare_methods(rose, {}, {});
     REQUIRE(c.solution.status == synth::Status::Solved);

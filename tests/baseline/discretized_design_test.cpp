@@ -4,9 +4,9 @@
 
 #include <modsynth/baseline/discretized_design.h>
 #include <modsynth/geometry/primitive.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/kinematics/pose_clearance.h>
-#include <modsynth/io/task_io.h>
 
 #include "../support/derivative_check.h"
 #include "../support/fixtures.h"
@@ -32,7 +32,8 @@ void require_poses_reach_points(const task::Task& t, const baseline::PointDesign
         // The design keeps a 3 mm clearance margin at its points.
         CHECK(kinematics::pose_clearance(t.obstacles, d.robot, d.poses[k]).worst() > 0.003 - 1e-6);
         // Elbow consistency: every pair bends to its design side or is straight.
-        for (int i = 1; i < d.robot.dof(); ++i) CHECK(d.elbows[i - 1] * std::sin(d.poses[k][i]) > -1e-6);
+        for (int i = 1; i < d.robot.dof(); ++i)
+            CHECK(d.elbows[i - 1] * std::sin(d.poses[k][i]) > -1e-6);
     }
 }
 
@@ -48,8 +49,9 @@ TEST_CASE("equidistant points span the whole path at equal arc-length steps", "[
     for (const auto& p : rose.trajectory) total += geometry::length(p);
     for (std::size_t k = 0; k < points.size(); ++k) {
         CHECK(path_position(rose, points[k]) == Approx(total * k / 24.0).margin(1e-9));
-        CHECK((geometry::point_at(rose.trajectory[points[k].primitive], points[k].s) - points[k].point).norm() <
-              1e-12);
+        CHECK((geometry::point_at(rose.trajectory[points[k].primitive], points[k].s) -
+               points[k].point)
+                  .norm() < 1e-12);
     }
     CHECK_THROWS_AS(baseline::equidistant_points(rose, 1), std::invalid_argument);
 }
@@ -68,7 +70,8 @@ TEST_CASE("the discretized design is the shortest robot that reaches the points"
     require_poses_reach_points(t, d, points);
 }
 
-TEST_CASE("the discretized design keeps every link clear of obstacles at its points", "[baseline]") {
+TEST_CASE("the discretized design keeps every link clear of obstacles at its points",
+          "[baseline]") {
     task::Task t = testing::line_task();
     t.obstacles.push_back({{0.22, 0.10}, 0.04});
     t.robot.dof = {3};

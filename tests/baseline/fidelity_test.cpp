@@ -25,8 +25,8 @@ struct Reach {
     }
     // The configuration that puts the EE at x on the line.
     std::vector<double> at(double x) const {
-        const auto ik = kinematics::inverse_two_link(robot.base, robot.link_lengths[0], robot.link_lengths[1],
-                                                     Vec2(x, 0.0), robot.elbow);
+        const auto ik = kinematics::inverse_two_link(
+            robot.base, robot.link_lengths[0], robot.link_lengths[1], Vec2(x, 0.0), robot.elbow);
         REQUIRE(ik);
         return {ik->phi1, ik->q2};
     }
@@ -57,7 +57,8 @@ TEST_CASE("joint-linear motion between two far points bows off the path", "[base
         const double t = k / 100000.0;
         const std::vector<double> q{waypoints[0][0] + t * (waypoints[1][0] - waypoints[0][0]),
                                     waypoints[0][1] + t * (waypoints[1][1] - waypoints[0][1])};
-        worst = std::max(worst, std::abs(kinematics::forward(r.robot.base, r.robot.link_lengths, q).back().y()));
+        worst = std::max(
+            worst, std::abs(kinematics::forward(r.robot.base, r.robot.link_lengths, q).back().y()));
     }
     CHECK(worst > 0.005);
     CHECK(f.max_deviation == Approx(worst).margin(1e-5));
@@ -67,7 +68,8 @@ TEST_CASE("joint-linear motion between two far points bows off the path", "[base
 TEST_CASE("the part of the path beyond the arm's reach is measured", "[baseline]") {
     // Reach 0.45 m: the last 5 cm of the line are out of reach.
     const Reach r(0.25, 0.20);
-    const baseline::Fidelity f = baseline::measure_fidelity(r.task, r.robot, {r.at(0.30), r.at(0.44)});
+    const baseline::Fidelity f =
+        baseline::measure_fidelity(r.task, r.robot, {r.at(0.30), r.at(0.44)});
     CHECK_FALSE(f.whole_path_reachable());
     CHECK(f.outside_length == Approx(0.05).margin(0.0025));
     for (const Vec2& p : f.outside_points) CHECK(p.x() > 0.45 - 1e-9);

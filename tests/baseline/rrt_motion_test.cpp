@@ -31,7 +31,8 @@ struct Detour {
 
 TEST_CASE("RRT goes round an obstacle that blocks the straight joint motion", "[baseline]") {
     const Detour d;
-    REQUIRE(kinematics::pose_clearance(d.task.obstacles, d.robot, std::vector<double>{0.0, 0.3}).obstacles < 0.0);
+    REQUIRE(kinematics::pose_clearance(d.task.obstacles, d.robot, std::vector<double>{0.0, 0.3})
+                .obstacles < 0.0);
     const baseline::PlannedMotion m = baseline::plan_rrt(d.task, d.robot, d.poses, {});
     REQUIRE(m.complete);
     REQUIRE(m.waypoints.size() >= 2);
@@ -39,7 +40,8 @@ TEST_CASE("RRT goes round an obstacle that blocks the straight joint motion", "[
     // It ends at the goal, reached the long way: q1 = 1 - 2 pi.
     CHECK(m.waypoints.back()[0] == Approx(1.0 - 2.0 * kPi).margin(1e-9));
     CHECK(m.waypoints.back()[1] == Approx(0.3).margin(1e-9));
-    for (const auto& q : m.waypoints) CHECK(kinematics::pose_clearance(d.task.obstacles, d.robot, q).worst() >= 0.0);
+    for (const auto& q : m.waypoints)
+        CHECK(kinematics::pose_clearance(d.task.obstacles, d.robot, q).worst() >= 0.0);
     // Between waypoints too (checked at 5 mrad; allow what a step can hide).
     const baseline::Fidelity f = baseline::measure_fidelity(d.task, d.robot, m.waypoints);
     CHECK(f.min_clearance > -0.002);

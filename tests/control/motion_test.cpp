@@ -4,9 +4,9 @@
 
 #include <modsynth/control/motion.h>
 #include <modsynth/geometry/distance.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/synth/synthesizer.h>
-#include <modsynth/io/task_io.h>
 #include <modsynth/verify/verifier.h>
 
 #include "../support/fixtures.h"
@@ -84,7 +84,8 @@ TEST_CASE("path parameters recovered from joint angles match the planned ones", 
     auto samples = s.samples;
     for (auto& x : samples) x.s = -1.0;
     control::recover_parameters(rose, s.robot, samples);
-    for (std::size_t i = 0; i < samples.size(); ++i) REQUIRE(samples[i].s == Approx(s.samples[i].s).margin(1e-5));
+    for (std::size_t i = 0; i < samples.size(); ++i)
+        REQUIRE(samples[i].s == Approx(s.samples[i].s).margin(1e-5));
     CHECK(verify::certify(rose, s.robot, samples).ok);
 
     const task::Task t = two_lines();
@@ -93,7 +94,8 @@ TEST_CASE("path parameters recovered from joint angles match the planned ones", 
     const auto planned = motion;
     for (auto& x : motion) x.s = -1.0;
     control::recover_parameters(t, robot, motion);
-    for (std::size_t i = 0; i < motion.size(); ++i) REQUIRE(motion[i].s == Approx(planned[i].s).margin(1e-5));
+    for (std::size_t i = 0; i < motion.size(); ++i)
+        REQUIRE(motion[i].s == Approx(planned[i].s).margin(1e-5));
 }
 
 TEST_CASE("times follow the slower of the EE speed and the joint speed limit", "[control]") {

@@ -80,10 +80,10 @@ void check_task_example(const json& doc) {
     const auto& spec = task.robot;
     if (r.contains("dof")) CHECK(spec.dof == r["dof"].get<std::vector<int>>());
     const std::pair<const char*, double> keys[] = {
-        {"link_diameter", spec.link_diameter},   {"min_link_length", spec.min_link_length},
+        {"link_diameter", spec.link_diameter},     {"min_link_length", spec.min_link_length},
         {"max_link_length", spec.max_link_length}, {"module_length", spec.module_length},
-        {"module_width", spec.module_width},     {"module_height", spec.module_height},
-        {"adapter_length", spec.adapter_length}, {"ee_rod_diameter", spec.ee_rod_diameter}};
+        {"module_width", spec.module_width},       {"module_height", spec.module_height},
+        {"adapter_length", spec.adapter_length},   {"ee_rod_diameter", spec.ee_rod_diameter}};
     for (const auto& [key, value] : keys) {
         if (r.contains(key)) {
             INFO("robot." << key);
@@ -101,8 +101,7 @@ void check_solution_example(const json& doc) {
     if (doc.contains("task")) CHECK(s.task_name == doc["task"].get<std::string>());
     if (doc["status"] != "solved") {
         CHECK(s.explanation.message == doc.at("explanation").at("message").get<std::string>());
-        CHECK(s.explanation.core ==
-              doc["explanation"].value("core", std::vector<std::string>{}));
+        CHECK(s.explanation.core == doc["explanation"].value("core", std::vector<std::string>{}));
         return;
     }
     const json& r = doc.at("robot");
@@ -127,7 +126,8 @@ void check_solution_example(const json& doc) {
     CHECK(cert.min_clearance == number_or_infinity(c.at("min_clearance_margin")));
     CHECK(cert.min_self_clearance == number_or_infinity(c.at("min_self_collision_margin")));
     CHECK(cert.max_deviation == c.at("max_ee_deviation").get<double>());
-    if (c.contains("max_joint_step")) CHECK(cert.max_joint_step == c["max_joint_step"].get<double>());
+    if (c.contains("max_joint_step"))
+        CHECK(cert.max_joint_step == c["max_joint_step"].get<double>());
 }
 
 struct Counts {
@@ -183,11 +183,12 @@ TEST_CASE("docs/formats.md: the project additions are marked and cover the exten
     const std::string text = all.str();
     CHECK(text.find("# Project additions (optional keys)") != std::string::npos);
     // Every optional key modsynth reads or writes beyond the shared contract.
-    for (const char* key : {"`robot.module_length`", "`robot.module_width`", "`robot.module_height`",
-                            "`robot.adapter_length`", "`robot.ee_rod_diameter`", "`robot.elbow`",
-                            "`certificate.min_clearance_margin`", "`certificate.min_self_collision_margin`",
-                            "`certificate.max_ee_deviation`", "`certificate.max_joint_step`",
-                            "`explanation.separation`", "`explanation.geodesic`"}) {
+    for (const char* key :
+         {"`robot.module_length`", "`robot.module_width`", "`robot.module_height`",
+          "`robot.adapter_length`", "`robot.ee_rod_diameter`", "`robot.elbow`",
+          "`certificate.min_clearance_margin`", "`certificate.min_self_collision_margin`",
+          "`certificate.max_ee_deviation`", "`certificate.max_joint_step`",
+          "`explanation.separation`", "`explanation.geodesic`"}) {
         INFO(key);
         CHECK(text.find(key) != std::string::npos);
     }

@@ -29,17 +29,17 @@ int main(int argc, char** argv) {
             const modsynth::Solution read =
                 modsynth::read_solution(modsynth::write_solution_json(solution));
             const modsynth::Certificate again = modsynth::certify(task, read);
-            std::printf("%s: solved with %d joints, links %.4f m in all; re-certified: %s "
-                        "(clearance margin %.4f m)\n",
-                        task.name.c_str(), read.robot.dof(), read.robot.total_length(),
-                        again.ok ? "yes" : "no", again.min_clearance);
+            std::printf(
+                "%s: solved with %d joints, links %.4f m in all; re-certified: %s "
+                "(clearance margin %.4f m)\n",
+                task.name.c_str(), read.robot.dof(), read.robot.total_length(),
+                again.ok ? "yes" : "no", again.min_clearance);
             return again.ok ? 0 : 3;
         }
         const modsynth::Explanation why = modsynth::explain(task, 30.0, 1.0);
         std::printf("%s: %s\n", task.name.c_str(), why.message.c_str());
         for (const auto& part : why.core) std::printf("  conflicting: %s\n", part.c_str());
-        for (const auto& s : why.suggestions)
-            std::printf("  change: %s\n", s.change.c_str());
+        for (const auto& s : why.suggestions) std::printf("  change: %s\n", s.change.c_str());
         return why.status == modsynth::Status::Infeasible && !why.core.empty() ? 1 : 3;
     } catch (const modsynth::InputError& e) {
         std::fprintf(stderr, "error: %s\n", e.what());

@@ -43,8 +43,9 @@ constexpr int kReplyTimeoutMs = 10'000;
 /// its threads wait: their stacks (when gdb is at hand) and open descriptors.
 void print_thread_stacks() {
     const std::string pid = std::to_string(::getpid());
-    const std::string command = "{ ls -l /proc/" + pid + "/fd; command -v gdb >/dev/null && gdb -p " +
-                                pid + " -batch -nx -ex 'thread apply all bt 12' 2>/dev/null; } 1>&2";
+    const std::string command = "{ ls -l /proc/" + pid +
+                                "/fd; command -v gdb >/dev/null && gdb -p " + pid +
+                                " -batch -nx -ex 'thread apply all bt 12' 2>/dev/null; } 1>&2";
     [[maybe_unused]] const int status = std::system(command.c_str());
 }
 
@@ -201,8 +202,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view request(reinterpret_cast<const char*>(data), size);
     check_reply(request, exchange(fixture.port, request));
     // Whatever that did, the next request is answered.
-    const std::string info =
-        exchange(fixture.port, "GET /api/info HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n");
+    const std::string info = exchange(
+        fixture.port, "GET /api/info HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n");
     if (info.rfind("HTTP/1.1 200 ", 0) != 0) fail("the server stopped serving /api/info", info);
     return 0;
 }

@@ -9,15 +9,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/output/build_sheet.h>
 #include <modsynth/output/csv.h>
 #include <modsynth/output/recertify.h>
 #include <modsynth/output/report.h>
-#include <modsynth/io/solution_io.h>
-#include <modsynth/io/solution_io.h>
 #include <modsynth/output/urdf.h>
 #include <modsynth/task/input_error.h>
-#include <modsynth/io/task_io.h>
 
 namespace {
 

@@ -12,8 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include <modsynth/synth/explanation.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/synth/explanation.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/limits.h>
 #include <modsynth/text/printable.h>

@@ -148,7 +148,8 @@ TEST_CASE("unwrapping keeps angles near the reference", "[kinematics]") {
     }
 }
 
-TEST_CASE("elbow_towards: the IK elbow in reach, a bent pose on the same side beyond it", "[kinematics]") {
+TEST_CASE("elbow_towards: the IK elbow in reach, a bent pose on the same side beyond it",
+          "[kinematics]") {
     const Vec2 o(0.1, -0.2);
     for (int elbow : {1, -1}) {
         const Vec2 near(0.5, 0.1);

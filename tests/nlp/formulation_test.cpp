@@ -3,9 +3,9 @@
 #include <cmath>
 #include <random>
 
+#include <modsynth/io/task_io.h>
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
-#include <modsynth/io/task_io.h>
 
 #include "../support/derivative_check.h"
 #include "../support/fixtures.h"
@@ -59,7 +59,8 @@ TEST_CASE("Ipopt minimises a small quadratic program to its known optimum", "[nl
     nlp::QuadraticProgram qp;
     const int x = qp.add_variable(-nlp::kInfinity, nlp::kInfinity, 0.0, "x");
     const int y = qp.add_variable(-nlp::kInfinity, nlp::kInfinity, 0.0, "y");
-    qp.set_objective(nlp::Quadratic{}.add(5.0).add(x, x, 1.0).add(x, -4.0).add(y, y, 1.0).add(y, -2.0));
+    qp.set_objective(
+        nlp::Quadratic{}.add(5.0).add(x, x, 1.0).add(x, -4.0).add(y, y, 1.0).add(y, -2.0));
     qp.add_constraint(nlp::Quadratic{}.add(x, x, 1.0).add(y, y, 1.0), -nlp::kInfinity, 1.0, "disc");
     qp.finalize();
     const nlp::SolverResult r = nlp::minimize(qp, {});
@@ -79,7 +80,8 @@ TEST_CASE("an infeasible program is reported, not returned as a solution", "[nlp
     CHECK_FALSE(r.usable());
 }
 
-TEST_CASE("refinement of the rose finds a shorter robot that keeps its constraints", "[nlp][slow]") {
+TEST_CASE("refinement of the rose finds a shorter robot that keeps its constraints",
+          "[nlp][slow]") {
     nlp::ArmProblem p = rose_problem(nlp::SweptVolume::Sampled);
     p.horizon = 0.10;
     p.start.base = {-0.02, 0.007};  // a start clear of the obstacles

@@ -6,9 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/task_io.h>
 #include <modsynth/output/build_sheet.h>
 #include <modsynth/output/hardware.h>
-#include <modsynth/io/task_io.h>
 
 #include "output_fixtures.h"
 
@@ -144,7 +144,9 @@ TEST_CASE("modules and tubes stack in z, the rod reaching the table", "[output]"
 TEST_CASE("the build sheet shows a hostile task name as text, never as markup",
           "[output][escape]") {
     auto task = testing::two_joint_task();
-    task.name = "<script>alert('x')</script> `rm -rf` | a | b\n# Injected\r\n]]> \"q\" [l](u) *e* &amp;\x01";
+    task.name =
+        "<script>alert('x')</script> `rm -rf` | a | b\n# Injected\r\n]]> \"q\" [l](u) *e* "
+        "&amp;\x01";
     const auto s = testing::two_joint_solution(task);
     const std::string sheet = modsynth::output::build_sheet(task, s);
     const std::string title = sheet.substr(0, sheet.find('\n'));
@@ -153,7 +155,8 @@ TEST_CASE("the build sheet shows a hostile task name as text, never as markup",
     CHECK(title.find("&lt;script&gt;alert(") == std::string::npos);
     CHECK(title.find("&lt;script&gt;alert\\(&#39;x&#39;\\)&lt;\\/script&gt;") != std::string::npos);
     CHECK(title.find("\\`rm \\-rf\\` \\| a \\| b") != std::string::npos);
-    CHECK(title.find("\\]\\]&gt; &quot;q&quot; \\[l\\]\\(u\\) \\*e\\* &amp;amp\\;") != std::string::npos);
+    CHECK(title.find("\\]\\]&gt; &quot;q&quot; \\[l\\]\\(u\\) \\*e\\* &amp;amp\\;") !=
+          std::string::npos);
     CHECK(sheet.find("<script") == std::string::npos);
     CHECK(sheet.find("\n# Injected") == std::string::npos);
     CHECK(sheet.find('\r') == std::string::npos);

@@ -5,11 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/output/build_sheet.h>
 #include <modsynth/output/recertify.h>
 #include <modsynth/output/report.h>
-#include <modsynth/io/solution_io.h>
-#include <modsynth/io/task_io.h>
 
 #include "../support/fixtures.h"
 

@@ -170,7 +170,8 @@ TEST_CASE("the report shows a hostile task name as text, never as markup", "[out
     CHECK_FALSE(has(html, "\"qq7\""));
     CHECK_FALSE(has(html, "\x01"));
     const std::string shown =
-        "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; `b` | c\n]]&gt; &quot;qq7&quot; &amp;amp;\xEF\xBF\xBD";
+        "&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; `b` | c\n]]&gt; &quot;qq7&quot; "
+        "&amp;amp;\xEF\xBF\xBD";
     CHECK(has(html, "<title>modsynth: " + shown + "</title>"));
     CHECK(has(html, "<h1>" + shown + " <span"));
 }

@@ -218,7 +218,8 @@ TEST_CASE("a hostile task name cannot break out of the URDF", "[output][escape]"
     auto task = testing::two_joint_task();
     task.name = "x\"/><link name=\"evil\"/><!-- ]]> `|` \n'";
     const std::string urdf = modsynth::output::robot_urdf(task, testing::two_joint_solution(task));
-    CHECK(urdf.find("<robot name=\"x____link_name__evil_____--___________\">") != std::string::npos);
+    CHECK(urdf.find("<robot name=\"x____link_name__evil_____--___________\">") !=
+          std::string::npos);
     CHECK(urdf.find("evil\"") == std::string::npos);
     CHECK(urdf.find("]]>") == std::string::npos);
 }

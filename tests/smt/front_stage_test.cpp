@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include <modsynth/geometry/primitive.h>
-#include <modsynth/smt/front_stage.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/smt/front_stage.h>
 
 #include "../support/fixtures.h"
 
@@ -131,7 +131,8 @@ task::Task many_lines(int count, double x0, double length) {
     task::Task t;
     const double step = length / count;
     for (int j = 0; j < count; ++j)
-        t.trajectory.push_back(geometry::make_line({x0 + j * step, 0.3}, {x0 + (j + 1) * step, 0.3}));
+        t.trajectory.push_back(
+            geometry::make_line({x0 + j * step, 0.3}, {x0 + (j + 1) * step, 0.3}));
     return t;
 }
 

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <set>
 
+#include <modsynth/io/task_io.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/synthesizer.h>
-#include <modsynth/io/task_io.h>
 
 #include "../support/fixtures.h"
 
@@ -15,13 +15,15 @@ using namespace modsynth;
 
 TEST_CASE("every hand-made infeasible task is proved with its expected core", "[explain]") {
     int checked = 0;
-    for (const auto& e : std::filesystem::directory_iterator(testing::source_path("tasks/infeasible"))) {
+    for (const auto& e :
+         std::filesystem::directory_iterator(testing::source_path("tasks/infeasible"))) {
         const std::string path = e.path().string();
         if (path.find(".task.json") == std::string::npos) continue;
         const std::string stem = path.substr(0, path.size() - std::string(".task.json").size());
         INFO(path);
         REQUIRE(std::filesystem::exists(stem + ".core.json"));
-        const auto expected = testing::read_json(stem + ".core.json")["core"].get<std::vector<std::string>>();
+        const auto expected =
+            testing::read_json(stem + ".core.json")["core"].get<std::vector<std::string>>();
         const synth::Solution s = synth::synthesize(io::load_task(path), {});
         REQUIRE(s.status == synth::Status::Infeasible);
         CHECK(std::set<std::string>(s.explanation.core.begin(), s.explanation.core.end()) ==
@@ -32,14 +34,16 @@ TEST_CASE("every hand-made infeasible task is proved with its expected core", "[
     CHECK(checked >= 4);
 }
 
-TEST_CASE("relaxations are the smallest change of one part, and they are re-checked", "[explain][slow]") {
+TEST_CASE("relaxations are the smallest change of one part, and they are re-checked",
+          "[explain][slow]") {
     const task::Task t =
         io::load_task(testing::source_path("tasks/infeasible/table-too-far.task.json"));
     const auto proof = synth::prove_infeasible(t, 10.0);
     REQUIRE(proof.proved);
     const auto suggestions = synth::suggest_relaxations(t, proof.core, 5.0);
-    const auto longer = std::find_if(suggestions.begin(), suggestions.end(),
-                                     [](const synth::Relaxation& r) { return r.part == "robot.max_link_length"; });
+    const auto longer =
+        std::find_if(suggestions.begin(), suggestions.end(),
+                     [](const synth::Relaxation& r) { return r.part == "robot.max_link_length"; });
     REQUIRE(longer != suggestions.end());
     // The farthest point, (2.7, 0.3), is 2.61 m from the plate's nearest
     // corner: two links need at least 1.30 m each.
@@ -48,8 +52,9 @@ TEST_CASE("relaxations are the smallest change of one part, and they are re-chec
     CHECK_FALSE(synth::prove_infeasible(longer->relaxed, 10.0).proved);
     CHECK(longer->status == synth::Status::Solved);
     CHECK(longer->outcome.rfind("solved", 0) == 0);
-    const auto moved = std::find_if(suggestions.begin(), suggestions.end(),
-                                    [](const synth::Relaxation& r) { return r.part == "base_regions"; });
+    const auto moved =
+        std::find_if(suggestions.begin(), suggestions.end(),
+                     [](const synth::Relaxation& r) { return r.part == "base_regions"; });
     REQUIRE(moved != suggestions.end());
     CHECK(moved->change.find("extend base_regions[0]") != std::string::npos);
     CHECK_FALSE(synth::prove_infeasible(moved->relaxed, 10.0).proved);
@@ -57,10 +62,14 @@ TEST_CASE("relaxations are the smallest change of one part, and they are re-chec
 
 TEST_CASE("task parts are described in words and numbers", "[explain]") {
     const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
-    CHECK(synth::describe_part(t, "trajectory[0]") == "trajectory[0]: a line from (0.500, 0.050) to (0.500, 0.220)");
-    CHECK(synth::describe_part(t, "trajectory[4]").find("a circle of radius 0.050 m") != std::string::npos);
-    CHECK(synth::describe_part(t, "obstacles[2]") == "obstacles[2]: a disc of radius 0.030 m at (0.640, 0.070)");
-    CHECK(synth::describe_part(t, "robot.max_link_length") == "robot.max_link_length: links of at most 1.000 m");
+    CHECK(synth::describe_part(t, "trajectory[0]") ==
+          "trajectory[0]: a line from (0.500, 0.050) to (0.500, 0.220)");
+    CHECK(synth::describe_part(t, "trajectory[4]").find("a circle of radius 0.050 m") !=
+          std::string::npos);
+    CHECK(synth::describe_part(t, "obstacles[2]") ==
+          "obstacles[2]: a disc of radius 0.030 m at (0.640, 0.070)");
+    CHECK(synth::describe_part(t, "robot.max_link_length") ==
+          "robot.max_link_length: links of at most 1.000 m");
 }
 
 TEST_CASE("a feasible task is not proved infeasible", "[explain]") {
@@ -79,7 +88,8 @@ TEST_CASE("suggestions and proofs end at their time limit", "[explain]") {
     // about 20 s here; with 1 s in all they stop in time.
     const auto t0 = std::chrono::steady_clock::now();
     const auto suggestions = synth::suggest_relaxations(t, proof.core, 10.0, 1.0);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     CHECK(seconds < 2.0);
     for (const auto& s : suggestions) CHECK_FALSE(s.change.empty());
 }

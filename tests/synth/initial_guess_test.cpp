@@ -55,7 +55,8 @@ TEST_CASE("a clear initial guess reaches every point of the path with its elbow"
     const auto& best = guesses.front();
     REQUIRE(best.margin >= 0.0);
     for (double s = 0.0; s <= 1.0; s += 0.05) {
-        const geometry::Vec2 p = geometry::point_at(t.trajectory[0], s * geometry::length(t.trajectory[0]));
+        const geometry::Vec2 p =
+            geometry::point_at(t.trajectory[0], s * geometry::length(t.trajectory[0]));
         CHECK(kinematics::inverse_two_link(best.robot.base, best.robot.link_lengths[0],
                                            best.robot.link_lengths[1], p, -1)
                   .has_value());

@@ -1,11 +1,11 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_io.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/geodesic_reach.h>
 #include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/synth/separation.h>
 #include <modsynth/synth/synthesizer.h>
-#include <modsynth/io/task_io.h>
 
 #include <algorithm>
 #include <catch2/catch.hpp>

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <set>
 
-#include <modsynth/synth/synthesizer.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/synth/synthesizer.h>
 #include <modsynth/verify/verifier.h>
 
 #include "../support/fixtures.h"
@@ -17,7 +17,8 @@ namespace {
 
 std::vector<std::string> planted(const std::string& prefix) {
     std::vector<std::string> out;
-    for (const auto& e : std::filesystem::directory_iterator(testing::source_path("tests/fixtures/planted"))) {
+    for (const auto& e :
+         std::filesystem::directory_iterator(testing::source_path("tests/fixtures/planted"))) {
         const std::string name = e.path().filename().string();
         if (name.rfind(prefix, 0) == 0 && name.find(".task.json") != std::string::npos)
             out.push_back(e.path().string());
@@ -51,14 +52,16 @@ TEST_CASE("planted 2-joint tasks are solved and the motion re-certifies", "[synt
         CHECK(t.base_regions[0].contains(s.robot.base, 1e-9));
         // Time is monotone and the control starts at t = 0.
         CHECK(s.samples.front().t == 0.0);
-        for (std::size_t i = 1; i < s.samples.size(); ++i) REQUIRE(s.samples[i].t >= s.samples[i - 1].t);
+        for (std::size_t i = 1; i < s.samples.size(); ++i)
+            REQUIRE(s.samples[i].t >= s.samples[i - 1].t);
         // Not wildly longer than the planted robot (which need not be the shortest).
         const auto expect = testing::read_json(stem_of(path) + ".expect.json");
         CHECK(s.robot.total_length() <= 1.5 * expect["planted_sum_link_lengths"].get<double>());
     }
 }
 
-TEST_CASE("out-of-reach tasks are proved infeasible with a core naming the unreachable part", "[synth]") {
+TEST_CASE("out-of-reach tasks are proved infeasible with a core naming the unreachable part",
+          "[synth]") {
     for (const auto& path : planted("ir-")) {
         INFO(path);
         const task::Task t = io::load_task(path);
@@ -68,7 +71,8 @@ TEST_CASE("out-of-reach tasks are proved infeasible with a core naming the unrea
         const auto& core = s.explanation.core;
         bool names_one = false;
         for (const auto& part : expect["core_should_include_one_of"])
-            names_one = names_one || std::find(core.begin(), core.end(), part.get<std::string>()) != core.end();
+            names_one = names_one ||
+                        std::find(core.begin(), core.end(), part.get<std::string>()) != core.end();
         CHECK(names_one);
         CHECK(std::find(core.begin(), core.end(), "robot.max_link_length") != core.end());
         CHECK_FALSE(s.explanation.message.empty());
@@ -106,7 +110,8 @@ TEST_CASE("the time limit is honoured and a run out of time answers unknown", "[
     options.time_limit = 0.02;
     const auto t0 = std::chrono::steady_clock::now();
     const synth::Solution s = synth::synthesize(t, options);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     CHECK(seconds < 1.0);
     if (s.status != synth::Status::Solved) {
         CHECK(s.status == synth::Status::Unknown);
@@ -123,8 +128,12 @@ TEST_CASE("progress is reported stage by stage", "[synth]") {
     options.progress = [&](const std::string& l) { lines.push_back(l); };
     synth::synthesize(t, options);
     REQUIRE(lines.size() >= 3);
-    CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) { return l.find("skeleton") != std::string::npos; }));
-    CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) { return l.find("certified") != std::string::npos; }));
+    CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
+        return l.find("skeleton") != std::string::npos;
+    }));
+    CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
+        return l.find("certified") != std::string::npos;
+    }));
 }
 
 TEST_CASE("wipe-table and clean-table: 2 joints exhausted, then solved with 3", "[synth][slow]") {
@@ -142,8 +151,10 @@ TEST_CASE("wipe-table and clean-table: 2 joints exhausted, then solved with 3", 
         }));
         const verify::Certificate again = verify::certify(t, s.robot, s.samples);
         CHECK(again.ok);
-        CHECK(std::any_of(s.samples.begin(), s.samples.end(),
-                          [](const control::Sample& x) { return x.phase == control::Phase::Transition; }) ==
-              (std::set<double>(s.robot.proximal_angles.begin(), s.robot.proximal_angles.end()).size() > 1));
+        CHECK(std::any_of(
+                  s.samples.begin(), s.samples.end(),
+                  [](const control::Sample& x) { return x.phase == control::Phase::Transition; }) ==
+              (std::set<double>(s.robot.proximal_angles.begin(), s.robot.proximal_angles.end())
+                   .size() > 1));
     }
 }

@@ -16,13 +16,14 @@ std::string printable(std::string_view s) { return modsynth::text::printable(s, 
 
 TEST_CASE("printable keeps valid UTF-8 and escapes everything else") {
     CHECK(printable("/api/jobs") == "/api/jobs");
-    CHECK(printable("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80") == "caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80");
+    CHECK(printable("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80") ==
+          "caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80");
     CHECK(printable("/\xFF") == "/\\xFF");
-    CHECK(printable("\xC3(") == "\\xC3(");                      // a lead byte without its tail
-    CHECK(printable("\xC0\xAF") == "\\xC0\\xAF");               // overlong '/'
-    CHECK(printable("\xED\xA0\x80") == "\\xED\\xA0\\x80");      // a surrogate
+    CHECK(printable("\xC3(") == "\\xC3(");                           // a lead byte without its tail
+    CHECK(printable("\xC0\xAF") == "\\xC0\\xAF");                    // overlong '/'
+    CHECK(printable("\xED\xA0\x80") == "\\xED\\xA0\\x80");           // a surrogate
     CHECK(printable("\xF4\x90\x80\x80") == "\\xF4\\x90\\x80\\x80");  // past U+10FFFF
-    CHECK(printable("\xE2\x82") == "\\xE2\\x82");               // cut short at the end
+    CHECK(printable("\xE2\x82") == "\\xE2\\x82");                    // cut short at the end
     CHECK(printable(std::string("a\0b\r\n\x7F", 6)) == "a\\x00b\\x0D\\x0A\\x7F");
 }
 

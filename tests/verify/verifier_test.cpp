@@ -52,7 +52,8 @@ TEST_CASE("a clear motion is certified, with margins that match the geometry", "
     CHECK(cert.min_clearance > 0.0);
 }
 
-TEST_CASE("the certified clearance never exceeds the clearance of the replayed motion", "[verify]") {
+TEST_CASE("the certified clearance never exceeds the clearance of the replayed motion",
+          "[verify]") {
     // Soundness of the between-sample bound: replay the joint-linear motion
     // at 50 sub-steps per pair and compare.
     task::Task t = testing::line_task();
@@ -70,10 +71,12 @@ TEST_CASE("the certified clearance never exceeds the clearance of the replayed m
             const auto pts = kinematics::forward(robot.base, robot.link_lengths, q);
             for (const auto& ob : t.obstacles)
                 for (int l = 0; l < 2; ++l)
-                    replayed = std::min(replayed, geometry::point_segment(ob.center, pts[l], pts[l + 1]) -
-                                                      ob.radius - robot.link_diameter / 2);
-            replayed_self = std::min(replayed_self,
-                                     geometry::point_segment(pts[2], pts[0], pts[1]) - robot.link_diameter);
+                    replayed =
+                        std::min(replayed, geometry::point_segment(ob.center, pts[l], pts[l + 1]) -
+                                               ob.radius - robot.link_diameter / 2);
+            replayed_self =
+                std::min(replayed_self,
+                         geometry::point_segment(pts[2], pts[0], pts[1]) - robot.link_diameter);
         }
     }
     CHECK(cert.min_clearance <= replayed + 1e-12);
@@ -93,8 +96,9 @@ TEST_CASE("an obstacle on the arm is a clearance violation located on the path",
     const auto cert = verify::certify(t, robot, samples);
     CHECK_FALSE(cert.ok);
     REQUIRE(has(cert, Violation::Kind::Clearance));
-    const auto v = *std::find_if(cert.violations.begin(), cert.violations.end(),
-                                 [](const Violation& x) { return x.kind == Violation::Kind::Clearance; });
+    const auto v =
+        *std::find_if(cert.violations.begin(), cert.violations.end(),
+                      [](const Violation& x) { return x.kind == Violation::Kind::Clearance; });
     CHECK(v.primitive == 0);
     CHECK(v.obstacle == 0);
     CHECK(v.link == 0);

@@ -40,6 +40,7 @@ struct PlannedMotion {
 /// Plans through `poses` in order (each a valid joint vector of `robot`).
 /// Throws std::invalid_argument when the options are not valid.
 PlannedMotion plan_rrt(const task::Task& task, const kinematics::Robot& robot,
-                       const std::vector<std::vector<double>>& poses, const PlannerOptions& options);
+                       const std::vector<std::vector<double>>& poses,
+                       const PlannerOptions& options);
 
 }  // namespace modsynth::baseline

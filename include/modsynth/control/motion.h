@@ -39,8 +39,8 @@ struct MotionOptions {
     /// deviation tolerance on the shipped tasks, where 5 mm would make the
     /// verifier split many more pairs.
     double max_ee_step = 0.002;
-    double ee_speed = 0.05;        ///< m/s along the path (formats.md "samples" t)
-    double joint_speed = 1.0;      ///< rad/s, the limit of every joint
+    double ee_speed = 0.05;    ///< m/s along the path (formats.md "samples" t)
+    double joint_speed = 1.0;  ///< rad/s, the limit of every joint
     /// Planning gives up past this many samples (memory stays bounded on
     /// long paths and short links) or past the deadline.
     std::size_t max_samples = 1'000'000;
@@ -63,8 +63,7 @@ struct MotionOptions {
 /// robot's elbow branch, unwrapped next to `previous` when given.
 /// std::nullopt when the point is out of reach.
 std::optional<std::vector<double>> configuration_at(const task::Task& task,
-                                                    const kinematics::Robot& robot, int j,
-                                                    double s,
+                                                    const kinematics::Robot& robot, int j, double s,
                                                     const std::vector<double>* previous);
 
 /// Three joints: the configuration at the transition point after primitive

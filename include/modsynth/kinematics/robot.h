@@ -29,7 +29,8 @@ struct Robot {
     /// with two joints; with three, the end of the proximal link at absolute
     /// angle q1.
     geometry::Vec2 distal_origin(double q1) const {
-        return has_proximal_link() ? geometry::Vec2(base + link_lengths[0] * geometry::unit(q1)) : base;
+        return has_proximal_link() ? geometry::Vec2(base + link_lengths[0] * geometry::unit(q1))
+                                   : base;
     }
     /// The same while primitive j is traced, the proximal link still at
     /// proximal_angles[j].

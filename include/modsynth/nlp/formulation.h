@@ -58,7 +58,7 @@ struct Formulation {
     QuadraticProgram program;
     int dof = 2;
     int base_x = -1, base_y = -1;
-    std::vector<int> r;                          ///< link length variables
+    std::vector<int> r;                         ///< link length variables
     std::vector<std::pair<int, int>> proximal;  ///< 3 joints: end of link 1 per primitive
     int elbow = 1;
     double link_diameter = 0.0;

@@ -24,9 +24,18 @@ struct Quadratic {
     };
     std::vector<Term> quadratic;
 
-    Quadratic& add(double c) { constant += c; return *this; }
-    Quadratic& add(int i, double a) { linear.push_back({i, a}); return *this; }
-    Quadratic& add(int i, int j, double w) { quadratic.push_back({i, j, w}); return *this; }
+    Quadratic& add(double c) {
+        constant += c;
+        return *this;
+    }
+    Quadratic& add(int i, double a) {
+        linear.push_back({i, a});
+        return *this;
+    }
+    Quadratic& add(int i, int j, double w) {
+        quadratic.push_back({i, j, w});
+        return *this;
+    }
 
     double value(const double* x) const;
     /// Adds scale * gradient into grad (dense).

@@ -58,7 +58,8 @@ struct Relaxation {
 /// then tried with the full pipeline for `solve_seconds`. Everything ends
 /// within `time_limit` seconds: the bisections stop there and the
 /// suggestions found so far are returned.
-std::vector<Relaxation> suggest_relaxations(const task::Task& task, const std::vector<std::string>& core,
+std::vector<Relaxation> suggest_relaxations(const task::Task& task,
+                                            const std::vector<std::string>& core,
                                             double solve_seconds, double time_limit = 1e6);
 
 }  // namespace modsynth::synth

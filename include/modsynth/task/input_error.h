@@ -10,7 +10,8 @@ namespace modsynth::task {
 class InputError : public std::runtime_error {
 public:
     InputError(std::string part, const std::string& problem)
-        : std::runtime_error(part.empty() ? problem : part + ": " + problem), part_(std::move(part)) {}
+        : std::runtime_error(part.empty() ? problem : part + ": " + problem),
+          part_(std::move(part)) {}
     const std::string& part() const { return part_; }
 
 private:

@@ -12,13 +12,13 @@ namespace modsynth::verify {
 struct Violation {
     enum class Kind { Structure, Deviation, Clearance, SelfCollision, JointStep, Order };
     Kind kind = Kind::Structure;
-    int sample = -1;     ///< first sample of the offending pair, -1 for the robot itself
-    int primitive = -1;  ///< primitive traced there (or left, in a transition), -1 if none
+    int sample = -1;          ///< first sample of the offending pair, -1 for the robot itself
+    int primitive = -1;       ///< primitive traced there (or left, in a transition), -1 if none
     bool transition = false;  ///< in the transition after `primitive`
-    double s = 0.0;      ///< arc length along it (first joint's angle in a transition)
-    int obstacle = -1;   ///< for Clearance
-    int link = -1;       ///< 0-based link index, for Clearance and SelfCollision
-    double amount = 0.0; ///< how far past the limit, m or rad
+    double s = 0.0;           ///< arc length along it (first joint's angle in a transition)
+    int obstacle = -1;        ///< for Clearance
+    int link = -1;            ///< 0-based link index, for Clearance and SelfCollision
+    double amount = 0.0;      ///< how far past the limit, m or rad
     std::string message;
 };
 
@@ -66,7 +66,6 @@ VerifyOptions options_for(const control::MotionOptions& motion, const VerifyOpti
 
 /// Throws std::invalid_argument when the options are not valid.
 Certificate certify(const task::Task& task, const kinematics::Robot& robot,
-                    const std::vector<control::Sample>& samples,
-                    const VerifyOptions& options = {});
+                    const std::vector<control::Sample>& samples, const VerifyOptions& options = {});
 
 }  // namespace modsynth::verify
