@@ -12,6 +12,7 @@
 #include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/option_check.h>
 
 namespace modsynth::synth {
 namespace {
@@ -249,8 +250,10 @@ std::string describe_part(const task::Task& task, const std::string& part) {
 
 std::vector<Relaxation> suggest_relaxations(const task::Task& task,
                                             const std::vector<std::string>& core,
-                                            double solve_seconds, double time_limit) {
-    constexpr double kCheck = 5.0;  // seconds per front-stage check
+                                            double solve_seconds, double time_limit,
+                                            const RelaxationOptions& options) {
+    text::require_valid(options);
+    const double kCheck = options.check_seconds;
     const Clock::time_point deadline = after(time_limit);
     const auto conflict_free = [&](const task::Task& t, double limit) {
         return synth::conflict_free(t, limit, deadline);
@@ -271,10 +274,11 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
         if (Clock::now() >= deadline) break;
         task::Task t = task;
         if (part == "robot.max_link_length") {
-            const auto v = smallest(task.robot.max_link_length, 50.0, 0.005, [&](double x) {
-                t.robot.max_link_length = x;
-                return conflict_free(t, kCheck);
-            });
+            const auto v = smallest(task.robot.max_link_length, options.longest_link,
+                                    options.length_tolerance, [&](double x) {
+                                        t.robot.max_link_length = x;
+                                        return conflict_free(t, kCheck);
+                                    });
             if (!v) continue;
             t.robot.max_link_length = std::ceil(*v * 100.0) / 100.0;
             offer(part,
@@ -282,19 +286,21 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
                       (traj.empty() ? "" : " would make " + listing(traj) + " reachable"),
                   t);
         } else if (part == "robot.min_link_length") {
-            const auto v = smallest(-task.robot.min_link_length, 0.0, 0.002, [&](double x) {
-                t.robot.min_link_length = -x;
-                return conflict_free(t, kCheck);
-            });
+            const auto v = smallest(-task.robot.min_link_length, 0.0, options.min_length_tolerance,
+                                    [&](double x) {
+                                        t.robot.min_link_length = -x;
+                                        return conflict_free(t, kCheck);
+                                    });
             if (!v) continue;
             t.robot.min_link_length = std::floor(-*v * 1000.0) / 1000.0;
             offer(part, text::format("robot.min_link_length <= %.3f m", t.robot.min_link_length),
                   t);
         } else if (part == "robot.link_diameter") {
-            const auto v = smallest(-task.robot.link_diameter, -1e-4, 0.0005, [&](double x) {
-                t.robot.link_diameter = -x;
-                return conflict_free(t, kCheck);
-            });
+            const auto v = smallest(-task.robot.link_diameter, -options.thinnest_tube,
+                                    options.diameter_tolerance, [&](double x) {
+                                        t.robot.link_diameter = -x;
+                                        return conflict_free(t, kCheck);
+                                    });
             if (!v) continue;
             t.robot.link_diameter = std::floor(-*v * 1000.0) / 1000.0;
             offer(part, text::format("robot.link_diameter <= %.3f m", t.robot.link_diameter), t);
@@ -308,7 +314,7 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
                     r.min -= Vec2::Constant(d), r.max += Vec2::Constant(d);
                 return g;
             };
-            const auto v = smallest(0.0, 20.0, 0.005,
+            const auto v = smallest(0.0, options.farthest_move, options.length_tolerance,
                                     [&](double d) { return conflict_free(grown(d), kCheck); });
             if (!v) continue;
             // Where the base can stand: the model of a satisfiable joint count.
@@ -344,10 +350,11 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
             if (!conflict_free(t, kCheck)) continue;
             // The largest radius that still leaves room.
             task::Task s = task;
-            const auto v = smallest(-task.obstacles[o].radius, -1e-3, 0.002, [&](double x) {
-                s.obstacles[o].radius = -x;
-                return conflict_free(s, kCheck);
-            });
+            const auto v = smallest(-task.obstacles[o].radius, -options.smallest_radius,
+                                    options.radius_tolerance, [&](double x) {
+                                        s.obstacles[o].radius = -x;
+                                        return conflict_free(s, kCheck);
+                                    });
             if (v) {
                 s.obstacles[o].radius = std::floor(-*v * 1000.0) / 1000.0;
                 offer(part, part + text::format(" with radius <= %.3f m", s.obstacles[o].radius),
@@ -373,7 +380,7 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
                     p.start += d * dir, p.end += d * dir, p.center += d * dir;
                 return m;
             };
-            const auto v = smallest(0.0, (target - mid).norm(), 0.005,
+            const auto v = smallest(0.0, (target - mid).norm(), options.length_tolerance,
                                     [&](double d) { return conflict_free(moved(d), kCheck); });
             if (!v) continue;
             const double d = std::ceil(*v * 100.0) / 100.0;
@@ -385,6 +392,20 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
         }
     }
     return out;
+}
+
+bool RelaxationOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("RelaxationOptions", error)
+        .greater("check_seconds", check_seconds, 0.0)
+        .greater("longest_link", longest_link, 0.0)
+        .greater("farthest_move", farthest_move, 0.0)
+        .greater("length_tolerance", length_tolerance, 0.0)
+        .greater("min_length_tolerance", min_length_tolerance, 0.0)
+        .greater("diameter_tolerance", diameter_tolerance, 0.0)
+        .greater("radius_tolerance", radius_tolerance, 0.0)
+        .greater("thinnest_tube", thinnest_tube, 0.0)
+        .greater("smallest_radius", smallest_radius, 0.0)
+        .ok();
 }
 
 }  // namespace modsynth::synth

@@ -15,6 +15,7 @@
 #include <modsynth/control/motion.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/text/option_check.h>
@@ -226,6 +227,26 @@ TEST_CASE("initial guess options: defaults valid, each bad field named", "[optio
     CHECK_THROWS_WITH(synth::initial_guesses(testing::line_task(), skeleton, 1, 0,
                                              std::chrono::steady_clock::time_point::max(), bad),
                       Catch::Contains("InitialGuessOptions::proximal_angles"));
+}
+
+TEST_CASE("relaxation options: defaults valid, each bad field named", "[options][explain]") {
+    using O = synth::RelaxationOptions;
+    check_options<O>({
+        {"RelaxationOptions::check_seconds", [](O& o) { o.check_seconds = 0.0; }},
+        {"RelaxationOptions::longest_link", [](O& o) { o.longest_link = kNaN; }},
+        {"RelaxationOptions::farthest_move", [](O& o) { o.farthest_move = -1.0; }},
+        {"RelaxationOptions::length_tolerance", [](O& o) { o.length_tolerance = 0.0; }},
+        {"RelaxationOptions::min_length_tolerance", [](O& o) { o.min_length_tolerance = kNaN; }},
+        {"RelaxationOptions::diameter_tolerance", [](O& o) { o.diameter_tolerance = -1e-3; }},
+        {"RelaxationOptions::radius_tolerance", [](O& o) { o.radius_tolerance = 0.0; }},
+        {"RelaxationOptions::thinnest_tube", [](O& o) { o.thinnest_tube = 0.0; }},
+        {"RelaxationOptions::smallest_radius", [](O& o) { o.smallest_radius = -1.0; }},
+    });
+    O bad;
+    bad.check_seconds = -1.0;
+    CHECK_THROWS_WITH(
+        synth::suggest_relaxations(testing::line_task(), {"robot.max_link_length"}, 1.0, 1.0, bad),
+        Catch::Contains("RelaxationOptions::check_seconds"));
 }
 
 TEST_CASE("baseline options: defaults valid, each bad field named", "[options][baseline]") {

@@ -53,6 +53,34 @@ struct Relaxation {
     std::string outcome;
 };
 
+/// How the smallest changes are searched for. Each is found by bisection
+/// over one number of the task, to the tolerance given here, and every
+/// step of a bisection is one front-stage check.
+struct RelaxationOptions {
+    /// s: at most this per front-stage check; a check that takes longer
+    /// counts as "still conflicting", so a suggestion is never unproved.
+    double check_seconds = 5.0;
+    /// m: the longest link a suggestion may ask for (robot.max_link_length
+    /// is bisected up to this), far beyond any modular arm.
+    double longest_link = 50.0;
+    /// m: how far a base region may be grown on every side, or the path
+    /// moved, in a suggestion.
+    double farthest_move = 20.0;
+    /// m: bisection tolerances: link lengths and moves (then rounded up to
+    /// whole centimetres), the shortest link, the tube diameter and an
+    /// obstacle's radius (then rounded down to whole millimetres).
+    double length_tolerance = 0.005;
+    double min_length_tolerance = 0.002;
+    double diameter_tolerance = 0.0005;
+    double radius_tolerance = 0.002;
+    /// m: the thinnest tube and the smallest obstacle a suggestion may ask for.
+    double thinnest_tube = 1e-4;
+    double smallest_radius = 1e-3;
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
+};
+
 /// For each part of the core, the smallest change of that part alone that
 /// makes the front stage satisfiable (found by bisection), re-checked, and
 /// then tried with the full pipeline for `solve_seconds`. Everything ends
@@ -60,6 +88,7 @@ struct Relaxation {
 /// suggestions found so far are returned.
 std::vector<Relaxation> suggest_relaxations(const task::Task& task,
                                             const std::vector<std::string>& core,
-                                            double solve_seconds, double time_limit = 1e6);
+                                            double solve_seconds, double time_limit = 1e6,
+                                            const RelaxationOptions& options = {});
 
 }  // namespace modsynth::synth
