@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
-#include <modsynth/control/motion.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/output/recertify.h>
 #include <modsynth/synth/synthesizer.h>
 
 #include <nlohmann/json.hpp>
@@ -62,12 +63,10 @@ Explanation explain(const Task& task, double time_limit, double solve_seconds) {
 
 Certificate certify(const Task& task, const Solution& solution) {
     if (solution.status != Status::Solved) return {};
-    io::check_solution_fits(task, solution);
-    // The stored motion need not carry the progress along each primitive
-    // (a document does not); the verifier recovers it from the angles.
-    std::vector<control::Sample> samples = solution.samples;
-    control::recover_parameters(task, solution.robot, samples);
-    return verify::certify(task, solution.robot, samples, synth::verify_options_for(task));
+    // The same re-verification export gives a solution read from a file.
+    io::ParsedSolution parsed{solution, true};
+    output::recertify(task, parsed);
+    return std::move(parsed.solution.certificate);
 }
 
 std::string write_solution_json(const Solution& solution) {
