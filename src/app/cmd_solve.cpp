@@ -3,8 +3,10 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include <modsynth/hardware/select_modules.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/output/exports.h>
@@ -30,8 +32,15 @@ struct SolveArgs {
 
 void print_summary(const task::Task& task, const synth::Solution& solution, double seconds,
                    const synth::SynthesisStats& stats, const std::string& output) {
+    // A certified motion that no allowed module carries is not a plain
+    // "solved": the status line says which joint is overloaded.
+    const bool overloaded = solution.modules && solution.modules->overloaded_joint > 0;
+    const std::string status =
+        overloaded ? text::format("solved, but joint %d is overloaded",
+                                  solution.modules->overloaded_joint)
+                   : std::string(synth::to_string(solution.status));
     std::printf("%s: %s in %.3f s (front stage %.3f s, refinement %.3f s, verification %.3f s)\n",
-                text::printable(task.name, 80).c_str(), synth::to_string(solution.status), seconds,
+                text::printable(task.name, 80).c_str(), status.c_str(), seconds,
                 stats.front_seconds, stats.refine_seconds, stats.verify_seconds);
     if (solution.status != synth::Status::Solved) {
         std::printf("  %s\n", solution.explanation.message.c_str());
@@ -51,6 +60,22 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
         c.min_clearance, c.min_self_clearance, c.max_deviation);
     std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
                 solution.samples.back().t, output.c_str());
+    if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
+}
+
+/// The catalog the modules are chosen from. A task that names modules
+/// needs it (and its names are checked before the run); without one the
+/// run goes on and says that no modules were chosen.
+std::optional<hardware::Catalog> catalog_for(const task::Task& task) {
+    try {
+        hardware::Catalog catalog = hardware::load_default_catalog();
+        hardware::allowed_actuators(task.robot, catalog);  // throws InputError naming the key
+        return catalog;
+    } catch (const hardware::CatalogError& e) {
+        if (!task.robot.modules.empty()) throw;
+        std::fprintf(stderr, "note: modules not chosen: %s\n", e.what());
+        return std::nullopt;
+    }
 }
 
 // Past the time limit by this much, the watchdog answers for the run.
@@ -59,6 +84,7 @@ constexpr double kWatchdogMargin = 0.6;
 int run_solve(const SolveArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
     const task::Task task = io::load_task(a.task);
+    const std::optional<hardware::Catalog> catalog = catalog_for(task);
     const auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
@@ -89,9 +115,11 @@ int run_solve(const SolveArgs& a) {
         if (!a.quiet) std::cerr << line << std::endl;
     };
     synth::SynthesisStats stats;
-    const synth::Solution solution = synth::synthesize(task, options, &stats);
+    synth::Solution solution = synth::synthesize(task, options, &stats);
     const double seconds = elapsed();
     watchdog.claim();
+    if (solution.status == synth::Status::Solved && catalog)
+        solution.modules = hardware::select_modules(task, solution.robot, solution.samples, *catalog);
     io::write_solution(solution, a.output);
     for (const auto& note : output::write_exports(
              task, solution, a.exports,

@@ -377,6 +377,48 @@ void parse_hardware(const json& robot, const std::string& part, RobotSpec& r) {
     }
 }
 
+/// Optional keys for choosing modules (formats.md "Modules and loads").
+void parse_loads(const json& robot, const std::string& part, RobotSpec& r) {
+    if (const json* v = optional(robot, "modules")) {
+        const std::string p = member(part, "modules");
+        require_array(*v, p, "module names, e.g. [\"X8-9\", \"X5-4\"]");
+        if (v->empty()) throw InputError(p, "is empty; list at least one module, or leave the key out");
+        require_count_cap(*v, p, "modules", 100);
+        for (std::size_t i = 0; i < v->size(); ++i) {
+            const std::string name = text((*v)[i], element(p, i), "a module name (text)");
+            if (name.empty()) throw InputError(element(p, i), "is empty; expected a module name");
+            if (std::find(r.modules.begin(), r.modules.end(), name) != r.modules.end()) {
+                throw InputError(element(p, i), "\"" + text::printable(name) + "\" is listed twice");
+            }
+            r.modules.push_back(name);
+        }
+    }
+    if (const json* v = optional(robot, "payload")) {
+        const std::string p = member(part, "payload");
+        r.payload = finite_number(*v, p, "a mass in kg");
+        if (r.payload < 0.0) throw InputError(p, "must not be negative, got " + describe(*v) + " kg");
+        if (r.payload > 1000.0) throw InputError(p, describe(*v) + " kg is more than the 1000 kg allowed");
+    }
+    if (const json* v = optional(robot, "gravity")) {
+        const std::string p = member(part, "gravity");
+        if (v->is_string() && v->get<std::string>() == "joint_axes") {
+            r.gravity.reset();
+        } else if (v->is_array()) {
+            if (v->size() != 2) {
+                throw InputError(p, "expected [gx, gy] in m/s^2 with 2 numbers, got a list of " +
+                                        std::to_string(v->size()));
+            }
+            Vec2 g;
+            for (std::size_t k = 0; k < 2; ++k) g[k] = finite_number((*v)[k], element(p, k), "an acceleration in m/s^2");
+            if (g.norm() > 100.0) throw InputError(p, "|g| = " + text::compact(g.norm()) + " m/s^2 is more than the 100 m/s^2 allowed");
+            r.gravity = g;
+        } else {
+            throw InputError(p, "expected \"joint_axes\" (the default: gravity along the joint axes) or "
+                                "a vector [gx, gy] in m/s^2 in the task plane, got " + describe(*v));
+        }
+    }
+}
+
 RobotSpec parse_robot(const json& doc) {
     RobotSpec r;
     const json* robot = optional(doc, "robot");
@@ -394,6 +436,7 @@ RobotSpec parse_robot(const json& doc) {
         r.max_link_length = positive_length(*v, member(part, "max_link_length"));
     }
     parse_hardware(*robot, part, r);
+    parse_loads(*robot, part, r);
     if (r.min_link_length > r.max_link_length) {
         throw InputError(member(part, "min_link_length"),
                          "minimum link length " + metres(r.min_link_length) +
@@ -500,6 +543,18 @@ Task load_task(const std::string& path) {
     return task;
 }
 
+namespace {
+
+/// The optional keys of module selection, only when set, so that a task
+/// without them is written as before.
+void add_loads_json(const RobotSpec& r, json& robot) {
+    if (!r.modules.empty()) robot["modules"] = r.modules;
+    if (r.payload > 0.0) robot["payload"] = r.payload;
+    if (r.gravity) robot["gravity"] = point_json(*r.gravity);
+}
+
+}  // namespace
+
 json to_json(const Task& task) {
     json trajectory = json::array();
     for (const Primitive& p : task.trajectory) trajectory.push_back(primitive_json(p));
@@ -511,7 +566,7 @@ json to_json(const Task& task) {
     for (const BaseRegion& b : task.base_regions) {
         regions.push_back({{"min", point_json(b.min)}, {"max", point_json(b.max)}});
     }
-    return {{"format", kFormat},
+    json doc = {{"format", kFormat},
             {"name", task.name},
             {"trajectory", trajectory},
             {"obstacles", obstacles},
@@ -526,6 +581,8 @@ json to_json(const Task& task) {
               {"module_height", task.robot.module_height},
               {"adapter_length", task.robot.adapter_length},
               {"ee_rod_diameter", task.robot.ee_rod_diameter}}}};
+    add_loads_json(task.robot, doc["robot"]);
+    return doc;
 }
 
 }  // namespace modsynth::io

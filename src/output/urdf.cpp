@@ -8,6 +8,8 @@
 #include <string>
 
 #include <modsynth/geometry/vec.h>
+#include <modsynth/hardware/arm_model.h>
+#include <modsynth/hardware/select_modules.h>
 #include <modsynth/output/hardware.h>
 #include <modsynth/text/format.h>
 
@@ -36,6 +38,19 @@ std::string box(const task::RobotSpec& spec, double x, double z) {
            "\"/></geometry>\n      <material name=\"module\"/>\n    </visual>\n";
 }
 
+/// The body's planar moment (about z) is the model's own (arm_model.h);
+/// about the link's axis a tube of the link's diameter, and across it the
+/// same as about z, since every part lies along the link.
+std::string inertial(const hardware::LinkBody& b, double z, double diameter) {
+    const double mass = std::max(b.mass, 1e-6);
+    const double izz = std::max(b.inertia, 1e-9);
+    const double ixx = std::max(mass * diameter * diameter / 8.0, 1e-9);
+    return "    <inertial>\n      " + origin(b.com, 0.0, z) + "\n      <mass value=\"" + num(mass) +
+           "\"/>\n      <inertia ixx=\"" + text::format("%.9g", ixx) +
+           "\" ixy=\"0\" ixz=\"0\" iyy=\"" + text::format("%.9g", izz) +
+           "\" iyz=\"0\" izz=\"" + text::format("%.9g", izz) + "\"/>\n    </inertial>\n";
+}
+
 /// A cylinder along x from x0 to x1 at height z (URDF cylinders lie along z).
 std::string x_cylinder(const char* element, double x0, double x1, double z, double diameter,
                        const char* material) {
@@ -58,15 +73,20 @@ double body_center(const task::RobotSpec& spec, double x_axis) {
     return x_axis - (spec.module_length / 2.0 - spec.module_width / 2.0);
 }
 
-std::string base_link(const task::RobotSpec& spec) {
+/// Module 1 stands on the table: its housing is the base link.
+std::string base_link(const task::RobotSpec& spec, const hardware::Actuator& module) {
+    hardware::LinkBody b;
+    const double L = spec.module_length, W = spec.module_width;
+    hardware::add_part(b, module.mass, body_center(spec, 0.0), module.mass * (L * L + W * W) / 12.0);
     return "  <link name=\"base_module\">\n" +
-           box(spec, body_center(spec, 0.0), spec.module_height / 2.0) + "  </link>\n";
+           box(spec, body_center(spec, 0.0), spec.module_height / 2.0) +
+           inertial(b, spec.module_height / 2.0, spec.module_width) + "  </link>\n";
 }
 
 /// Link k (0-based) in its joint's frame: the output face at z = 0, the
 /// tube on it, and the next module standing on the tube (or the EE rod).
 std::string arm_link(const task::RobotSpec& spec, const kinematics::Robot& robot,
-                     const TubeCut& cut, int k) {
+                     const TubeCut& cut, const hardware::LinkBody& body, int k) {
     const double d = robot.link_diameter;
     const double r = cut.link_length;
     std::string s = "  <link name=\"link_" + std::to_string(k + 1) + "\">\n";
@@ -80,6 +100,7 @@ std::string arm_link(const task::RobotSpec& spec, const kinematics::Robot& robot
     } else {
         s += box(spec, body_center(spec, r), d + spec.module_height / 2.0);
     }
+    s += inertial(body, d / 2.0, d);
     return s + "  </link>\n";
 }
 
@@ -110,15 +131,15 @@ std::vector<Range> joint_ranges(const synth::Solution& solution) {
     return out;
 }
 
-std::string revolute(int k, const std::string& parent, double x, double z, const Range& range) {
-    const double velocity = std::max(0.01, 1.1 * range.speed);
+std::string revolute(int k, const std::string& parent, double x, double z, const Range& range,
+                     const hardware::Actuator& module) {
     return "  <joint name=\"joint_" + std::to_string(k + 1) +
            "\" type=\"revolute\">\n    <parent link=\"" + parent + "\"/>\n    <child link=\"link_" +
            std::to_string(k + 1) + "\"/>\n    " + origin(x, 0.0, z) +
            "\n    <axis xyz=\"0 0 1\"/>\n    <limit lower=\"" +
            num(range.lower - kJointLimitMargin) + "\" upper=\"" +
-           num(range.upper + kJointLimitMargin) + "\" effort=\"16\" velocity=\"" + num(velocity) +
-           "\"/>\n  </joint>\n";
+           num(range.upper + kJointLimitMargin) + "\" effort=\"" + num(module.peak_torque) +
+           "\" velocity=\"" + num(module.max_speed) + "\"/>\n  </joint>\n";
 }
 
 std::string fixed_joint(const char* name, const std::string& parent, const std::string& child,
@@ -128,43 +149,97 @@ std::string fixed_joint(const char* name, const std::string& parent, const std::
            "\n  </joint>\n";
 }
 
-std::string preamble(const task::Task& task) {
+/// A ros2_control system for the arm: each joint commanded by position,
+/// reporting position and velocity, starting at the motion's first pose. The
+/// plugin is ros2_control's mock system, which runs the arm without hardware;
+/// a real arm names its modules' driver there instead.
+std::string ros2_control(const task::Task& task, const synth::Solution& solution) {
+    std::string s = "  <ros2_control name=\"" + robot_name(task.name) +
+                    "\" type=\"system\">\n    <hardware>\n      "
+                    "<plugin>mock_components/GenericSystem</plugin>\n    </hardware>\n";
+    for (int k = 0; k < solution.robot.dof(); ++k) {
+        const double q0 = solution.samples.empty() ? 0.0 : solution.samples.front().q[k];
+        s += "    <joint name=\"joint_" + std::to_string(k + 1) +
+             "\">\n      <command_interface name=\"position\"/>\n"
+             "      <state_interface name=\"position\">\n        <param "
+             "name=\"initial_value\">" +
+             num(q0) +
+             "</param>\n      </state_interface>\n"
+             "      <state_interface name=\"velocity\"/>\n    </joint>\n";
+    }
+    return s + "  </ros2_control>\n";
+}
+
+std::string preamble(const task::Task& task, const std::string& modules, bool chosen) {
     std::string s = "<?xml version=\"1.0\"?>\n<robot name=\"" + robot_name(task.name) + "\">\n";
     s += "  <!-- Planar arm synthesised by modsynth. Frame \"world\" is the task plane (z up); "
          "the tip link \"ee\" touches it. Joint angles are those of the solution's samples. "
-         "Limits: the motion's range plus " +
-         std::to_string(kJointLimitMargin).substr(0, 4) +
-         " rad, the fastest speed of the motion plus 10%, effort the 16 N m an X8-16 is "
-         "rated for. "
-         "No inertial data: a kinematic model. -->\n";
+         "Modules (joint 1 first): " +
+         modules + (chosen ? " (chosen to carry the motion)" : " (not chosen for a load: the strongest allowed)") +
+         ". Limits: the motion's range plus " + std::to_string(kJointLimitMargin).substr(0, 4) +
+         " rad; effort and velocity the module's peak torque and top speed. Inertials: the "
+         "modules, tubes and adapters of the catalog, with the payload at the tool. -->\n";
     s += "  <material name=\"module\"><color rgba=\"0.80 0.20 0.15 1\"/></material>\n";
     s += "  <material name=\"tube\"><color rgba=\"0.75 0.75 0.78 1\"/></material>\n";
     s += "  <material name=\"rod\"><color rgba=\"0.20 0.20 0.20 1\"/></material>\n";
     return s + "  <link name=\"world\"/>\n";
 }
 
+/// The chosen modules when the solution has them, else the strongest
+/// allowed module at every joint.
+std::vector<const hardware::Actuator*> urdf_modules(const task::Task& task,
+                                                    const synth::Solution& solution,
+                                                    const hardware::Catalog& catalog) {
+    const int n = solution.robot.dof();
+    std::vector<const hardware::Actuator*> out;
+    if (solution.modules && solution.modules->checked &&
+        static_cast<int>(solution.modules->joints.size()) == n) {
+        for (const auto& j : solution.modules->joints) {
+            const hardware::Actuator* a = catalog.actuator(j.module);
+            if (!a) throw std::runtime_error("the module catalog has no \"" + j.module + "\"");
+            out.push_back(a);
+        }
+        return out;
+    }
+    const auto allowed = hardware::allowed_actuators(task.robot, catalog);
+    const auto strongest = std::max_element(
+        allowed.begin(), allowed.end(),
+        [](const auto* a, const auto* b) { return a->peak_torque < b->peak_torque; });
+    return std::vector<const hardware::Actuator*>(n, *strongest);
+}
+
 }  // namespace
 
 std::string robot_urdf(const task::Task& task, const synth::Solution& solution) {
+    return robot_urdf(task, solution, hardware::load_default_catalog());
+}
+
+std::string robot_urdf(const task::Task& task, const synth::Solution& solution,
+                       const hardware::Catalog& catalog) {
     const kinematics::Robot& robot = solution.robot;
     const task::RobotSpec& spec = task.robot;
     const double d = robot.link_diameter;
     const std::vector<TubeCut> cuts = tube_cuts(spec, robot);
     const std::vector<Range> ranges = joint_ranges(solution);
     const int n = robot.dof();
-    std::string s = preamble(task);
-    s += base_link(spec);
+    const auto modules = urdf_modules(task, solution, catalog);
+    const hardware::ArmModel model = hardware::arm_model(spec, robot, catalog, modules);
+    std::string names;
+    for (const auto* m : modules) names += (names.empty() ? "" : ", ") + m->name;
+    std::string s = preamble(task, names, solution.modules && solution.modules->checked);
+    s += base_link(spec, *modules[0]);
     s += fixed_joint("base_mount", "world", "base_module", robot.base.x(), robot.base.y(), 0.0);
     for (int k = 0; k < n; ++k) {
-        s += arm_link(spec, robot, cuts[k], k);
+        s += arm_link(spec, robot, cuts[k], model.links[k], k);
         const std::string parent = k == 0 ? "base_module" : "link_" + std::to_string(k);
         const double x = k == 0 ? 0.0 : robot.link_lengths[k - 1];
         const double z = k == 0 ? spec.module_height : d + spec.module_height;
-        s += revolute(k, parent, x, z, ranges[k]);
+        s += revolute(k, parent, x, z, ranges[k], *modules[k]);
     }
     s += "  <link name=\"ee\"/>\n";
     s += fixed_joint("ee_tip", "link_" + std::to_string(n), "ee", robot.link_lengths[n - 1], 0.0,
                      -output_face_height(spec, d, n - 1));
+    s += ros2_control(task, solution);
     return s + "</robot>\n";
 }
 

@@ -22,6 +22,10 @@ struct Sample {
     /// samples, the first joint's angle for transition samples.
     double s = 0.0;
     std::vector<double> q;
+    /// Joint rates (rad/s) and accelerations (rad/s^2), as long as q when
+    /// the motion is timed for a controller, empty otherwise (formats.md,
+    /// "Timing a controller accepts").
+    std::vector<double> qd, qdd;
 };
 
 struct MotionOptions {

@@ -2,10 +2,11 @@
 // The synthesised robot as a URDF model: revolute joints about z, each link
 // a tube of the link diameter one level higher than the previous one (paper
 // III-G), the module bodies as boxes, and the end-effector rod down to the
-// task plane. The root link "world" is the task frame, so the tip link "ee"
+// task plane, with the masses of the module catalog. The root link "world" is the task frame, so the tip link "ee"
 // lies on the path at z = 0 for every configuration of the motion.
 #include <string>
 
+#include <modsynth/hardware/catalog.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/task/task.h>
 
@@ -16,7 +17,16 @@ namespace modsynth::output {
 constexpr double kJointLimitMargin = 0.05;
 
 /// The model of a solved solution (its robot and, for the joint limits,
-/// its samples); the module sizes come from task.robot.
+/// its samples); the module sizes come from task.robot, the masses and
+/// ratings from the catalog: the modules of solution.modules when chosen,
+/// else the strongest allowed module (task robot.modules) at every joint.
+/// Each link has an <inertial>, each joint <limit> with the module's peak
+/// torque and top speed, and a <ros2_control> block commands the joints by
+/// position (state: position and velocity).
+std::string robot_urdf(const task::Task& task, const synth::Solution& solution,
+                       const hardware::Catalog& catalog);
+/// The same with the catalog shipped with the program
+/// (hardware::load_default_catalog; throws hardware::CatalogError).
 std::string robot_urdf(const task::Task& task, const synth::Solution& solution);
 
 }  // namespace modsynth::output

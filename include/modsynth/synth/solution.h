@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <modsynth/control/motion.h>
+#include <modsynth/hardware/selection.h>
 #include <modsynth/kinematics/robot.h>
 #include <modsynth/synth/status.h>
 #include <modsynth/synth/wall_witness.h>
@@ -28,6 +29,9 @@ struct Solution {
     std::vector<control::Sample> samples;  ///< solved only
     verify::Certificate certificate;       ///< solved only
     Explanation explanation;               ///< infeasible and unknown
+    /// Solved only, when modules were chosen for the motion (it must carry
+    /// qd and qdd): the actuator at each joint, or the joint none carries.
+    std::optional<hardware::ModuleSelection> modules;
 };
 
 }  // namespace modsynth::synth

@@ -1,6 +1,7 @@
 #pragma once
 // The task a user asks modsynth to solve (formats.md, modsynth-task/1), as
 // plain value types. A Task that exists has been validated.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,17 @@ struct RobotSpec {
     double adapter_length = 0.020;
     /// The rod that carries the end-effector down to the task plane.
     double ee_rod_diameter = 0.0095;
+    /// What the modules must carry (optional keys, formats.md "Modules and
+    /// loads"; they do not change the geometry the synthesis finds).
+    /// Actuators the arm may be built from, by catalog name; empty: every
+    /// actuator of the catalog.
+    std::vector<std::string> modules;
+    double payload = 0.0;  ///< kg held at the tool (the end-effector)
+    /// Gravity in the task plane (m/s^2, task frame) when the plane stands
+    /// upright; none when the plane is horizontal and gravity runs along the
+    /// joint axes, where it loads no joint (the bearings carry it) and the
+    /// torques are inertial only.
+    std::optional<Vec2> gravity;
 };
 
 struct Task {

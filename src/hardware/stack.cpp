@@ -1,6 +1,6 @@
-#include <modsynth/output/hardware.h>
+#include <modsynth/hardware/stack.h>
 
-namespace modsynth::output {
+namespace modsynth::hardware {
 
 double proximal_allowance(const task::RobotSpec& spec) {
     return spec.module_width / 2.0 + spec.adapter_length;
@@ -39,4 +39,4 @@ double ee_rod_length(const task::RobotSpec& spec, double link_diameter, int dof)
     return output_face_height(spec, link_diameter, dof - 1) + link_diameter;
 }
 
-}  // namespace modsynth::output
+}  // namespace modsynth::hardware

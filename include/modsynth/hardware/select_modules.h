@@ -1,0 +1,39 @@
+#pragma once
+// Choosing actuator modules for a solved motion: the lightest allowed module
+// at each joint whose peak torque covers the largest |torque|, whose
+// continuous torque covers the RMS torque, and whose speed covers the
+// largest |qd|.
+#include <vector>
+
+#include <modsynth/control/motion.h>
+#include <modsynth/hardware/arm_model.h>
+#include <modsynth/hardware/catalog.h>
+#include <modsynth/hardware/selection.h>
+#include <modsynth/kinematics/robot.h>
+#include <modsynth/task/task.h>
+
+namespace modsynth::hardware {
+
+/// Torque and speed figures of every joint over timed samples that carry qd
+/// and qdd (throws std::invalid_argument on a sample without them). RMS is
+/// over time (trapezoid rule), or over samples when all share one time.
+std::vector<JointLoad> joint_loads(const ArmModel& model,
+                                   const std::vector<control::Sample>& samples);
+
+/// The allowed actuators of a task (robot.modules, or every catalog
+/// actuator), lightest first. Throws task::InputError naming
+/// robot.modules[i] for a name the catalog does not have.
+std::vector<const Actuator*> allowed_actuators(const task::RobotSpec& spec,
+                                               const Catalog& catalog);
+
+/// Chooses from the distal joint inwards: a joint's torques depend only on
+/// the modules farther out, which are then already chosen, and each joint
+/// takes the lightest that carries it (lighter modules outward mostly lower
+/// the loads inward; the choice is greedy, not a search over all
+/// combinations). Unchecked (selection.checked false) when a sample lacks
+/// qd or qdd.
+ModuleSelection select_modules(const task::Task& task, const kinematics::Robot& robot,
+                               const std::vector<control::Sample>& samples,
+                               const Catalog& catalog);
+
+}  // namespace modsynth::hardware
