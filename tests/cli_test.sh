@@ -30,6 +30,11 @@ for f, e in sorted(json.load(open(sys.argv[1])).items()):
 # Usage errors and informational flags.
 expect_exit 2 "no subcommand" "$bin"
 expect_exit 2 "unknown subcommand" "$bin" frobnicate
+# A module the catalog does not have is named before any work is done.
+printf '%s' '{"format": "modsynth-task/1", "trajectory": [{"type": "line", "start": [0.4, 0.1], "end": [0.5, 0.1]}], "robot": {"modules": ["X8-9", "X9-9"]}}' >"$tmp/unknown_module.json"
+expect_exit 2 "solve with an unknown module" "$bin" solve "$tmp/unknown_module.json" -o "$tmp/unknown_module.out.json"
+grep -q 'robot.modules\[1\]: the module catalog has no "X9-9"' "$tmp/err" || fail "the unknown module is not named: $(cat "$tmp/err")"
+expect_exit 2 "validate with an unknown module" "$bin" validate "$tmp/unknown_module.json"
 expect_exit 2 "solve without -o" "$bin" solve "$root/tasks/rose.json"
 expect_exit 2 "negative time limit" "$bin" solve "$root/tasks/rose.json" -o "$tmp/x.json" --time-limit -1
 expect_exit 2 "missing file" "$bin" validate "$tmp/does-not-exist.json"

@@ -1,5 +1,6 @@
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <modsynth/io/solution_io.h>
@@ -8,6 +9,7 @@
 #include <modsynth/output/recertify.h>
 
 #include "command.h"
+#include "module_choice.h"
 
 namespace modsynth::app {
 namespace {
@@ -25,9 +27,13 @@ int run_export(const ExportArgs& a) {
         return kInvalid;
     }
     const task::Task task = io::load_task(a.task);
+    const std::optional<hardware::Catalog> catalog = catalog_for(task);
     io::ParsedSolution parsed = io::load_solution(a.solution);
     output::ReportFigures figures;
     figures.certificate_note = output::recertify(task, parsed);
+    choose_modules(task, catalog, parsed.solution);
+    if (parsed.solution.modules && parsed.solution.modules->overloaded_joint > 0)
+        std::fprintf(stderr, "warning: %s\n", parsed.solution.modules->message.c_str());
     const synth::Solution& s = parsed.solution;
     if (s.status == synth::Status::Solved && !s.certificate.ok)
         std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),

@@ -6,7 +6,6 @@
 #include <optional>
 #include <string>
 
-#include <modsynth/hardware/select_modules.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/output/exports.h>
@@ -15,6 +14,7 @@
 #include <modsynth/text/printable.h>
 
 #include "command.h"
+#include "module_choice.h"
 #include "number_checks.h"
 #include "watchdog.h"
 
@@ -35,10 +35,9 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
     // A certified motion that no allowed module carries is not a plain
     // "solved": the status line says which joint is overloaded.
     const bool overloaded = solution.modules && solution.modules->overloaded_joint > 0;
-    const std::string status =
-        overloaded ? text::format("solved, but joint %d is overloaded",
-                                  solution.modules->overloaded_joint)
-                   : std::string(synth::to_string(solution.status));
+    const std::string status = overloaded ? text::format("solved, but joint %d is overloaded",
+                                                         solution.modules->overloaded_joint)
+                                          : std::string(synth::to_string(solution.status));
     std::printf("%s: %s in %.3f s (front stage %.3f s, refinement %.3f s, verification %.3f s)\n",
                 text::printable(task.name, 80).c_str(), status.c_str(), seconds,
                 stats.front_seconds, stats.refine_seconds, stats.verify_seconds);
@@ -61,21 +60,6 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
     std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
                 solution.samples.back().t, output.c_str());
     if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
-}
-
-/// The catalog the modules are chosen from. A task that names modules
-/// needs it (and its names are checked before the run); without one the
-/// run goes on and says that no modules were chosen.
-std::optional<hardware::Catalog> catalog_for(const task::Task& task) {
-    try {
-        hardware::Catalog catalog = hardware::load_default_catalog();
-        hardware::allowed_actuators(task.robot, catalog);  // throws InputError naming the key
-        return catalog;
-    } catch (const hardware::CatalogError& e) {
-        if (!task.robot.modules.empty()) throw;
-        std::fprintf(stderr, "note: modules not chosen: %s\n", e.what());
-        return std::nullopt;
-    }
 }
 
 // Past the time limit by this much, the watchdog answers for the run.
@@ -118,8 +102,7 @@ int run_solve(const SolveArgs& a) {
     synth::Solution solution = synth::synthesize(task, options, &stats);
     const double seconds = elapsed();
     watchdog.claim();
-    if (solution.status == synth::Status::Solved && catalog)
-        solution.modules = hardware::select_modules(task, solution.robot, solution.samples, *catalog);
+    choose_modules(task, catalog, solution);
     io::write_solution(solution, a.output);
     for (const auto& note : output::write_exports(
              task, solution, a.exports,

@@ -7,6 +7,7 @@
 #include <modsynth/text/printable.h>
 
 #include "command.h"
+#include "module_choice.h"
 
 namespace modsynth::app {
 
@@ -17,6 +18,8 @@ Command add_validate(CLI::App& parent) {
     sub->add_option("TASK", *path, "modsynth-task/1 JSON file")->required();
     return {sub, [path] {
                 const task::Task t = io::load_task(*path);
+                // robot.modules must name modules of the catalog.
+                if (!t.robot.modules.empty()) catalog_for(t);
                 std::printf(
                     "%s: valid task '%s': %zu primitives, %zu obstacles, %zu base regions\n",
                     path->c_str(), text::printable(t.name, 80).c_str(), t.trajectory.size(),

@@ -10,8 +10,8 @@ void add_part(LinkBody& body, double mass, double com, double inertia) {
     if (mass <= 0.0) return;
     const double total = body.mass + mass;
     const double c = (body.mass * body.com + mass * com) / total;
-    body.inertia += body.mass * (body.com - c) * (body.com - c) + inertia +
-                    mass * (com - c) * (com - c);
+    body.inertia +=
+        body.mass * (body.com - c) * (body.com - c) + inertia + mass * (com - c) * (com - c);
     body.com = c;
     body.mass = total;
 }

@@ -41,8 +41,8 @@ double positive(const json& obj, const std::string& place, const char* key, doub
     const double v = it->get<double>();
     if (v <= 0.0) fail(place, std::string(key) + ": must be greater than 0, got " + it->dump());
     if (v > cap) {
-        fail(place, std::string(key) + ": " + it->dump() + " is more than " +
-                        json(cap).dump() + " (check the unit)");
+        fail(place, std::string(key) + ": " + it->dump() + " is more than " + json(cap).dump() +
+                        " (check the unit)");
     }
     return v;
 }
@@ -142,7 +142,8 @@ void parse_catalog_file(const std::string& text, const std::string& file, Catalo
     } catch (const json::parse_error& e) {
         fail(file, std::string("not valid JSON: ") + e.what());
     }
-    if (!doc.is_object()) fail(file, "expected a JSON object {\"format\": \"" + std::string(kFormat) + "\", ...}");
+    if (!doc.is_object())
+        fail(file, "expected a JSON object {\"format\": \"" + std::string(kFormat) + "\", ...}");
     const auto format = doc.find("format");
     if (format == doc.end() || *format != kFormat)
         fail(file, std::string("format: expected \"") + kFormat + "\"");
@@ -181,7 +182,8 @@ Catalog load_catalog(const std::string& folder) {
     Catalog catalog;
     for (const auto& f : files) parse_catalog_file(read_file(f), f.filename().string(), catalog);
     if (catalog.actuators.empty())
-        throw CatalogError(folder + ": the module catalog has no actuator (no kind \"actuator\" file)");
+        throw CatalogError(folder +
+                           ": the module catalog has no actuator (no kind \"actuator\" file)");
     std::set<std::string> names;
     const auto unique = [&](const std::string& name) {
         if (!names.insert(name).second)

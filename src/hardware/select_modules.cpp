@@ -37,8 +37,9 @@ JointChoice assess(const Actuator& a, const JointLoad& load) {
     } limits[] = {{"peak torque", c.peak_margin / a.peak_torque, load.peak_time},
                   {"continuous torque", c.continuous_margin / a.continuous_torque, load.peak_time},
                   {"speed", c.speed_margin / a.max_speed, load.max_speed_time}};
-    const auto* worst = std::min_element(std::begin(limits), std::end(limits),
-                                         [](const auto& x, const auto& y) { return x.share < y.share; });
+    const auto* worst =
+        std::min_element(std::begin(limits), std::end(limits),
+                         [](const auto& x, const auto& y) { return x.share < y.share; });
     c.worst_limit = worst->name;
     c.worst_share = worst->share;
     c.worst_time = worst->time;
@@ -49,23 +50,23 @@ JointChoice assess(const Actuator& a, const JointLoad& load) {
 std::string overload_text(int joint, const JointChoice& c) {
     std::string what;
     if (c.worst_limit == "peak torque") {
-        what = text::format("%.2f N m at t = %.3f s against its %.3g N m peak torque (margin %.2f N m)",
-                            c.load.peak_torque, c.load.peak_time, c.peak_torque_limit,
-                            c.peak_margin);
+        what = text::format(
+            "%.2f N m at t = %.3f s against its %.3g N m peak torque (margin %.2f N m)",
+            c.load.peak_torque, c.load.peak_time, c.peak_torque_limit, c.peak_margin);
     } else if (c.worst_limit == "continuous torque") {
         what = text::format(
             "an RMS torque of %.2f N m against its %.3g N m continuous torque (margin %.2f N m; "
             "peak %.2f N m at t = %.3f s)",
-            c.load.rms_torque, c.continuous_torque_limit, c.continuous_margin,
-            c.load.peak_torque, c.load.peak_time);
+            c.load.rms_torque, c.continuous_torque_limit, c.continuous_margin, c.load.peak_torque,
+            c.load.peak_time);
     } else {
         what = text::format("%.3f rad/s at t = %.3f s against its %.3g rad/s (margin %.3f rad/s)",
-                            c.load.max_speed, c.load.max_speed_time, c.speed_limit,
-                            c.speed_margin);
+                            c.load.max_speed, c.load.max_speed_time, c.speed_limit, c.speed_margin);
     }
-    return text::format("joint %d is overloaded: no allowed module carries it; the one with the "
-                        "most room, %s, sees ",
-                        joint, c.module.c_str()) +
+    return text::format(
+               "joint %d is overloaded: no allowed module carries it; the one with the "
+               "most room, %s, sees ",
+               joint, c.module.c_str()) +
            what;
 }
 
@@ -93,7 +94,8 @@ std::vector<JointLoad> joint_loads(const ArmModel& model,
                 l.max_speed_time = s.t;
             }
             square_sum[k] += tau[k] * tau[k];
-            if (i > 0) square_integral[k] += dt * (tau[k] * tau[k] + previous[k] * previous[k]) / 2.0;
+            if (i > 0)
+                square_integral[k] += dt * (tau[k] * tau[k] + previous[k] * previous[k]) / 2.0;
         }
         previous = tau;
     }
@@ -115,10 +117,11 @@ std::vector<const Actuator*> allowed_actuators(const task::RobotSpec& spec,
             const Actuator* a = catalog.actuator(spec.modules[i]);
             if (!a) {
                 std::string names;
-                for (const auto& c : catalog.actuators) names += (names.empty() ? "" : ", ") + c.name;
-                throw task::InputError("robot.modules[" + std::to_string(i) + "]",
-                                       "the module catalog has no \"" + spec.modules[i] +
-                                           "\"; it has " + names);
+                for (const auto& c : catalog.actuators)
+                    names += (names.empty() ? "" : ", ") + c.name;
+                throw task::InputError(
+                    "robot.modules[" + std::to_string(i) + "]",
+                    "the module catalog has no \"" + spec.modules[i] + "\"; it has " + names);
             }
             out.push_back(a);
         }
@@ -173,9 +176,10 @@ ModuleSelection select_modules(const task::Task& task, const kinematics::Robot& 
             names += (k ? ", " : "") + out.joints[k].module;
             worst = std::min(worst, out.joints[k].worst_share);
         }
-        out.message = text::format("modules %s (%.3f kg), every joint carried with at least "
-                                   "%.0f%% of a rating to spare",
-                                   names.c_str(), out.total_mass, 100.0 * worst);
+        out.message = text::format(
+            "modules %s (%.3f kg), every joint carried with at least "
+            "%.0f%% of a rating to spare",
+            names.c_str(), out.total_mass, 100.0 * worst);
     }
     return out;
 }

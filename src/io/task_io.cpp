@@ -382,13 +382,15 @@ void parse_loads(const json& robot, const std::string& part, RobotSpec& r) {
     if (const json* v = optional(robot, "modules")) {
         const std::string p = member(part, "modules");
         require_array(*v, p, "module names, e.g. [\"X8-9\", \"X5-4\"]");
-        if (v->empty()) throw InputError(p, "is empty; list at least one module, or leave the key out");
+        if (v->empty())
+            throw InputError(p, "is empty; list at least one module, or leave the key out");
         require_count_cap(*v, p, "modules", 100);
         for (std::size_t i = 0; i < v->size(); ++i) {
             const std::string name = text((*v)[i], element(p, i), "a module name (text)");
             if (name.empty()) throw InputError(element(p, i), "is empty; expected a module name");
             if (std::find(r.modules.begin(), r.modules.end(), name) != r.modules.end()) {
-                throw InputError(element(p, i), "\"" + text::printable(name) + "\" is listed twice");
+                throw InputError(element(p, i),
+                                 "\"" + text::printable(name) + "\" is listed twice");
             }
             r.modules.push_back(name);
         }
@@ -396,8 +398,10 @@ void parse_loads(const json& robot, const std::string& part, RobotSpec& r) {
     if (const json* v = optional(robot, "payload")) {
         const std::string p = member(part, "payload");
         r.payload = finite_number(*v, p, "a mass in kg");
-        if (r.payload < 0.0) throw InputError(p, "must not be negative, got " + describe(*v) + " kg");
-        if (r.payload > 1000.0) throw InputError(p, describe(*v) + " kg is more than the 1000 kg allowed");
+        if (r.payload < 0.0)
+            throw InputError(p, "must not be negative, got " + describe(*v) + " kg");
+        if (r.payload > 1000.0)
+            throw InputError(p, describe(*v) + " kg is more than the 1000 kg allowed");
     }
     if (const json* v = optional(robot, "gravity")) {
         const std::string p = member(part, "gravity");
@@ -409,12 +413,18 @@ void parse_loads(const json& robot, const std::string& part, RobotSpec& r) {
                                         std::to_string(v->size()));
             }
             Vec2 g;
-            for (std::size_t k = 0; k < 2; ++k) g[k] = finite_number((*v)[k], element(p, k), "an acceleration in m/s^2");
-            if (g.norm() > 100.0) throw InputError(p, "|g| = " + text::compact(g.norm()) + " m/s^2 is more than the 100 m/s^2 allowed");
+            for (std::size_t k = 0; k < 2; ++k)
+                g[k] = finite_number((*v)[k], element(p, k), "an acceleration in m/s^2");
+            if (g.norm() > 100.0)
+                throw InputError(p, "|g| = " + text::compact(g.norm()) +
+                                        " m/s^2 is more than the 100 m/s^2 allowed");
             r.gravity = g;
         } else {
-            throw InputError(p, "expected \"joint_axes\" (the default: gravity along the joint axes) or "
-                                "a vector [gx, gy] in m/s^2 in the task plane, got " + describe(*v));
+            throw InputError(
+                p,
+                "expected \"joint_axes\" (the default: gravity along the joint axes) or "
+                "a vector [gx, gy] in m/s^2 in the task plane, got " +
+                    describe(*v));
         }
     }
 }
@@ -567,20 +577,20 @@ json to_json(const Task& task) {
         regions.push_back({{"min", point_json(b.min)}, {"max", point_json(b.max)}});
     }
     json doc = {{"format", kFormat},
-            {"name", task.name},
-            {"trajectory", trajectory},
-            {"obstacles", obstacles},
-            {"base_regions", regions},
-            {"robot",
-             {{"dof", task.robot.dof},
-              {"link_diameter", task.robot.link_diameter},
-              {"min_link_length", task.robot.min_link_length},
-              {"max_link_length", task.robot.max_link_length},
-              {"module_length", task.robot.module_length},
-              {"module_width", task.robot.module_width},
-              {"module_height", task.robot.module_height},
-              {"adapter_length", task.robot.adapter_length},
-              {"ee_rod_diameter", task.robot.ee_rod_diameter}}}};
+                {"name", task.name},
+                {"trajectory", trajectory},
+                {"obstacles", obstacles},
+                {"base_regions", regions},
+                {"robot",
+                 {{"dof", task.robot.dof},
+                  {"link_diameter", task.robot.link_diameter},
+                  {"min_link_length", task.robot.min_link_length},
+                  {"max_link_length", task.robot.max_link_length},
+                  {"module_length", task.robot.module_length},
+                  {"module_width", task.robot.module_width},
+                  {"module_height", task.robot.module_height},
+                  {"adapter_length", task.robot.adapter_length},
+                  {"ee_rod_diameter", task.robot.ee_rod_diameter}}}};
     add_loads_json(task.robot, doc["robot"]);
     return doc;
 }

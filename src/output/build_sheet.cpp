@@ -37,9 +37,8 @@ std::string modules_section(const synth::Solution& solution) {
     if (!solution.modules) return "";
     const hardware::ModuleSelection& m = *solution.modules;
     std::string s = "## Modules\n\n";
-    if (!m.checked) return s + text::markdown_literal(m.message) + ".\n\n";
-    if (m.overloaded_joint > 0)
-        s += "**Warning:** " + text::markdown_literal(m.message) + ".\n\n";
+    if (!m.checked) return s + m.message + ".\n\n";
+    if (m.overloaded_joint > 0) s += "**Warning:** " + m.message + ".\n\n";
     s += "Lightest allowed module per joint that carries the motion: peak |torque| within its "
          "peak torque, RMS torque within its continuous torque, |speed| within its top speed. "
          "Margin: rating minus load.\n\n"
@@ -49,13 +48,13 @@ std::string modules_section(const synth::Solution& solution) {
     for (std::size_t k = 0; k < m.joints.size(); ++k) {
         const auto& j = m.joints[k];
         s += "| " + std::to_string(k + 1) + " | " + text::markdown_literal(j.module) +
-             (j.carries ? "" : " **(overloaded)**") + " | " + text::format("%.3f", j.mass) +
-             " | " + text::format("%.3f", j.load.peak_torque) + " | " +
+             (j.carries ? "" : " **(overloaded)**") + " | " + text::format("%.3f", j.mass) + " | " +
+             text::format("%.3f", j.load.peak_torque) + " | " +
              text::format("%.3f", j.load.peak_time) + " | " + text::format("%.3f", j.peak_margin) +
              " | " + text::format("%.3f", j.load.rms_torque) + " | " +
              text::format("%.3f", j.continuous_margin) + " | " +
-             text::format("%.3f", j.load.max_speed) + " | " +
-             text::format("%.3f", j.speed_margin) + " |\n";
+             text::format("%.3f", j.load.max_speed) + " | " + text::format("%.3f", j.speed_margin) +
+             " |\n";
     }
     return s + "\nModules: " + text::format("%.3f", m.total_mass) + " kg in all.\n\n";
 }
@@ -161,8 +160,8 @@ std::string build_sheet(const task::Task& task, const synth::Solution& solution)
         s += "**Warning:** not certified: " +
              text::markdown_literal(uncertified_reason(solution.certificate)) +
              ". The motion may leave the path or collide.\n\n";
-    return s + parts(task, robot) + modules_section(solution) + cuts_section(task, robot) + stack_section(task, robot) +
-           base_section(robot) + start_pose_section(solution);
+    return s + parts(task, robot) + modules_section(solution) + cuts_section(task, robot) +
+           stack_section(task, robot) + base_section(robot) + start_pose_section(solution);
 }
 
 }  // namespace modsynth::output

@@ -47,8 +47,8 @@ std::string inertial(const hardware::LinkBody& b, double z, double diameter) {
     const double ixx = std::max(mass * diameter * diameter / 8.0, 1e-9);
     return "    <inertial>\n      " + origin(b.com, 0.0, z) + "\n      <mass value=\"" + num(mass) +
            "\"/>\n      <inertia ixx=\"" + text::format("%.9g", ixx) +
-           "\" ixy=\"0\" ixz=\"0\" iyy=\"" + text::format("%.9g", izz) +
-           "\" iyz=\"0\" izz=\"" + text::format("%.9g", izz) + "\"/>\n    </inertial>\n";
+           "\" ixy=\"0\" ixz=\"0\" iyy=\"" + text::format("%.9g", izz) + "\" iyz=\"0\" izz=\"" +
+           text::format("%.9g", izz) + "\"/>\n    </inertial>\n";
 }
 
 /// A cylinder along x from x0 to x1 at height z (URDF cylinders lie along z).
@@ -77,7 +77,8 @@ double body_center(const task::RobotSpec& spec, double x_axis) {
 std::string base_link(const task::RobotSpec& spec, const hardware::Actuator& module) {
     hardware::LinkBody b;
     const double L = spec.module_length, W = spec.module_width;
-    hardware::add_part(b, module.mass, body_center(spec, 0.0), module.mass * (L * L + W * W) / 12.0);
+    hardware::add_part(b, module.mass, body_center(spec, 0.0),
+                       module.mass * (L * L + W * W) / 12.0);
     return "  <link name=\"base_module\">\n" +
            box(spec, body_center(spec, 0.0), spec.module_height / 2.0) +
            inertial(b, spec.module_height / 2.0, spec.module_width) + "  </link>\n";
@@ -175,7 +176,9 @@ std::string preamble(const task::Task& task, const std::string& modules, bool ch
     s += "  <!-- Planar arm synthesised by modsynth. Frame \"world\" is the task plane (z up); "
          "the tip link \"ee\" touches it. Joint angles are those of the solution's samples. "
          "Modules (joint 1 first): " +
-         modules + (chosen ? " (chosen to carry the motion)" : " (not chosen for a load: the strongest allowed)") +
+         modules +
+         (chosen ? " (chosen to carry the motion)"
+                 : " (not chosen for a load: the strongest allowed)") +
          ". Limits: the motion's range plus " + std::to_string(kJointLimitMargin).substr(0, 4) +
          " rad; effort and velocity the module's peak torque and top speed. Inertials: the "
          "modules, tubes and adapters of the catalog, with the payload at the tool. -->\n";

@@ -74,7 +74,8 @@ TEST_CASE("catalog errors name the file and the entry", "[hardware]") {
               .find("s.json: entries[1] (T-1): sources.max_speed: missing") == 0);
     std::string weak = kGood;
     weak.replace(weak.find("\"continuous_torque\": 1"), 22, "\"continuous_torque\": 5");
-    CHECK(error_of(actuator_file(weak), "w.json").find("w.json: entries[0] (T-1): continuous_torque 5") == 0);
+    CHECK(error_of(actuator_file(weak), "w.json")
+              .find("w.json: entries[0] (T-1): continuous_torque 5") == 0);
     CHECK(error_of("{", "broken.json").find("broken.json: not valid JSON") == 0);
     CHECK(error_of(R"({"format": "modsynth-catalog/1", "kind": "gear", "entries": [{}]})", "k.json")
               .find("k.json: kind:") == 0);

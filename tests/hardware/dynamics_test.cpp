@@ -71,5 +71,5 @@ TEST_CASE("the arm model counts every part of the catalog once", "[hardware]") {
     // Link 2: its tube, one adapter, the rod and the payload.
     CHECK(m.links[1].mass == Approx(tube * cuts[1].cut_length + adapter + rod + 0.25));
     CHECK(m.links[1].com > 0.5 * robot.link_lengths[1]);  // the tool end is heavy
-    CHECK(m.gravity == Vec2::Zero());                    // along the axes by default
+    CHECK(m.gravity == Vec2::Zero());                     // along the axes by default
 }

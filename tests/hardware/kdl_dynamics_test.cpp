@@ -93,8 +93,8 @@ TEST_CASE("the catalog-built arm's torques agree with KDL too", "[hardware]") {
     modsynth::kinematics::Robot robot;
     robot.link_lengths = {0.3, 0.25, 0.2};
     robot.link_diameter = spec.link_diameter;
-    const std::vector<const Actuator*> modules = {catalog.actuator("X8-16"), catalog.actuator("X8-9"),
-                                                  catalog.actuator("X5-4")};
+    const std::vector<const Actuator*> modules = {
+        catalog.actuator("X8-16"), catalog.actuator("X8-9"), catalog.actuator("X5-4")};
     const ArmModel m = arm_model(spec, robot, catalog, modules);
     const std::vector<double> q{0.3, -0.8, 1.1}, qd{0.5, -0.2, 0.9}, qdd{1.0, 2.0, -1.5};
     const auto ours = inverse_dynamics(m, q, qd, qdd);

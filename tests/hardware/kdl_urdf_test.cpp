@@ -52,7 +52,8 @@ void check_forward_kinematics(const Solution& s, const KDL::Chain& chain) {
 
 double chain_mass(const KDL::Chain& chain) {
     double m = 0.0;
-    for (unsigned i = 0; i < chain.getNrOfSegments(); ++i) m += chain.getSegment(i).getInertia().getMass();
+    for (unsigned i = 0; i < chain.getNrOfSegments(); ++i)
+        m += chain.getSegment(i).getInertia().getMass();
     return m;
 }
 
@@ -97,7 +98,8 @@ TEST_CASE("the URDF carries the chosen modules' masses, limits and a ros2_contro
     CHECK(urdf.find("effort=\"7.000000\" velocity=\"3.351000\"") != std::string::npos);   // X5-4
     CHECK(urdf.find("<ros2_control name=\"line\" type=\"system\">") != std::string::npos);
     for (const char* joint : {"joint_1", "joint_2"}) {
-        const auto at = urdf.find(std::string("<joint name=\"") + joint + "\">\n      <command_interface name=\"position\"/>");
+        const auto at = urdf.find(std::string("<joint name=\"") + joint +
+                                  "\">\n      <command_interface name=\"position\"/>");
         CHECK(at != std::string::npos);
     }
     CHECK(urdf.find("<state_interface name=\"velocity\"/>") != std::string::npos);

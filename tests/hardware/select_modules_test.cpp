@@ -73,7 +73,8 @@ TEST_CASE("loads agree with inverse dynamics at the peak", "[hardware]") {
     const ArmModel m = arm_model(task.robot, robot, c, modules);
     const auto loads = joint_loads(m, samples);
     double peak = 0.0;
-    for (const auto& s : samples) peak = std::max(peak, std::fabs(inverse_dynamics(m, s.q, s.qd, s.qdd)[0]));
+    for (const auto& s : samples)
+        peak = std::max(peak, std::fabs(inverse_dynamics(m, s.q, s.qd, s.qdd)[0]));
     CHECK(loads[0].peak_torque == Approx(peak));
     CHECK(loads[0].max_speed == Approx(0.8 * 1.5).epsilon(1e-3));
     CHECK(loads[0].rms_torque < loads[0].peak_torque);

@@ -321,3 +321,28 @@ TEST_CASE("echoed text is printable and cut short", "[task]") {
     CHECK(printable(std::string(100, 'x'), 10) == std::string(10, 'x') + "...");
     CHECK(modsynth::text::compact(1e308) == "1e+308");
 }
+
+TEST_CASE("modules, payload and gravity are read, defaulted and written back", "[task]") {
+    const Task plain = parse_task(minimal_doc());
+    CHECK(plain.robot.modules.empty());
+    CHECK(plain.robot.payload == 0.0);
+    CHECK_FALSE(plain.robot.gravity.has_value());  // along the joint axes
+    // A task without the keys is written without them.
+    CHECK_FALSE(to_json(plain).at("robot").contains("modules"));
+    CHECK_FALSE(to_json(plain).at("robot").contains("gravity"));
+
+    json doc = minimal_doc();
+    doc["robot"] = {{"modules", {"X8-9", "X5-4"}}, {"payload", 0.25}, {"gravity", {0.0, -9.81}}};
+    const Task t = parse_task(doc);
+    CHECK(t.robot.modules == std::vector<std::string>{"X8-9", "X5-4"});
+    CHECK(t.robot.payload == 0.25);
+    REQUIRE(t.robot.gravity.has_value());
+    CHECK(t.robot.gravity->y() == -9.81);
+    const Task back = parse_task_text(to_json(t).dump());
+    CHECK(back.robot.modules == t.robot.modules);
+    CHECK(back.robot.payload == t.robot.payload);
+    CHECK(back.robot.gravity == t.robot.gravity);
+
+    doc["robot"]["gravity"] = "joint_axes";
+    CHECK_FALSE(parse_task(doc).robot.gravity.has_value());
+}

@@ -165,3 +165,32 @@ TEST_CASE("the build sheet shows a hostile task name as text, never as markup",
         CHECK(sheet[i - 1] == '\\');
     CHECK(title.find(" | a") == std::string::npos);
 }
+
+TEST_CASE("the build sheet lists the chosen modules and warns of an overloaded joint", "[output]") {
+    const auto task = testing::two_joint_task();
+    auto s = testing::two_joint_solution(task);
+    // Without a choice the sheet has no modules section. Names are
+    // Markdown-escaped (X8\\-16 renders as X8-16).
+    CHECK(modsynth::output::build_sheet(task, s).find("## Modules") == std::string::npos);
+    modsynth::hardware::ModuleSelection sel;
+    sel.checked = true;
+    sel.joints.resize(2);
+    sel.joints[0].module = "X8-16";
+    sel.joints[0].mass = 0.5;
+    sel.joints[0].peak_margin = -3.25;
+    sel.joints[1].module = "X5-4";
+    sel.joints[1].mass = 0.335;
+    sel.joints[1].peak_margin = 1.5;
+    sel.joints[1].carries = true;
+    sel.total_mass = 0.835;
+    sel.overloaded_joint = 1;
+    sel.message = "joint 1 is overloaded: no allowed module carries it";
+    s.modules = sel;
+    const std::string sheet = modsynth::output::build_sheet(task, s);
+    CHECK(sheet.find("## Modules") != std::string::npos);
+    CHECK(sheet.find("**Warning:** joint 1 is overloaded") != std::string::npos);
+    CHECK(sheet.find("| 1 | X8\\-16 **(overloaded)** | 0.500 |") != std::string::npos);
+    CHECK(sheet.find("| -3.250 |") != std::string::npos);
+    CHECK(sheet.find("| 2 | X5\\-4 | 0.335 |") != std::string::npos);
+    CHECK(sheet.find("0.835 kg in all") != std::string::npos);
+}

@@ -47,7 +47,11 @@ Eigen::Vector3d vector3(const std::string& text) {
     return v;
 }
 
-std::vector<UrdfJoint> parse_joints(const std::string& urdf) {
+std::vector<UrdfJoint> parse_joints(const std::string& full_urdf) {
+    // The <ros2_control> block names the joints again in <joint> elements
+    // of its own (interfaces, no kinematics): they are not the model's.
+    const std::string urdf =
+        std::regex_replace(full_urdf, std::regex("<ros2_control\\b[\\s\\S]*?</ros2_control>"), "");
     std::vector<UrdfJoint> out;
     const std::regex block("<joint\\b[^>]*>[\\s\\S]*?</joint>");
     for (auto it = std::sregex_iterator(urdf.begin(), urdf.end(), block);

@@ -16,7 +16,7 @@ struct Dimensions {
 };
 
 struct Actuator {
-    std::string name;  ///< "X8-9"
+    std::string name;                ///< "X8-9"
     double mass = 0.0;               ///< kg
     double continuous_torque = 0.0;  ///< N m, what it gives indefinitely (compared with RMS)
     double peak_torque = 0.0;        ///< N m, what it gives for moments

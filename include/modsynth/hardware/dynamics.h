@@ -14,7 +14,6 @@ namespace modsynth::hardware {
 /// x-axis, q_k relative to link k - 1). Each vector has one entry per link;
 /// throws std::invalid_argument otherwise.
 std::vector<double> inverse_dynamics(const ArmModel& model, const std::vector<double>& q,
-                                     const std::vector<double>& qd,
-                                     const std::vector<double>& qdd);
+                                     const std::vector<double>& qd, const std::vector<double>& qdd);
 
 }  // namespace modsynth::hardware

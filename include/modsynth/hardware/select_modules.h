@@ -23,8 +23,7 @@ std::vector<JointLoad> joint_loads(const ArmModel& model,
 /// The allowed actuators of a task (robot.modules, or every catalog
 /// actuator), lightest first. Throws task::InputError naming
 /// robot.modules[i] for a name the catalog does not have.
-std::vector<const Actuator*> allowed_actuators(const task::RobotSpec& spec,
-                                               const Catalog& catalog);
+std::vector<const Actuator*> allowed_actuators(const task::RobotSpec& spec, const Catalog& catalog);
 
 /// Chooses from the distal joint inwards: a joint's torques depend only on
 /// the modules farther out, which are then already chosen, and each joint
@@ -33,7 +32,6 @@ std::vector<const Actuator*> allowed_actuators(const task::RobotSpec& spec,
 /// combinations). Unchecked (selection.checked false) when a sample lacks
 /// qd or qdd.
 ModuleSelection select_modules(const task::Task& task, const kinematics::Robot& robot,
-                               const std::vector<control::Sample>& samples,
-                               const Catalog& catalog);
+                               const std::vector<control::Sample>& samples, const Catalog& catalog);
 
 }  // namespace modsynth::hardware

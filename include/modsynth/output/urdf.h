@@ -2,8 +2,8 @@
 // The synthesised robot as a URDF model: revolute joints about z, each link
 // a tube of the link diameter one level higher than the previous one (paper
 // III-G), the module bodies as boxes, and the end-effector rod down to the
-// task plane, with the masses of the module catalog. The root link "world" is the task frame, so the tip link "ee"
-// lies on the path at z = 0 for every configuration of the motion.
+// task plane, with the masses of the module catalog. The root link "world" is the task frame, so
+// the tip link "ee" lies on the path at z = 0 for every configuration of the motion.
 #include <string>
 
 #include <modsynth/hardware/catalog.h>
