@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/hardware/catalog.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
 
@@ -152,6 +153,11 @@ Counts check_examples(const std::string& path, const std::vector<std::string>& l
             } else if (format == "modsynth-solution/1") {
                 check_solution_example(doc);
                 ++n.solutions;
+            } else if (format == "modsynth-catalog/1") {
+                modsynth::hardware::Catalog catalog;
+                REQUIRE_NOTHROW(modsynth::hardware::parse_catalog_file(b.text, path, catalog));
+                CHECK(catalog.actuators.size() + catalog.tubes.size() + catalog.adapters.size() ==
+                      doc.at("entries").size());
             } else {
                 FAIL("an example of an unknown format: " << format);
             }
