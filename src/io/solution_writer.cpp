@@ -39,6 +39,29 @@ nlohmann::json to_json(const synth::GeodesicWitness& w) {
     return {{"reach", w.reach}, {"obstacles", w.obstacles}, {"detours", detours}};
 }
 
+/// The modules chosen for the motion (formats.md, "Modules").
+nlohmann::json to_json(const hardware::ModuleSelection& m) {
+    nlohmann::json joints = nlohmann::json::array();
+    for (const auto& j : m.joints) {
+        joints.push_back({{"module", j.module},
+                          {"mass", j.mass},
+                          {"peak_torque", j.load.peak_torque},
+                          {"peak_time", j.load.peak_time},
+                          {"rms_torque", j.load.rms_torque},
+                          {"max_speed", j.load.max_speed},
+                          {"peak_torque_margin", j.peak_margin},
+                          {"continuous_torque_margin", j.continuous_margin},
+                          {"speed_margin", j.speed_margin},
+                          {"carries", j.carries}});
+    }
+    nlohmann::json out = {{"joints", joints},
+                          {"total_mass", m.total_mass},
+                          {"overloaded_joint", nullptr},
+                          {"message", m.message}};
+    if (m.overloaded_joint > 0) out["overloaded_joint"] = m.overloaded_joint;
+    return out;
+}
+
 }  // namespace
 
 nlohmann::json to_json(const synth::Solution& s) {
@@ -73,6 +96,7 @@ nlohmann::json to_json(const synth::Solution& s) {
                           {"min_self_collision_margin", finite_or_null(c.min_self_clearance)},
                           {"max_ee_deviation", c.max_deviation},
                           {"max_joint_step", c.max_joint_step}};
+    if (s.modules && s.modules->checked) doc["modules"] = to_json(*s.modules);
     return doc;
 }
 

@@ -201,3 +201,34 @@ TEST_CASE("a solution must fit the task it is exported with", "[output]") {
     const std::string part = "samples[" + std::to_string(s.samples.size() - 1) + "].primitive";
     CHECK(rejected_part([&] { modsynth::io::check_solution_fits(task, s); }) == part);
 }
+
+TEST_CASE("chosen modules are written with their loads and margins", "[output]") {
+    const auto task = testing::two_joint_task();
+    Solution s = testing::two_joint_solution(task);
+    CHECK_FALSE(to_json(s).contains("modules"));  // nothing chosen, nothing written
+    modsynth::hardware::ModuleSelection sel;
+    s.modules = sel;  // not checked (no qd, qdd): not written either
+    CHECK_FALSE(to_json(s).contains("modules"));
+    sel.checked = true;
+    sel.joints.resize(2);
+    sel.joints[0].module = "X8-16";
+    sel.joints[0].load.peak_torque = 41.5;
+    sel.joints[0].peak_margin = -3.5;
+    sel.joints[1].module = "X5-4";
+    sel.joints[1].carries = true;
+    sel.overloaded_joint = 1;
+    sel.message = "joint 1 is overloaded";
+    s.modules = sel;
+    const json doc = to_json(s);
+    CHECK(doc.at("status") == "solved");
+    const json& m = doc.at("modules");
+    CHECK(m.at("overloaded_joint") == 1);
+    CHECK(m.at("joints")[0].at("module") == "X8-16");
+    CHECK(m.at("joints")[0].at("peak_torque") == 41.5);
+    CHECK(m.at("joints")[0].at("peak_torque_margin") == -3.5);
+    CHECK(m.at("joints")[1].at("carries") == true);
+    // Readers ignore the key: the motion reads back the same.
+    check_same_motion(s, parse_solution(doc).solution);
+    s.modules->overloaded_joint = 0;
+    CHECK(to_json(s).at("modules").at("overloaded_joint").is_null());
+}
