@@ -140,6 +140,19 @@ expect_exit 3 "explain --json" "$bin" explain "$far" --solve-seconds 3 --json
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["status"]=="infeasible" and d["suggestions"]' "$tmp/out" ||
     fail "explain --json is not the expected JSON"
 expect_exit 0 "explain a feasible task" "$bin" explain "$root/tasks/rose.json"
+# A wall: the witness in the JSON, and the moves that break the proof.
+ring="$root/tasks/infeasible/ring-around-path.task.json"
+expect_exit 3 "explain --json a walled task" "$bin" explain "$ring" --solve-seconds 1 --json
+python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["status"] == "infeasible" and "form a closed wall" in d["message"], d["message"]
+walls = d["separation"]["walls"]
+assert walls and len(walls[0]["cycle"]) == len(walls[0]["overlaps"]) >= 3, walls
+changes = [s["change"] for s in d["suggestions"]]
+for kind in ("remove obstacles[", "widen the gap between", "move base_regions["):
+    assert any(c.startswith(kind) for c in changes), (kind, changes)' "$tmp/out" ||
+    fail "explain --json of a walled task: $(cat "$tmp/out")"
 
 # The discretized baseline and the comparison with it.
 expect_exit 0 "baseline rose" "$bin" baseline "$root/tasks/rose.json" --points 25 -o "$tmp/base.json" --quiet

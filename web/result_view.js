@@ -33,6 +33,7 @@ export class ResultView {
   }
 
   clear() {
+    this.store.setWitness(null);
     for (const id of ["result-summary", "explanation", "downloads"]) $(id).replaceChildren();
     $("tab-result").disabled = true;
     $("report").removeAttribute("src");
@@ -55,6 +56,21 @@ export class ResultView {
     if (r.status !== "solved") {
       this.store.setCore(r.core);
       this.showExplanation(r);
+      this.showWitness(job);
+    }
+  }
+
+  /// The proof drawn over the task, from the solution's witness.
+  async showWitness(job) {
+    try {
+      const s = await (await fetch(api.fileUrl(job, "solution.json"))).json();
+      this.store.setWitness(s.explanation);
+      const ex = s.explanation || {};
+      const about = ex.separation ? "The closed wall is drawn in red on the canvas: the obstacles grown by half the tube, and where they overlap."
+        : ex.geodesic ? "The shortest way around the obstacles is drawn in red on the canvas, with its length against the reach." : null;
+      if (about) $("explanation-message").after(h("p", { id: "proof-note", class: "note" }, about));
+    } catch (e) {
+      // The explanation above already says why.
     }
   }
 

@@ -8,6 +8,7 @@
 //   tool        another tool is picked
 //   validation  the server's verdict changed (checking, valid, invalid, empty)
 //   core        the infeasibility core changed
+//   witness     the proof's witness changed (drawn over the task)
 //   synthesis   the solve's state changed (idle, starting, running, solved ...)
 //   view        the editor or the result is shown
 //   info        the server's settings arrived
@@ -24,12 +25,14 @@ export class Store extends EventTarget {
     this.tool = "select";
     this.validity = { state: "checking", errors: new Map() };
     this.core = [];
+    this.witness = null;
     this.synthesis = "idle";
     this.view = "editor";
     this.info = null;
     model.addEventListener("change", () => {
       // A core names the parts of the task as it was solved.
       if (this.core.length) this.setCore([]);
+      if (this.witness) this.setWitness(null);
       this.emit("doc");
     });
   }
@@ -60,6 +63,7 @@ export class Store extends EventTarget {
   load(doc) {
     this.model.load(doc);
     this.setCore([]);
+    this.setWitness(null);
     this.select(null);
   }
 
@@ -106,6 +110,14 @@ export class Store extends EventTarget {
   }
 
   inCore(part) { return inCore(this.core, part); }
+
+  /// The solution's "explanation" when it carries an obstacle proof's
+  /// witness ("separation" or "geodesic"), else null.
+  setWitness(explanation) {
+    const e = explanation || {};
+    this.witness = e.separation || e.geodesic ? { separation: e.separation || null, geodesic: e.geodesic || null } : null;
+    this.emit("witness", this.witness);
+  }
 
   setSynthesis(state) {
     this.synthesis = state;

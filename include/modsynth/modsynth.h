@@ -6,6 +6,7 @@
 // include/modsynth/ are the stages' interfaces to each other and may change
 // without notice.
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,6 +50,10 @@ struct Explanation {
     std::string message;
     /// The task parts that conflict, named as in formats.md.
     std::vector<std::string> core;
+    /// The data of an obstacle proof (formats.md, "explanation.separation",
+    /// ".geodesic"), when the task was proved infeasible that way.
+    std::optional<synth::SeparationWitness> separation;
+    std::optional<synth::GeodesicWitness> geodesic;
     /// When proved infeasible: the smallest changes of one part each that
     /// remove the conflict, each re-checked with the full pipeline.
     std::vector<synth::Relaxation> suggestions;

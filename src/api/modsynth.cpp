@@ -47,15 +47,16 @@ Explanation explain(const Task& task, double time_limit, double solve_seconds) {
         const Solution s = solve(task, o);
         out.status = s.status;
         out.core = s.explanation.core;
-        out.message =
-            s.status == Status::Solved
-                ? "No conflict: a " + std::to_string(s.robot.dof()) + "-joint robot does this task."
-                : "Not proved infeasible (" + proof.open + "); " + s.explanation.message;
+        out.message = synth::unproved_message(proof, s);
+        out.separation = s.explanation.separation;
+        out.geodesic = s.explanation.geodesic;
         return out;
     }
     out.status = Status::Infeasible;
     out.core = proof.core;
-    out.message = "Proved infeasible: " + synth::describe_conflict(task, proof.core);
+    out.message = synth::proved_message(proof);
+    out.separation = proof.separation;
+    out.geodesic = proof.geodesic;
     out.suggestions =
         synth::suggest_relaxations(task, proof.core, solve_seconds, std::max(0.0, left()));
     return out;

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/synthesizer.h>
@@ -65,13 +66,10 @@ int run_explain(const ExplainArgs& a) {
         const synth::Solution s = synth::synthesize(task, options);
         watchdog.claim();
         out["status"] = synth::to_string(s.status);
-        const std::string message =
-            s.status == synth::Status::Solved
-                ? "No conflict: a " + std::to_string(s.robot.dof()) +
-                      "-joint robot does this task (run solve)."
-                : "Not proved infeasible (" + proof.open + "); " + s.explanation.message;
+        const std::string message = synth::unproved_message(proof, s);
         out["message"] = message;
         out["core"] = s.explanation.core;
+        io::add_witnesses(s.explanation, out);
         if (a.json) {
             std::printf("%s\n",
                         out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
@@ -82,13 +80,14 @@ int run_explain(const ExplainArgs& a) {
                : s.status == synth::Status::Infeasible ? kInfeasible
                                                        : kUnknown;
     }
-    const std::string message = "Proved infeasible: " + proof.message;
+    const std::string message = synth::proved_message(proof);
     {
         std::lock_guard<std::mutex> lock(mutex);
         status = synth::Status::Infeasible;
         out["status"] = synth::to_string(status);
         out["message"] = message;
         out["core"] = proof.core;
+        io::add_witnesses({message, proof.core, proof.separation, proof.geodesic}, out);
         out["suggestions"] = nlohmann::json::array();
         if (!a.json) {
             std::printf("%s\n\nThe conflicting parts:\n", message.c_str());

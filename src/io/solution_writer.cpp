@@ -10,6 +10,8 @@ namespace {
 
 nlohmann::json point(const geometry::Vec2& p) { return {p.x(), p.y()}; }
 
+}  // namespace
+
 nlohmann::json to_json(const synth::SeparationWitness& w) {
     nlohmann::json walls = nlohmann::json::array();
     for (const auto& x : w.walls)
@@ -39,6 +41,8 @@ nlohmann::json to_json(const synth::GeodesicWitness& w) {
     return {{"reach", w.reach}, {"obstacles", w.obstacles}, {"detours", detours}};
 }
 
+namespace {
+
 /// The modules chosen for the motion (formats.md, "Modules").
 nlohmann::json to_json(const hardware::ModuleSelection& m) {
     nlohmann::json joints = nlohmann::json::array();
@@ -64,6 +68,11 @@ nlohmann::json to_json(const hardware::ModuleSelection& m) {
 
 }  // namespace
 
+void add_witnesses(const synth::Explanation& e, nlohmann::json& out) {
+    if (e.separation) out["separation"] = to_json(*e.separation);
+    if (e.geodesic) out["geodesic"] = to_json(*e.geodesic);
+}
+
 nlohmann::json to_json(const synth::Solution& s) {
     nlohmann::json doc;
     doc["format"] = "modsynth-solution/1";
@@ -71,10 +80,7 @@ nlohmann::json to_json(const synth::Solution& s) {
     doc["status"] = synth::to_string(s.status);
     if (s.status != synth::Status::Solved) {
         doc["explanation"] = {{"message", s.explanation.message}, {"core", s.explanation.core}};
-        if (s.explanation.separation)
-            doc["explanation"]["separation"] = to_json(*s.explanation.separation);
-        if (s.explanation.geodesic)
-            doc["explanation"]["geodesic"] = to_json(*s.explanation.geodesic);
+        add_witnesses(s.explanation, doc["explanation"]);
         return doc;
     }
     const auto& r = s.robot;

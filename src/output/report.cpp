@@ -164,6 +164,43 @@ std::string describe_part(const task::Task& task, const std::string& part) {
     return "";
 }
 
+/// What the plot's proof layer shows, in words and numbers.
+std::string proof_text(const synth::Solution& s) {
+    const auto& e = s.explanation;
+    std::string out;
+    if (e.separation) {
+        out +=
+            "<p id=\"proof-caption\" class=\"note\">Drawn in red: the wall. Each obstacle grown by "
+            "half the tube (no part of an arm enters these discs), joined through their centres; "
+            "dark red: where neighbours overlap, so that no tube passes between them. The marked "
+            "point of the path lies on the other side of the wall from the base.</p>\n<ul "
+            "id=\"proof-list\">\n";
+        for (const auto& w : e.separation->walls) {
+            double least = 1e300;
+            for (double o : w.overlaps) least = std::min(least, o);
+            out += "<li class=\"wall-item\">base_regions[" + std::to_string(w.base_region) +
+                   "]: a wall of " + std::to_string(w.cycle.size()) +
+                   " obstacles; the narrowest overlap " +
+                   text::format("%.1f mm", 1000.0 * (w.overlaps.empty() ? 0.0 : least)) + "</li>\n";
+        }
+        out += "</ul>\n";
+    }
+    if (e.geodesic) {
+        out +=
+            "<p id=\"proof-caption\" class=\"note\">Drawn in red: the shortest way through the "
+            "free space from the base region to the marked point of the path, around the obstacles "
+            "grown by half the tube; every arm's links would have to be at least that long.</p>\n"
+            "<ul id=\"proof-list\">\n";
+        for (const auto& d : e.geodesic->detours)
+            out += "<li class=\"detour-item\">base_regions[" + std::to_string(d.base_region) +
+                   "] to trajectory[" + std::to_string(d.primitive) + "]: at least " +
+                   text::format("%.2f m", d.lower_bound) + "; the longest arm reaches " +
+                   text::format("%.2f m", e.geodesic->reach) + "</li>\n";
+        out += "</ul>\n";
+    }
+    return out;
+}
+
 std::string explanation(const task::Task& task, const synth::Solution& s) {
     std::string out = "<section id=\"explanation\">\n<h2>";
     out += s.status == synth::Status::Infeasible ? "Why no robot can do this task"
@@ -180,7 +217,7 @@ std::string explanation(const task::Task& task, const synth::Solution& s) {
         }
         out += "</ul>\n";
     }
-    return out + "</section>\n";
+    return out + proof_text(s) + "</section>\n";
 }
 
 // ------------------------------------------------------------------- legend
@@ -215,6 +252,7 @@ std::string svg(const task::Task& task, const synth::Solution& s, const Frame& f
     out += layers::base_regions(task, f, core);
     out +=
         layers::obstacles(task, f, solved ? s.robot.link_diameter : task.robot.link_diameter, core);
+    if (!solved) out += layers::proof(task, s, f);
     out += layers::trajectory(task, f, core);
     if (solved) {
         out += layers::poses(s, f);

@@ -36,6 +36,12 @@ li.core-part { margin: 2px 0; }
 .primitive.active { stroke-width: 5; }
 .path-start { fill: #fff; stroke: #000; }
 .core { stroke: #d00 !important; stroke-width: 6 !important; stroke-dasharray: none !important; }
+.wall-disc { fill: #d00; fill-opacity: 0.10; stroke: #d00; stroke-width: 1; }
+.wall-cycle { fill: none; stroke: #900; stroke-width: 2; stroke-dasharray: 6 4; }
+.wall-overlap { fill: #900; fill-opacity: 0.75; stroke: #600; stroke-width: 1; }
+.detour { fill: none; stroke: #d00; stroke-width: 3; stroke-linejoin: round; }
+.detour-length { font-size: 13px; fill: #900; font-weight: bold; paint-order: stroke; stroke: #fff; stroke-width: 4px; }
+.proof-point { fill: #fff; stroke: #d00; stroke-width: 3; }
 .reach-limit { fill: none; stroke-width: 2 !important; stroke-dasharray: 10 6 !important; }
 .pose { fill: none; stroke: #555; stroke-opacity: 0.3; stroke-linecap: round; stroke-linejoin: round; }
 .link { stroke: #333; stroke-opacity: 0.85; stroke-linecap: round; }

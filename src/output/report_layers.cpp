@@ -27,6 +27,21 @@ constexpr double kReachCellPixels = 3.0;
 /// outline then strays far less than a pixel from the true one.
 constexpr double kSweptStep = 0.03;
 
+std::string text_format_overlap(int i, int j, double depth) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf,
+                  "the no-go discs of obstacles[%d] and obstacles[%d] overlap by %.1f mm: no tube "
+                  "passes between",
+                  i, j, depth * 1000.0);
+    return buf;
+}
+
+std::string length_label(double bound, double reach) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "at least %.2f m; reach %.2f m", bound, reach);
+    return buf;
+}
+
 int primitive_count(const synth::Solution& s) {
     int n = 0;
     for (const auto& x : s.samples) n = std::max(n, x.primitive + 1);
@@ -135,6 +150,44 @@ std::string arrow(const geometry::Primitive& p, const plot::Frame& f, const std:
     const Vec2 b = tip - 9.0 * t - 4.5 * n;
     return "<path class=\"arrow\" fill=\"" + colour + "\" d=\"M" + n2(tip.x()) + "," + n2(tip.y()) +
            "L" + n2(a.x()) + "," + n2(a.y()) + "L" + n2(b.x()) + "," + n2(b.y()) + "Z\"/>";
+}
+
+/// Angle of v in [0, 2 pi).
+double angle_of(const Vec2& v) {
+    const double a = std::atan2(v.y(), v.x());
+    return a < 0.0 ? a + 2.0 * M_PI : a;
+}
+
+/// SVG arc (screen pixels) from `from` to `to` on the circle around `c` of
+/// radius `r`, the way that passes the angle `via` around `c`.
+std::string arc_to(const Vec2& c, double r, const Vec2& from, const Vec2& to, double via) {
+    const double a = angle_of(from - c);
+    const double span = std::fmod(angle_of(to - c) - a + 4.0 * M_PI, 2.0 * M_PI);
+    const double at = std::fmod(via - a + 4.0 * M_PI, 2.0 * M_PI);
+    const bool positive = at <= span;  // the way of increasing screen angle
+    const double travelled = positive ? span : 2.0 * M_PI - span;
+    return "A" + n2(r) + "," + n2(r) + " 0 " + (travelled > M_PI ? "1" : "0") + "," +
+           (positive ? "1" : "0") + " " + n2(to.x()) + "," + n2(to.y());
+}
+
+/// Where two no-go discs overlap (a lens), as path data; the smaller disc
+/// when one holds the other.
+std::string lens(const Vec2& c1, double r1, const Vec2& c2, double r2) {
+    const double d = (c2 - c1).norm();
+    if (d <= std::abs(r1 - r2) || d == 0.0) {
+        const Vec2 c = r1 < r2 ? c1 : c2;
+        const double r = std::min(r1, r2);
+        return "M" + n2(c.x() - r) + "," + n2(c.y()) + "a" + n2(r) + "," + n2(r) + " 0 1,0 " +
+               n2(2 * r) + ",0a" + n2(r) + "," + n2(r) + " 0 1,0 " + n2(-2 * r) + ",0Z";
+    }
+    const Vec2 u = (c2 - c1) / d;
+    const Vec2 n(-u.y(), u.x());
+    const double a = (d * d + r1 * r1 - r2 * r2) / (2.0 * d);
+    const double h = std::sqrt(std::max(0.0, r1 * r1 - a * a));
+    const Vec2 p = c1 + a * u + h * n, q = c1 + a * u - h * n;
+    // On each circle, the arc inside the other passes the point facing it.
+    return "M" + n2(p.x()) + "," + n2(p.y()) + arc_to(c1, r1, p, q, angle_of(u)) +
+           arc_to(c2, r2, q, p, angle_of(-u)) + "Z";
 }
 
 std::string arm_points(const plot::Frame& f, const std::vector<Vec2>& joints) {
@@ -297,6 +350,100 @@ std::string reach_limit(const task::Task& task, const plot::Frame& f, const Core
                "\" y=\"" + n2(tl.y()) + "\" width=\"" + n2(br.x() - tl.x()) + "\" height=\"" +
                n2(br.y() - tl.y()) + "\" rx=\"" + r + "\" ry=\"" + r +
                "\"><title>farthest reach of any allowed robot</title></rect>\n";
+    }
+    return out + "</g>\n";
+}
+
+std::string proof(const task::Task& task, const synth::Solution& s, const plot::Frame& f) {
+    const auto& e = s.explanation;
+    if (s.status == synth::Status::Solved || (!e.separation && !e.geodesic)) return "";
+    const double half = task.robot.link_diameter / 2.0;
+    const auto valid = [&](int i) { return i >= 0 && i < static_cast<int>(task.obstacles.size()); };
+    const auto no_go = [&](int i) { return (task.obstacles[i].radius + half) * f.scale; };
+    const auto point_mark = [&](const Vec2& p, const std::string& what) {
+        const Vec2 c = f.px(p);
+        return "<circle class=\"proof-point\" cx=\"" + n2(c.x()) + "\" cy=\"" + n2(c.y()) +
+               "\" r=\"5\"><title>" + what + "</title></circle>\n";
+    };
+    std::string out = "<g id=\"proof\">\n";
+    if (e.separation) {
+        std::vector<std::vector<int>> drawn;
+        for (const auto& w : e.separation->walls) {
+            bool ok = w.cycle.size() >= 2;
+            for (int i : w.cycle) ok = ok && valid(i);
+            if (!ok) continue;
+            std::vector<int> sorted = w.cycle;
+            std::sort(sorted.begin(), sorted.end());
+            const std::string region = "base_regions[" + std::to_string(w.base_region) + "]";
+            out += point_mark(w.point, "trajectory[" + std::to_string(w.primitive) +
+                                           "] at a point " + region + " cannot reach");
+            if (std::find(drawn.begin(), drawn.end(), sorted) != drawn.end()) continue;
+            drawn.push_back(sorted);
+            out += "<g class=\"wall\" data-cycle=\"";
+            for (std::size_t k = 0; k < w.cycle.size(); ++k)
+                out += (k ? " " : "") + std::to_string(w.cycle[k]);
+            out += "\">\n";
+            for (int i : w.cycle) {
+                const Vec2 c = f.px(task.obstacles[i].center);
+                out += "<circle class=\"wall-disc\" data-obstacle=\"" + std::to_string(i) +
+                       "\" cx=\"" + n2(c.x()) + "\" cy=\"" + n2(c.y()) + "\" r=\"" + n2(no_go(i)) +
+                       "\"/>\n";
+            }
+            std::vector<Vec2> poly;
+            for (int i : w.cycle) poly.push_back(task.obstacles[i].center);
+            out += "<path class=\"wall-cycle\" d=\"" + plot::path_data(f, poly, true) + "\"/>\n";
+            for (std::size_t k = 0; k < w.cycle.size(); ++k) {
+                const int i = w.cycle[k], j = w.cycle[(k + 1) % w.cycle.size()];
+                if (w.cycle.size() == 2 && k == 1) break;
+                const double depth = k < w.overlaps.size() ? w.overlaps[k] : 0.0;
+                out += "<path class=\"wall-overlap\" data-pair=\"" + std::to_string(i) + "-" +
+                       std::to_string(j) + "\" d=\"" +
+                       lens(f.px(task.obstacles[i].center), no_go(i),
+                            f.px(task.obstacles[j].center), no_go(j)) +
+                       "\"><title>" + text_format_overlap(i, j, depth) + "</title></path>\n";
+            }
+            out += "</g>\n";
+        }
+    }
+    if (e.geodesic) {
+        for (const auto& d : e.geodesic->detours) {
+            if (d.route.size() < 2) continue;
+            std::string path;
+            Vec2 prev = f.px(d.route.front().point);
+            path = "M" + n2(prev.x()) + "," + n2(prev.y());
+            for (std::size_t k = 1; k < d.route.size(); ++k) {
+                const auto& step = d.route[k];
+                const Vec2 to = f.px(step.point);
+                if (step.around >= 0 && valid(step.around)) {
+                    // The shorter arc: it passes the middle of the chord's side.
+                    const Vec2 c = f.px(task.obstacles[step.around].center);
+                    const Vec2 mid = 0.5 * (prev + to) - c;
+                    const double via =
+                        mid.norm() > 1e-12 ? angle_of(mid) : angle_of(prev - c) + 1.0;
+                    path += arc_to(c, no_go(step.around), prev, to, via);
+                } else {
+                    path += "L" + n2(to.x()) + "," + n2(to.y());
+                }
+                prev = to;
+            }
+            const std::string label = length_label(d.lower_bound, e.geodesic->reach);
+            out += "<path class=\"detour\" data-base-region=\"" + std::to_string(d.base_region) +
+                   "\" data-primitive=\"" + std::to_string(d.primitive) + "\" d=\"" + path +
+                   "\"><title>the shortest way from base_regions[" + std::to_string(d.base_region) +
+                   "] to trajectory[" + std::to_string(d.primitive) + "]: " + label +
+                   "</title></path>\n";
+            const Vec2 at = f.px(d.route[d.route.size() / 2].point);
+            // In two lines, on whichever side of the route's middle leaves room.
+            const bool left = at.x() > f.width() / 2.0;
+            const std::string x = n2(at.x() + (left ? -10 : 10));
+            const auto semicolon = label.find("; ");
+            out += "<text class=\"detour-length\" x=\"" + x + "\" y=\"" + n2(at.y() - 22) +
+                   "\" text-anchor=\"" + (left ? "end" : "start") + "\"><tspan x=\"" + x + "\">" +
+                   label.substr(0, semicolon) + "</tspan><tspan x=\"" + x + "\" dy=\"15\">" +
+                   label.substr(semicolon + 2) + "</tspan></text>\n";
+            out += point_mark(
+                d.point, "trajectory[" + std::to_string(d.primitive) + "] at a point beyond reach");
+        }
     }
     return out + "</g>\n";
 }

@@ -33,6 +33,12 @@ std::string robot(const synth::Solution& s, const plot::Frame& f);
 /// When the core names robot.max_link_length: the farthest any allowed arm
 /// reaches from the base regions (each grown by dof * max_link_length).
 std::string reach_limit(const task::Task& task, const plot::Frame& f, const Core& core);
+/// The proof of an obstacle-infeasible task, over the task: each closed
+/// wall (the no-go discs of its cycle, the polygon through their centres,
+/// and where neighbours overlap, data-pair "i-j") or each detour (the route
+/// of segments and arcs, labelled with its length against the reach), and
+/// the path point it is about. Empty without such a witness.
+std::string proof(const task::Task& task, const synth::Solution& s, const plot::Frame& f);
 std::string scale_bar(const plot::Frame& f);
 
 }  // namespace modsynth::output::layers

@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <set>
 #include <utility>
 
 #include <modsynth/geometry/distance.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/synth/synthesizer.h>
+#include <modsynth/synth/wall_changes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
@@ -173,6 +175,17 @@ InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
     return proof;
 }
 
+std::string proved_message(const InfeasibilityProof& proof) {
+    return "Proved infeasible: " + proof.message;
+}
+
+std::string unproved_message(const InfeasibilityProof& proof, const Solution& s) {
+    if (s.status == Status::Solved)
+        return "No conflict: a " + std::to_string(s.robot.dof()) +
+               "-joint robot does this task (run solve).";
+    return "Not proved infeasible (" + proof.open + "); " + s.explanation.message;
+}
+
 std::string describe_conflict(const task::Task& task, const std::vector<std::string>& core) {
     const auto traj = with_prefix(core, "trajectory[");
     const auto obst = with_prefix(core, "obstacles[");
@@ -265,13 +278,29 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
     auto offer = [&](const std::string& part, const std::string& change,
                      const task::Task& relaxed) {
         // Re-checked here, whatever the search that found it assumed.
-        if (!conflict_free(relaxed, kCheck)) return;
+        if (!conflict_free(relaxed, kCheck)) return false;
         auto [status, outcome] = attempt(relaxed, std::min(solve_seconds, seconds_until(deadline)));
         out.push_back({part, change, relaxed, std::move(status), std::move(outcome)});
+        return true;
     };
+    // An obstacle proof's own moves (wall_changes.h) stand for its obstacles
+    // and base regions: one of each kind, the first that also passes the
+    // re-check above.
+    const auto walls = prove_obstacle_infeasible(task);
+    const bool walled = walls && std::set<std::string>(walls->core.begin(), walls->core.end()) ==
+                                     std::set<std::string>(core.begin(), core.end());
+    if (walled) {
+        for (const auto& kind : wall_changes(task, *walls)) {
+            for (const WallChange& c : kind) {
+                if (Clock::now() >= deadline) break;
+                if (offer(c.part, c.change, c.changed)) break;
+            }
+        }
+    }
     const auto traj = with_prefix(core, "trajectory[");
     for (const std::string& part : core) {
         if (Clock::now() >= deadline) break;
+        if (walled && (part == "base_regions" || part.rfind("obstacles[", 0) == 0)) continue;
         task::Task t = task;
         if (part == "robot.max_link_length") {
             const auto v = smallest(task.robot.max_link_length, options.longest_link,

@@ -48,3 +48,16 @@ TEST_CASE("the public API refuses invalid options, naming the field", "[api]") {
     options.time_limit = -1.0;
     CHECK_THROWS_WITH(modsynth::solve(task, options), Catch::Contains("time_limit"));
 }
+
+TEST_CASE("the public API's explain carries an obstacle proof's witness", "[api][walls][slow]") {
+    const modsynth::Task task =
+        modsynth::load_task(modsynth::testing::source_path("tasks/infeasible/long-wall.task.json"));
+    const modsynth::Explanation e = modsynth::explain(task, 30.0, 0.5);
+    CHECK(e.status == modsynth::Status::Infeasible);
+    REQUIRE(e.geodesic);
+    CHECK_FALSE(e.separation);
+    CHECK(e.geodesic->detours.at(0).lower_bound > e.geodesic->reach);
+    // The same sentence as `modsynth explain`, and as a solve.
+    CHECK(e.message.rfind("Proved infeasible: the shortest way around obstacles", 0) == 0);
+    CHECK(e.message == modsynth::solve(task).explanation.message);
+}

@@ -229,6 +229,41 @@ async function infeasibleTask(url) {
   await page.context().close();
 }
 
+// ------------------------------------------------------------ the proof
+
+/// A task walled in by a ring: the wall drawn over the task from the
+/// solution's witness, each overlap of neighbours marked; a long wall: the
+/// detour and its length. Loading another task takes the drawing away.
+async function proofDrawn(url) {
+  const page = await openEditor(url);
+  const ringFile = path.join(root, "tasks/infeasible/ring-around-path.task.json");
+  await loadFile(page, ringFile);
+  await page.waitForSelector('body[data-validity="valid"]', { timeout: 10_000 });
+  await page.click("#synthesize");
+  await page.waitForSelector("#canvas .wall-overlap", { timeout: SOLVE_MS });
+  const core = await page.evaluate(() => window.modsynth.store ? window.modsynth.store.core : null);
+  const overlaps = (await page.$$("#canvas .wall-overlap")).length;
+  const discs = (await page.$$("#canvas .wall-disc")).length;
+  check(overlaps === discs && overlaps >= 3, `the wall's ${discs} discs and ${overlaps} overlaps are drawn`);
+  if (core) check(core.filter((p) => p.startsWith("obstacles[")).length === discs, "one disc per obstacle of the core");
+  check((await page.$$("#canvas .wall-cycle")).length === 1, "the polygon through the wall's centres is drawn");
+  check((await page.$$("#canvas .proof-point")).length >= 1, "the path point behind the wall is marked");
+  check(/wall/.test(await text(page, "#proof-note")), "the panel says what the red drawing is");
+  await page.screenshot({ path: path.join(outDir, "e2e-editor-wall.png") });
+
+  await loadFile(page, path.join(root, "tasks/infeasible/long-wall.task.json"));
+  check((await page.$$("#canvas .wall")).length === 0, "another task takes the wall away");
+  await page.waitForSelector('body[data-validity="valid"]', { timeout: 10_000 });
+  await page.click("#synthesize");
+  await page.waitForSelector("#canvas path.detour", { timeout: SOLVE_MS });
+  const label = await text(page, "#canvas .detour-length");
+  check(/^at least \d+\.\d\d m; reach \d+\.\d\d m$/.test(label), "the detour's length is written beside it: " + label);
+  const [bound, reach] = label.match(/\d+\.\d\d/g).map(Number);
+  check(bound > reach, "the detour is longer than the reach");
+  await page.screenshot({ path: path.join(outDir, "e2e-editor-detour.png") });
+  await page.context().close();
+}
+
 // ------------------------------------------------------- edit and cancel
 
 /// Exact numbers in the panel, a drag on the canvas, undo; then a long solve
@@ -296,6 +331,7 @@ async function main() {
     const url = await startServer();
     browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_FLAGS });
     for (const [name, run] of [["draw, synthesize, animate", firstUser], ["infeasible core", infeasibleTask],
+                               ["the proof drawn", proofDrawn],
                                ["edit and cancel", editAndCancel]]) {
       const started = Date.now();
       try {

@@ -1,11 +1,19 @@
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
 #include <regex>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/task_io.h>
 #include <modsynth/output/report.h>
+#include <modsynth/synth/synthesizer.h>
+
+#include "../support/fixtures.h"
 
 #include "output_fixtures.h"
 
@@ -174,4 +182,107 @@ TEST_CASE("the report shows a hostile task name as text, never as markup", "[out
         "&amp;amp;\xEF\xBF\xBD";
     CHECK(has(html, "<title>modsynth: " + shown + "</title>"));
     CHECK(has(html, "<h1>" + shown + " <span"));
+}
+
+namespace {
+
+// Numbers of every "x,y" pair after each M or A command's radii in a lens
+// path: its two corners, each on both discs' circles.
+std::vector<std::pair<double, double>> lens_corners(const std::string& d) {
+    std::vector<std::pair<double, double>> out;
+    const std::regex corner("(?:M|A[0-9.]+,[0-9.]+ 0 [01],[01] )(-?[0-9.]+),(-?[0-9.]+)");
+    for (auto it = std::sregex_iterator(d.begin(), d.end(), corner); it != std::sregex_iterator();
+         ++it)
+        out.push_back({std::stod((*it)[1]), std::stod((*it)[2])});
+    return out;
+}
+
+modsynth::task::Task infeasible_task(const std::string& name) {
+    return modsynth::io::load_task(testing::source_path("tasks/infeasible/" + name + ".task.json"));
+}
+
+}  // namespace
+
+TEST_CASE("the report of a walled-in task draws the wall and where its discs overlap",
+          "[output][walls]") {
+    const auto task = infeasible_task("ring-around-path");
+    const auto s = modsynth::synth::synthesize(task, {});
+    REQUIRE(s.status == modsynth::synth::Status::Infeasible);
+    REQUIRE(s.explanation.separation);
+    const auto& wall = s.explanation.separation->walls.at(0);
+    const std::string html = html_report(task, s, ReportFigures{});
+    check_self_contained(html);
+    check_task_layers(html, task);
+    CHECK(count(html, "<g id=\"proof\">") == 1);
+    CHECK(count(html, "class=\"wall\"") == 1);
+    const int n = static_cast<int>(wall.cycle.size());
+    CHECK(count(html, "class=\"wall-disc\"") == n);
+    CHECK(count(html, "class=\"wall-overlap\"") == n);
+    CHECK(count(html, "class=\"wall-cycle\"") == 1);
+    CHECK(count(html, "class=\"proof-point\"") == 1);
+    CHECK(has(html, "id=\"proof-caption\""));
+    CHECK(has(html, "data-pair=\"" + std::to_string(wall.cycle[0]) + "-" +
+                        std::to_string(wall.cycle[1]) + "\""));
+    // Each lens's corners lie on both no-go circles (in pixels: the disc
+    // elements say where the circles are).
+    const std::regex disc(
+        "class=\"wall-disc\" data-obstacle=\"([0-9]+)\" cx=\"([0-9.]+)\" cy=\"([0-9.]+)\" "
+        "r=\"([0-9.]+)\"");
+    std::map<int, std::array<double, 3>> circles;
+    for (auto it = std::sregex_iterator(html.begin(), html.end(), disc);
+         it != std::sregex_iterator(); ++it)
+        circles[std::stoi((*it)[1])] = {std::stod((*it)[2]), std::stod((*it)[3]),
+                                        std::stod((*it)[4])};
+    REQUIRE(static_cast<int>(circles.size()) == n);
+    const std::regex lens("data-pair=\"([0-9]+)-([0-9]+)\" d=\"([^\"]+)\"");
+    int lenses = 0;
+    for (auto it = std::sregex_iterator(html.begin(), html.end(), lens);
+         it != std::sregex_iterator(); ++it, ++lenses) {
+        const auto corners = lens_corners((*it)[3]);
+        REQUIRE(corners.size() == 3);  // M p, A .. q, A .. p
+        for (int k : {std::stoi((*it)[1]), std::stoi((*it)[2])}) {
+            const auto& c = circles.at(k);
+            for (const auto& [x, y] : corners)
+                CHECK(std::hypot(x - c[0], y - c[1]) == Approx(c[2]).margin(0.02));
+        }
+    }
+    CHECK(lenses == n);
+}
+
+TEST_CASE("the report of a task beyond reach around a wall draws the detour and its length",
+          "[output][walls]") {
+    const auto task = infeasible_task("long-wall");
+    const auto s = modsynth::synth::synthesize(task, {});
+    REQUIRE(s.status == modsynth::synth::Status::Infeasible);
+    REQUIRE(s.explanation.geodesic);
+    const auto& d = s.explanation.geodesic->detours.at(0);
+    const std::string html = html_report(task, s, ReportFigures{});
+    check_self_contained(html);
+    CHECK(count(html, "class=\"detour\"") == 1);
+    CHECK(count(html, "class=\"wall\"") == 0);
+    char label[96];
+    std::snprintf(label, sizeof label, "at least %.2f m; reach %.2f m", d.lower_bound,
+                  s.explanation.geodesic->reach);
+    CHECK(count(html, label) == 1);  // in the route's title
+    char first[64];                  // and on the plot, in two lines
+    std::snprintf(first, sizeof first, "at least %.2f m</tspan>", d.lower_bound);
+    CHECK(has(html, "class=\"detour-length\""));
+    CHECK(has(html, first));
+    // One drawing command per route step: a line, or an arc around an obstacle.
+    std::smatch m;
+    REQUIRE(std::regex_search(html, m, std::regex("class=\"detour\"[^>]* d=\"([^\"]+)\"")));
+    const std::string path = m[1];
+    CHECK(count(path, "[LA]") == static_cast<int>(d.route.size()) - 1);
+    int arcs = 0;
+    for (const auto& step : d.route) arcs += step.around >= 0;
+    CHECK(count(path, "A") == arcs);
+    CHECK(arcs > 0);
+}
+
+TEST_CASE("a solved or front-stage-infeasible report has no proof layer", "[output][walls]") {
+    const auto task = testing::two_joint_task();
+    CHECK_FALSE(
+        has(html_report(task, testing::two_joint_solution(task), ReportFigures{}), "id=\"proof\""));
+    CHECK_FALSE(has(html_report(task, testing::infeasible_solution(task), ReportFigures{}),
+                    "id=\"proof\""));
 }

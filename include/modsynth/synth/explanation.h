@@ -30,6 +30,12 @@ struct InfeasibilityProof {
 /// seconds in all (a proof not finished by then is not one).
 InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit);
 
+/// What `explain` says, in one place for the command and the library: a
+/// proof in words ("Proved infeasible: ..."), or without a proof what a full
+/// run `s` found.
+std::string proved_message(const InfeasibilityProof& proof);
+std::string unproved_message(const InfeasibilityProof& proof, const Solution& s);
+
 /// Among per-joint-count cores, one that conflicts for all of them when
 /// there is such (checked with the front stage), else their union.
 std::vector<std::string> common_core(const task::Task& task,
