@@ -144,8 +144,8 @@ Command add_import(CLI::App& parent) {
         "import", "Make a task from a drawing (SVG or DXF): its curves as lines and arcs");
     sub->add_option("DRAWING", a->input, "drawing.svg or drawing.dxf")->required();
     sub->add_option("-o,--output", a->output, "task file to write")->required();
-    auto* width = sub->add_option("--width", a->width, "drawing width in metres")
-                      ->check(CLI::PositiveNumber);
+    auto* width =
+        sub->add_option("--width", a->width, "drawing width in metres")->check(CLI::PositiveNumber);
     sub->add_option("--scale", a->scale,
                     "metres per drawing unit (default: the file's units; SVG in mm)")
         ->check(CLI::PositiveNumber)
@@ -162,8 +162,9 @@ Command add_import(CLI::App& parent) {
         ->delimiter(',')
         ->expected(4)
         ->allow_extra_args(false);
-    sub->add_option("--obstacles-from", a->obstacle_layer,
-                    "layer (SVG group id or inkscape:label, DXF layer) whose circles are obstacles");
+    sub->add_option(
+        "--obstacles-from", a->obstacle_layer,
+        "layer (SVG group id or inkscape:label, DXF layer) whose circles are obstacles");
     sub->add_option("--name", a->name, "task name (default: the file name)");
     sub->add_option("--dof", a->dof, "allowed joint counts, e.g. 2,3")->delimiter(',');
     sub->add_option("--link-diameter", a->link_diameter, "tube diameter, metres")
@@ -174,7 +175,8 @@ Command add_import(CLI::App& parent) {
                 if (!a->bases.empty() || true) {
                     for (const auto& b : a->bases) {
                         if (b.size() != 4 || !(b[0] <= b[2]) || !(b[1] <= b[3])) {
-                            throw InputError("--base", "expected xmin,ymin,xmax,ymax with min <= max");
+                            throw InputError("--base",
+                                             "expected xmin,ymin,xmax,ymax with min <= max");
                         }
                     }
                 }

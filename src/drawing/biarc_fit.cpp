@@ -148,8 +148,8 @@ Measured measure(const Segment& s, double t0, double t1, const std::vector<Primi
     for (const Primitive& p : ps) {
         const double len = geometry::length(p);
         for (int i = 1; i < samples; ++i) {
-            m.deviation = std::max(m.deviation,
-                                   distance_to_polyline(pts, geometry::point_at(p, len * i / samples)));
+            m.deviation = std::max(
+                m.deviation, distance_to_polyline(pts, geometry::point_at(p, len * i / samples)));
         }
     }
     return m;
@@ -185,7 +185,8 @@ struct Fitter {
         double span = 0.0;
         for (int i = 0; i < 8; ++i) {
             span += (point(segment, t0 + (t1 - t0) * (i + 1) / 8) -
-                     point(segment, t0 + (t1 - t0) * i / 8)).norm();
+                     point(segment, t0 + (t1 - t0) * i / 8))
+                        .norm();
         }
         if (depth >= kMaxDepth || span <= kMinPiece) {
             // Too small to split further: the chord is within reach.
@@ -214,7 +215,8 @@ std::optional<Primitive> exact(const Segment& s) {
     if (const auto* e = std::get_if<EllipticArc>(&s); e && is_circular(*e)) {
         const bool ccw = (e->t1 - e->t0) * cross(e->u, e->v) > 0.0;
         const Vec2 start = point(s, 0.0);
-        if (std::abs(e->t1 - e->t0) >= kTau * (1.0 - 1e-12)) return make_circle(start, e->center, ccw);
+        if (std::abs(e->t1 - e->t0) >= kTau * (1.0 - 1e-12))
+            return make_circle(start, e->center, ccw);
         return make_arc(start, point(s, 1.0), e->center, ccw);
     }
     return std::nullopt;
@@ -276,9 +278,9 @@ std::vector<Primitive> without_slivers(const std::vector<Primitive>& ps) {
     if (carry && !out.empty()) {
         Primitive& last = out.back();
         const Vec2 end = ps.back().end;
-        last = last.kind == PrimitiveKind::Line ? make_line(last.start, end)
-                                                : make_arc(last.start, end, last.center,
-                                                           last.sweep > 0.0);
+        last = last.kind == PrimitiveKind::Line
+                   ? make_line(last.start, end)
+                   : make_arc(last.start, end, last.center, last.sweep > 0.0);
     }
     return out;
 }

@@ -26,13 +26,20 @@ constexpr double kDegree = geometry::kPi / 180.0;
 /// Metres per unit for the $INSUNITS codes a drawing for a robot may use.
 double metres_per_insunit(int code) {
     switch (code) {
-        case 1: return 0.0254;   // inches
-        case 2: return 0.3048;   // feet
-        case 4: return 1e-3;     // millimetres
-        case 5: return 1e-2;     // centimetres
-        case 6: return 1.0;      // metres
-        case 14: return 0.1;     // decimetres
-        default: return 0.0;     // unitless or exotic: the user says
+        case 1:
+            return 0.0254;  // inches
+        case 2:
+            return 0.3048;  // feet
+        case 4:
+            return 1e-3;  // millimetres
+        case 5:
+            return 1e-2;  // centimetres
+        case 6:
+            return 1.0;  // metres
+        case 14:
+            return 0.1;  // decimetres
+        default:
+            return 0.0;  // unitless or exotic: the user says
     }
 }
 
@@ -54,10 +61,11 @@ public:
             throw InputError("(document)", "entities that cannot be drawn: " + list);
         }
         if (!options_.obstacle_layer.empty() && !layer_seen_) {
-            throw InputError("(document)", "no layer '" + options_.obstacle_layer +
-                                               "' (--obstacles-from)");
+            throw InputError("(document)",
+                             "no layer '" + options_.obstacle_layer + "' (--obstacles-from)");
         }
-        if (drawing_.curves.empty()) throw InputError("(document)", "empty drawing: nothing to draw");
+        if (drawing_.curves.empty())
+            throw InputError("(document)", "empty drawing: nothing to draw");
         drawing_.metres_per_unit = metres_per_insunit(insunits_);
         return std::move(drawing_);
     }
@@ -126,7 +134,8 @@ public:
     }
     void addControlPoint(const DL_ControlPointData& d) override {
         if (!spline_) return;
-        if (spline_->spline.control.size() >= kMaxSplineControlPoints) fail("too many control points");
+        if (spline_->spline.control.size() >= kMaxSplineControlPoints)
+            fail("too many control points");
         spline_->spline.control.push_back(Vec2(d.x, d.y));
         spline_->spline.weights.push_back(d.w);
     }
@@ -149,13 +158,27 @@ public:
     void addMText(const DL_MTextData&) override { unsupported("MTEXT (explode text first)"); }
     void addText(const DL_TextData&) override { unsupported("TEXT (explode text first)"); }
     void addArcAlignedText(const DL_ArcAlignedTextData&) override { unsupported("ARCALIGNEDTEXT"); }
-    void addDimAlign(const DL_DimensionData&, const DL_DimAlignedData&) override { unsupported("DIMENSION"); }
-    void addDimLinear(const DL_DimensionData&, const DL_DimLinearData&) override { unsupported("DIMENSION"); }
-    void addDimRadial(const DL_DimensionData&, const DL_DimRadialData&) override { unsupported("DIMENSION"); }
-    void addDimDiametric(const DL_DimensionData&, const DL_DimDiametricData&) override { unsupported("DIMENSION"); }
-    void addDimAngular(const DL_DimensionData&, const DL_DimAngular2LData&) override { unsupported("DIMENSION"); }
-    void addDimAngular3P(const DL_DimensionData&, const DL_DimAngular3PData&) override { unsupported("DIMENSION"); }
-    void addDimOrdinate(const DL_DimensionData&, const DL_DimOrdinateData&) override { unsupported("DIMENSION"); }
+    void addDimAlign(const DL_DimensionData&, const DL_DimAlignedData&) override {
+        unsupported("DIMENSION");
+    }
+    void addDimLinear(const DL_DimensionData&, const DL_DimLinearData&) override {
+        unsupported("DIMENSION");
+    }
+    void addDimRadial(const DL_DimensionData&, const DL_DimRadialData&) override {
+        unsupported("DIMENSION");
+    }
+    void addDimDiametric(const DL_DimensionData&, const DL_DimDiametricData&) override {
+        unsupported("DIMENSION");
+    }
+    void addDimAngular(const DL_DimensionData&, const DL_DimAngular2LData&) override {
+        unsupported("DIMENSION");
+    }
+    void addDimAngular3P(const DL_DimensionData&, const DL_DimAngular3PData&) override {
+        unsupported("DIMENSION");
+    }
+    void addDimOrdinate(const DL_DimensionData&, const DL_DimOrdinateData&) override {
+        unsupported("DIMENSION");
+    }
     void addLeader(const DL_LeaderData&) override { unsupported("LEADER"); }
     void addHatch(const DL_HatchData&) override { unsupported("HATCH"); }
     void addImage(const DL_ImageData&) override { unsupported("IMAGE"); }
@@ -186,7 +209,8 @@ private:
         if (!options_.obstacle_layer.empty() && a.getLayer() == options_.obstacle_layer) {
             layer_seen_ = true;
         }
-        label_ = std::string(type) + " #" + std::to_string(count_) + " (layer " + a.getLayer() + ")";
+        label_ =
+            std::string(type) + " #" + std::to_string(count_) + " (layer " + a.getLayer() + ")";
         if (drawing_.curves.size() >= kMaxCurves) {
             throw InputError(label_, "more than " + std::to_string(kMaxCurves) +
                                          " entities: too large for a drawing");
@@ -196,7 +220,8 @@ private:
     }
 
     bool on_obstacle_layer() {
-        return !options_.obstacle_layer.empty() && getAttributes().getLayer() == options_.obstacle_layer;
+        return !options_.obstacle_layer.empty() &&
+               getAttributes().getLayer() == options_.obstacle_layer;
     }
 
     void unsupported(const std::string& what) {
@@ -226,8 +251,8 @@ private:
     void add_curve(std::vector<Segment> segments, const std::string* label = nullptr) {
         const std::string& name = label ? *label : label_;
         if (on_obstacle_layer() && !label) {
-            throw InputError(name, "only circles can be obstacles (layer " +
-                                       options_.obstacle_layer + ")");
+            throw InputError(
+                name, "only circles can be obstacles (layer " + options_.obstacle_layer + ")");
         }
         Curve c;
         c.source = name;
@@ -242,7 +267,8 @@ private:
         }
         if (c.segments.empty()) throw InputError(name, "zero-length curve");
         total_segments_ += c.segments.size();
-        if (total_segments_ > kMaxSegments) throw InputError(name, "too many segments in the drawing");
+        if (total_segments_ > kMaxSegments)
+            throw InputError(name, "too many segments in the drawing");
         drawing_.curves.push_back(std::move(c));
     }
 
@@ -294,7 +320,8 @@ private:
             if (!(b.knots[n] > b.knots[b.degree])) throw InputError(s.label, "empty knot range");
             for (double& w : b.weights) {
                 if (w == 0.0) w = 1.0;  // dxflib's default for an absent weight
-                if (!(w > 0.0) || !std::isfinite(w)) throw InputError(s.label, "weights must be positive");
+                if (!(w > 0.0) || !std::isfinite(w))
+                    throw InputError(s.label, "weights must be positive");
             }
             add_curve({b}, &s.label);
         }

@@ -42,7 +42,8 @@ Box bounding_box(const Drawing& d) {
 
 DrawingFormat format_of(const std::string& path) {
     std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     if (ext == ".svg") return DrawingFormat::Svg;
     if (ext == ".dxf") return DrawingFormat::Dxf;
     throw InputError(path, "not a drawing: expected a .svg or .dxf file");
@@ -82,11 +83,13 @@ ImportResult import_drawing(std::string_view text, DrawingFormat format,
         format == DrawingFormat::Svg ? read_svg(text, options.read) : read_dxf(text, options.read);
     const Affine map = placement_map(drawing, options.placement);
     ImportResult result;
-    result.metres_per_unit = std::abs(map.m.determinant()) > 0.0 ? std::sqrt(std::abs(map.m.determinant())) : 0.0;
+    result.metres_per_unit =
+        std::abs(map.m.determinant()) > 0.0 ? std::sqrt(std::abs(map.m.determinant())) : 0.0;
     auto check = [](const Vec2& p, const std::string& source) {
         if (!(p.cwiseAbs().maxCoeff() <= task::kMaxCoordinate)) {
-            throw InputError(source, "lies beyond " + std::to_string(int(task::kMaxCoordinate)) +
-                                         " m of the origin once placed: check --width, --scale, --at");
+            throw InputError(source,
+                             "lies beyond " + std::to_string(int(task::kMaxCoordinate)) +
+                                 " m of the origin once placed: check --width, --scale, --at");
         }
     };
     std::vector<Chain> chains;

@@ -50,9 +50,14 @@ StrokeOrder order_strokes(std::vector<Chain> chains, bool keep_order) {
     } else {
         const std::size_t n = chains.size();
         std::vector<Ends> ends(n);
-        for (std::size_t i = 0; i < n; ++i) ends[i] = {chains[i].front().start, chains[i].back().end};
-        auto start_of = [&](const Visit& v) { return v.flipped ? ends[v.chain].end : ends[v.chain].start; };
-        auto end_of = [&](const Visit& v) { return v.flipped ? ends[v.chain].start : ends[v.chain].end; };
+        for (std::size_t i = 0; i < n; ++i)
+            ends[i] = {chains[i].front().start, chains[i].back().end};
+        auto start_of = [&](const Visit& v) {
+            return v.flipped ? ends[v.chain].end : ends[v.chain].start;
+        };
+        auto end_of = [&](const Visit& v) {
+            return v.flipped ? ends[v.chain].start : ends[v.chain].end;
+        };
         // Greedy: from the first chain, always on to the nearest free end.
         std::vector<Visit> tour{{0, false}};
         std::vector<bool> used(n, false);
@@ -78,10 +83,12 @@ StrokeOrder order_strokes(std::vector<Chain> chains, bool keep_order) {
                 for (std::size_t i = 1; i < n; ++i) {
                     for (std::size_t j = i; j < n; ++j) {
                         const Vec2 before = end_of(tour[i - 1]);
-                        const double old_gap = (start_of(tour[i]) - before).norm() +
-                                               (j + 1 < n ? (start_of(tour[j + 1]) - end_of(tour[j])).norm() : 0.0);
-                        const double new_gap = (end_of(tour[j]) - before).norm() +
-                                               (j + 1 < n ? (start_of(tour[j + 1]) - start_of(tour[i])).norm() : 0.0);
+                        const double old_gap =
+                            (start_of(tour[i]) - before).norm() +
+                            (j + 1 < n ? (start_of(tour[j + 1]) - end_of(tour[j])).norm() : 0.0);
+                        const double new_gap =
+                            (end_of(tour[j]) - before).norm() +
+                            (j + 1 < n ? (start_of(tour[j + 1]) - start_of(tour[i])).norm() : 0.0);
                         if (new_gap < old_gap - 1e-12) {
                             std::reverse(tour.begin() + i, tour.begin() + j + 1);
                             for (std::size_t k = i; k <= j; ++k) tour[k].flipped = !tour[k].flipped;
@@ -93,12 +100,14 @@ StrokeOrder order_strokes(std::vector<Chain> chains, bool keep_order) {
             }
         }
         for (const Visit& v : tour) {
-            ordered.push_back(v.flipped ? reversed_chain(chains[v.chain]) : std::move(chains[v.chain]));
+            ordered.push_back(v.flipped ? reversed_chain(chains[v.chain])
+                                        : std::move(chains[v.chain]));
         }
     }
     StrokeOrder out;
     for (Chain& c : ordered) {
-        if (!out.strokes.empty() && (c.front().start - out.strokes.back().back().end).norm() <= kTouching) {
+        if (!out.strokes.empty() &&
+            (c.front().start - out.strokes.back().back().end).norm() <= kTouching) {
             out.strokes.back().insert(out.strokes.back().end(), c.begin(), c.end());
         } else {
             out.strokes.push_back(std::move(c));

@@ -9,10 +9,10 @@
 
 // SVG++ nests Boost.Parameter lists deeper than Boost's default arity.
 #define BOOST_PARAMETER_MAX_ARITY 11
+#include <tinyxml2.h>
 #include <boost/array.hpp>
 #include <boost/exception/get_error_info.hpp>
 #include <svgpp/svgpp.hpp>
-#include <tinyxml2.h>
 
 #include <modsynth/task/input_error.h>
 
@@ -39,12 +39,12 @@ std::string element_label(XmlElement e) {
 
 /// Elements that draw nothing by themselves: skipped with what they hold.
 const std::set<std::string, std::less<>> kNotDrawn = {
-    "defs",     "metadata", "title",          "desc",           "style",  "script",
-    "symbol",   "clipPath", "mask",           "marker",         "pattern", "filter",
-    "linearGradient", "radialGradient", "cursor", "font", "font-face", "color-profile"};
+    "defs",           "metadata",       "title",  "desc",   "style",     "script",
+    "symbol",         "clipPath",       "mask",   "marker", "pattern",   "filter",
+    "linearGradient", "radialGradient", "cursor", "font",   "font-face", "color-profile"};
 const std::set<std::string, std::less<>> kContainers = {"svg", "g"};
-const std::set<std::string, std::less<>> kShapes = {"path",   "rect",     "circle", "ellipse",
-                                                     "line",   "polyline", "polygon"};
+const std::set<std::string, std::less<>> kShapes = {"path", "rect",     "circle", "ellipse",
+                                                    "line", "polyline", "polygon"};
 
 bool in_layer(XmlElement e, const std::string& layer) {
     for (const tinyxml2::XMLNode* n = e->Parent(); n; n = n->Parent()) {
@@ -177,8 +177,8 @@ public:
                                   svgpp::tag::coordinate::absolute) {
         // Degree elevation: the same curve, exactly.
         const Vec2 q(x1, y1), end(x, y);
-        add(CubicBezier{current_, current_ + 2.0 / 3.0 * (q - current_), end + 2.0 / 3.0 * (q - end),
-                        end});
+        add(CubicBezier{current_, current_ + 2.0 / 3.0 * (q - current_),
+                        end + 2.0 / 3.0 * (q - end), end});
     }
     void path_elliptical_arc_to(double rx, double ry, double rotation, bool large, bool sweep,
                                 double x, double y, svgpp::tag::coordinate::absolute) {
@@ -218,7 +218,8 @@ public:
 
     void on_exit_element() {
         flush();
-        if (commands_ == 0 && !hidden_) throw InputError(label_, "zero-length curve (nothing to draw)");
+        if (commands_ == 0 && !hidden_)
+            throw InputError(label_, "zero-length curve (nothing to draw)");
     }
 
 private:
@@ -275,9 +276,9 @@ struct ChildContextFactories {
 };
 
 template <class ParentContext, class ElementTag>
-struct ChildContextFactories::apply<
-    ParentContext, ElementTag,
-    typename boost::enable_if<boost::mpl::has_key<svgpp::traits::shape_elements, ElementTag>>::type> {
+struct ChildContextFactories::apply<ParentContext, ElementTag,
+                                    typename boost::enable_if<boost::mpl::has_key<
+                                        svgpp::traits::shape_elements, ElementTag>>::type> {
     typedef svgpp::factory::context::on_stack_with_xml_element<ShapeContext> type;
 };
 
@@ -285,16 +286,14 @@ struct AttributeTraversal : svgpp::policy::attribute_traversal::default_policy {
     // Styles hold nothing the strokes need, and Inkscape's hold properties
     // SVG++ does not know.
     static const bool parse_style = false;
-    typedef boost::mpl::if_<boost::mpl::has_key<boost::mpl::set<svgpp::tag::element::svg>,
-                                                boost::mpl::_1>,
-                            boost::mpl::vector<svgpp::tag::attribute::x, svgpp::tag::attribute::y,
-                                               svgpp::tag::attribute::width,
-                                               svgpp::tag::attribute::height,
-                                               svgpp::tag::attribute::viewBox,
-                                               svgpp::tag::attribute::preserveAspectRatio,
-                                               svgpp::notify_context<
-                                                   svgpp::tag::event::after_viewport_attributes>>::type,
-                            boost::mpl::empty_sequence>
+    typedef boost::mpl::if_<
+        boost::mpl::has_key<boost::mpl::set<svgpp::tag::element::svg>, boost::mpl::_1>,
+        boost::mpl::vector<
+            svgpp::tag::attribute::x, svgpp::tag::attribute::y, svgpp::tag::attribute::width,
+            svgpp::tag::attribute::height, svgpp::tag::attribute::viewBox,
+            svgpp::tag::attribute::preserveAspectRatio,
+            svgpp::notify_context<svgpp::tag::event::after_viewport_attributes>>::type,
+        boost::mpl::empty_sequence>
         get_priority_attributes_by_element;
 };
 
@@ -339,7 +338,8 @@ struct ErrorPolicy : svgpp::policy::error::raise_exception<Context> {
 
 typedef boost::mpl::fold<svgpp::traits::shape_elements,
                          boost::mpl::set<svgpp::tag::element::svg, svgpp::tag::element::g>::type,
-                         boost::mpl::insert<boost::mpl::_1, boost::mpl::_2>>::type ProcessedElements;
+                         boost::mpl::insert<boost::mpl::_1, boost::mpl::_2>>::type
+    ProcessedElements;
 
 typedef boost::mpl::fold<
     boost::mpl::protect<boost::mpl::joint_view<svgpp::traits::shapes_attributes_by_element,
@@ -352,9 +352,8 @@ typedef svgpp::document_traversal<
     svgpp::viewport_policy<svgpp::policy::viewport::as_transform>,
     svgpp::context_factories<ChildContextFactories>,
     svgpp::length_policy<svgpp::policy::length::forward_to_method<BaseContext>>,
-    svgpp::attribute_traversal_policy<AttributeTraversal>,
-    svgpp::basic_shapes_policy<BasicShapes>, svgpp::path_policy<PathPolicy>,
-    svgpp::error_policy<ErrorPolicy<BaseContext>>>
+    svgpp::attribute_traversal_policy<AttributeTraversal>, svgpp::basic_shapes_policy<BasicShapes>,
+    svgpp::path_policy<PathPolicy>, svgpp::error_policy<ErrorPolicy<BaseContext>>>
     DocumentTraversal;
 
 std::string quoted(const std::string& value) {
@@ -381,9 +380,8 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
     }
     XmlElement root = doc.RootElement();
     if (!root || std::strcmp(svg_xml::local_name(root->Name()), "svg") != 0) {
-        throw InputError("(document)",
-                         std::string("not an SVG file: the root element is <") +
-                             (root ? root->Name() : "") + ">, not <svg>");
+        throw InputError("(document)", std::string("not an SVG file: the root element is <") +
+                                           (root ? root->Name() : "") + ">, not <svg>");
     }
     std::vector<std::string> unsupported;
     bool layer_seen = false;
@@ -392,8 +390,7 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
     if (!unsupported.empty()) {
         std::string list;
         for (const std::string& u : unsupported) list += (list.empty() ? "" : ", ") + u;
-        throw InputError(element_label(root),
-                         "elements that cannot be drawn: " + list);
+        throw InputError(element_label(root), "elements that cannot be drawn: " + list);
     }
     if (!options.obstacle_layer.empty() && !layer_seen) {
         throw InputError("(document)", "no layer or group with id or label '" +
@@ -418,8 +415,10 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
         const XmlElement* where = boost::get_error_info<ElementInfo>(e);
         const std::string part = where ? element_label(*where) : "(document)";
         if (const auto* bad = dynamic_cast<const svgpp::invalid_value_error<char>*>(&e)) {
-            if (bad->name() == "d") throw InputError(part, "malformed path data " + quoted(bad->value()));
-            throw InputError(part, "malformed attribute " + bad->name() + "=" + quoted(bad->value()));
+            if (bad->name() == "d")
+                throw InputError(part, "malformed path data " + quoted(bad->value()));
+            throw InputError(part,
+                             "malformed attribute " + bad->name() + "=" + quoted(bad->value()));
         }
         throw InputError(part, e.what());
     }

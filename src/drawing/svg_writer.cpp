@@ -49,12 +49,14 @@ std::string write_svg(const std::vector<Chain>& strokes) {
             // Arcs of at most a quarter turn: SVG's end-point form finds
             // their centers well conditioned (a half turn would not), and
             // reading merges the pieces of one circle back into one.
-            const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(p.sweep) / (geometry::kPi / 2) - 1e-9)));
+            const int pieces = std::max(
+                1, static_cast<int>(std::ceil(std::abs(p.sweep) / (geometry::kPi / 2) - 1e-9)));
             const std::string r = number(1e3 * p.radius);
             for (int k = 1; k <= pieces; ++k) {
                 const Vec2 q = k == pieces
                                    ? p.end
-                                   : p.center + p.radius * geometry::unit(p.start_angle + p.sweep * k / pieces);
+                                   : p.center + p.radius * geometry::unit(p.start_angle +
+                                                                          p.sweep * k / pieces);
                 // y flips: counter-clockwise in the task is SVG's negative
                 // sweep direction.
                 d += " A " + r + "," + r + " 0 0 " + (p.sweep > 0.0 ? "0 " : "1 ") + pt(q);

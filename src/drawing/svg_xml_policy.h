@@ -7,11 +7,11 @@
 #include <cstring>
 #include <string_view>
 
+#include <tinyxml2.h>
 #include <boost/range/iterator_range.hpp>
 #include <svgpp/definitions.hpp>
 #include <svgpp/detail/namespace.hpp>
 #include <svgpp/policy/xml/fwd.hpp>
-#include <tinyxml2.h>
 
 namespace modsynth::drawing::svg_xml {
 
@@ -86,9 +86,7 @@ struct element_iterator<const tinyxml2::XMLElement*> {
         return {n, n + std::strlen(n)};
     }
     static element_text_type get_text(iterator_type) { return {nullptr, nullptr}; }
-    static attribute_enumerator_type get_attributes(iterator_type e) {
-        return e->FirstAttribute();
-    }
+    static attribute_enumerator_type get_attributes(iterator_type e) { return e->FirstAttribute(); }
     static iterator_type get_child_elements(iterator_type e) {
         iterator_type child = e->FirstChildElement();
         skip_foreign(child);

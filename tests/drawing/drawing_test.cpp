@@ -35,7 +35,8 @@ double dense_deviation(const Segment& s, const std::vector<Primitive>& ps) {
     for (int i = 0; i <= n; ++i) {
         curve.push_back(point(s, static_cast<double>(i) / n));
         double d = 1e9;
-        for (const Primitive& p : ps) d = std::min(d, modsynth::geometry::nearest(p, curve.back()).distance);
+        for (const Primitive& p : ps)
+            d = std::min(d, modsynth::geometry::nearest(p, curve.back()).distance);
         worst = std::max(worst, d);
         if (i > 0) chord = std::max(chord, (curve[i] - curve[i - 1]).norm());
     }
@@ -146,27 +147,34 @@ TEST_CASE("lines and circular arcs map exactly; one circle's arcs merge", "[draw
 TEST_CASE("SVG: relative and absolute commands, transforms and viewBox units", "[drawing]") {
     const std::string head =
         R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="50mm" viewBox="0 0 10 5">)svg";
-    const Drawing abs = read_svg(head + R"svg(<path d="M 1,1 L 3,1 C 4,1 4,2 3,3 Q 2,4 1,3 A 1 1 0 0 1 1,1"/></svg>)svg");
-    const Drawing rel = read_svg(head + R"svg(<path d="m 1,1 l 2,0 c 1,0 1,1 0,2 q -1,1 -2,0 a 1 1 0 0 1 0,-2"/></svg>)svg");
+    const Drawing abs = read_svg(
+        head + R"svg(<path d="M 1,1 L 3,1 C 4,1 4,2 3,3 Q 2,4 1,3 A 1 1 0 0 1 1,1"/></svg>)svg");
+    const Drawing rel = read_svg(
+        head + R"svg(<path d="m 1,1 l 2,0 c 1,0 1,1 0,2 q -1,1 -2,0 a 1 1 0 0 1 0,-2"/></svg>)svg");
     REQUIRE(abs.curves.size() == 1);
     REQUIRE(rel.curves.size() == 1);
     REQUIRE(abs.curves[0].segments.size() == 4);
     REQUIRE(rel.curves[0].segments.size() == 4);
     for (std::size_t i = 0; i < 4; ++i) {
         for (double t : {0.0, 0.3, 1.0}) {
-            CHECK((point(abs.curves[0].segments[i], t) - point(rel.curves[0].segments[i], t)).norm() <= 1e-9);
+            CHECK((point(abs.curves[0].segments[i], t) - point(rel.curves[0].segments[i], t))
+                      .norm() <= 1e-9);
         }
     }
     // One user unit is 10 mm; y up from the page's bottom (50 mm high).
     CHECK((start_point(abs.curves[0].segments[0]) - Vec2(10.0, 40.0)).norm() <= 1e-9);
     CHECK(abs.metres_per_unit == 1e-3);
     // Nested transforms compose: translate then scale.
-    const Drawing t = read_svg(head + R"svg(<g transform="translate(2,1)"><g transform="scale(2)"><line x1="0" y1="0" x2="1" y2="0"/></g></g></svg>)svg");
+    const Drawing t = read_svg(
+        head +
+        R"svg(<g transform="translate(2,1)"><g transform="scale(2)"><line x1="0" y1="0" x2="1" y2="0"/></g></g></svg>)svg");
     REQUIRE(t.curves.size() == 1);
     CHECK((start_point(t.curves[0].segments[0]) - Vec2(20.0, 40.0)).norm() <= 1e-9);
     CHECK((end_point(t.curves[0].segments[0]) - Vec2(40.0, 40.0)).norm() <= 1e-9);
     // rect, polygon, polyline, circle, ellipse
-    const Drawing shapes = read_svg(head + R"svg(<rect x="1" y="1" width="2" height="1"/><polygon points="5,1 6,1 6,2"/><polyline points="7,1 8,1 8,2"/><circle cx="2" cy="3" r="1"/><ellipse cx="5" cy="3" rx="1" ry="0.5"/></svg>)svg");
+    const Drawing shapes = read_svg(
+        head +
+        R"svg(<rect x="1" y="1" width="2" height="1"/><polygon points="5,1 6,1 6,2"/><polyline points="7,1 8,1 8,2"/><circle cx="2" cy="3" r="1"/><ellipse cx="5" cy="3" rx="1" ry="0.5"/></svg>)svg");
     CHECK(shapes.curves.size() == 5);
 }
 
@@ -175,8 +183,9 @@ TEST_CASE("SVG: errors name the element and its line", "[drawing]") {
     CHECK_THAT(message_of([&] { read_svg(head + "<path id=\"p3\" d=\"M 10,\"/></svg>"); }),
                Catch::Contains("path#p3 (line 2)") && Catch::Contains("malformed path data") &&
                    Catch::Contains("M 10,"));
-    CHECK_THAT(message_of([&] { read_svg(head + "<text id=\"t1\">Hi</text>\n<image id=\"i\"/></svg>"); }),
-               Catch::Contains("text#t1 (line 2)") && Catch::Contains("image#i (line 3)"));
+    CHECK_THAT(
+        message_of([&] { read_svg(head + "<text id=\"t1\">Hi</text>\n<image id=\"i\"/></svg>"); }),
+        Catch::Contains("text#t1 (line 2)") && Catch::Contains("image#i (line 3)"));
     CHECK_THAT(message_of([&] { read_svg(head + "<path id=\"z\" d=\"M 1,1 L 1,1\"/></svg>"); }),
                Catch::Contains("path#z (line 2)") && Catch::Contains("zero-length"));
     CHECK_THAT(message_of([&] { read_svg(head + "</svg>"); }), Catch::Contains("empty drawing"));
@@ -203,7 +212,8 @@ TEST_CASE("DXF: the fixture's entities, exact bulges, clamped spline ends", "[dr
     CHECK((point(spline, 0.0) - Vec2(15, 45)).norm() <= 1e-12);
     CHECK((point(spline, 1.0) - Vec2(65, 45)).norm() <= 1e-12);
     CHECK_THAT(message_of([] { read_dxf("hello"); }), Catch::Contains("not a DXF file"));
-    const std::string text = "0\nSECTION\n2\nENTITIES\n0\nTEXT\n8\n0\n10\n0\n20\n0\n40\n1\n1\nHi\n0\nENDSEC\n0\nEOF\n";
+    const std::string text =
+        "0\nSECTION\n2\nENTITIES\n0\nTEXT\n8\n0\n10\n0\n20\n0\n40\n1\n1\nHi\n0\nENDSEC\n0\nEOF\n";
     CHECK_THAT(message_of([&] { read_dxf(text); }), Catch::Contains("TEXT"));
 }
 
@@ -227,7 +237,9 @@ TEST_CASE("import: placement, stroke order, and the SVG round trip", "[drawing]"
     const ImportResult p = import_drawing(fixture("sketch.svg"), DrawingFormat::Svg, placed);
     double xmin = 1e9, xmax = -1e9;
     for (const auto& s : p.strokes) {
-        for (const Primitive& q : s) xmin = std::min({xmin, q.start.x(), q.end.x()}), xmax = std::max({xmax, q.start.x(), q.end.x()});
+        for (const Primitive& q : s)
+            xmin = std::min({xmin, q.start.x(), q.end.x()}),
+            xmax = std::max({xmax, q.start.x(), q.end.x()});
     }
     CHECK(xmax - xmin == Approx(0.5).epsilon(1e-3));
     CHECK((xmax + xmin) / 2 == Approx(1.0).epsilon(1e-3));
