@@ -76,7 +76,8 @@ int run_import(ImportArgs& a) {
         r = drawing::import_drawing(text, format, options);
     } catch (const InputError& e) {
         // Name the file too: "drawing.svg: path#p3 (line 12): ...".
-        throw InputError(a.input + ": " + e.part(), e.what() + e.part().size() + 2);
+        const std::string problem = e.part().empty() ? e.what() : e.what() + e.part().size() + 2;
+        throw InputError(a.input + ": " + e.part(), problem);
     }
     if (a.name.empty()) a.name = file_stem(a.input);
     // Every stroke goes through the task reader: what is written is valid.

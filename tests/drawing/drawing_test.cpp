@@ -77,7 +77,7 @@ std::string message_of(const std::function<void()>& f) {
 
 }  // namespace
 
-TEST_CASE("random Béziers fit within the tolerance, tangent-continuous", "[drawing]") {
+TEST_CASE("random Béziers fit within the tolerance, tangent-continuous", "[drawing][slow]") {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> coord(-0.2, 0.2);
     for (double tol : {1e-3, 1e-4, 1e-5}) {
@@ -96,7 +96,7 @@ TEST_CASE("random Béziers fit within the tolerance, tangent-continuous", "[draw
     }
 }
 
-TEST_CASE("ellipses fit within the tolerance in few pieces", "[drawing]") {
+TEST_CASE("ellipses fit within the tolerance in few pieces", "[drawing][slow]") {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> radius(0.01, 0.3), angle(-3.0, 3.0);
     for (double tol : {1e-3, 1e-4, 1e-5}) {
