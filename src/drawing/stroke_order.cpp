@@ -14,7 +14,7 @@ using geometry::Vec2;
 
 /// Beyond this many chains 2-opt (quadratic per pass) is skipped; the
 /// greedy order alone is kept.
-constexpr std::size_t kMaxTwoOpt = 3000;
+constexpr std::size_t kMaxTwoOpt = 1000;
 constexpr int kMaxPasses = 50;
 
 Chain reversed_chain(const Chain& c) {
