@@ -22,6 +22,10 @@ using task::InputError;
 
 /// Samples of the curve per fitted range when measuring the deviation.
 constexpr int kSamples = 48;
+/// Pieces are accepted within this share of the tolerance: the deviation is
+/// measured on samples, and the curve may stray a little further between
+/// them.
+constexpr double kMargin = 0.95;
 /// Splits deeper than this cannot narrow a range usefully (2^-60).
 constexpr int kMaxDepth = 60;
 /// Pieces shorter than this are folded into their neighbour: they would
@@ -163,6 +167,59 @@ struct Fitter {
     std::vector<Primitive>& out;
     double worst = 0.0;
 
+    /// One biarc over [t0, t1] when it lies within the tolerance.
+    std::optional<std::vector<Primitive>> within(double t0, double t1, double& dev) const {
+        const Vec2 p0 = point(segment, t0), p1 = point(segment, t1);
+        const auto arcs =
+            biarc(p0, tangent(segment, t0, t0, t1, true), p1, tangent(segment, t1, t0, t1, false));
+        if (!arcs) return std::nullopt;
+        dev = measure(segment, t0, t1, *arcs, kSamples).deviation;
+        if (dev > kMargin * tolerance) return std::nullopt;
+        return arcs;
+    }
+
+    /// Fewer pieces than splitting alone: from the start, the longest span
+    /// one biarc covers (found by bisection; every piece taken is
+    /// measured), then on from its end. Where no span fits (a cusp), the
+    /// recursive split takes over for a short stretch.
+    void fit_greedy() {
+        double t = 0.0;
+        while (t < 1.0) {
+            if (out.size() > max_primitives) {
+                throw InputError(source, "needs more than " + std::to_string(max_primitives) +
+                                             " primitives at this tolerance: raise --tolerance");
+            }
+            double dev = 0.0;
+            if (auto whole = within(t, 1.0, dev)) {
+                worst = std::max(worst, dev);
+                out.insert(out.end(), whole->begin(), whole->end());
+                return;
+            }
+            double lo = t, hi = 1.0, best_dev = 0.0;
+            std::optional<std::vector<Primitive>> best;
+            for (int i = 0; i < 14; ++i) {
+                const double mid = (lo + hi) / 2.0;
+                if (auto arcs = within(t, mid, dev)) {
+                    best = std::move(arcs);
+                    best_dev = dev;
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            if (best && lo > t) {
+                worst = std::max(worst, best_dev);
+                out.insert(out.end(), best->begin(), best->end());
+                t = lo;
+                continue;
+            }
+            const double next = std::min(1.0, t + (1.0 - t) / 64.0);
+            fit(t, next, point(segment, t), tangent(segment, t, t, next, true),
+                point(segment, next), tangent(segment, next, t, next, false), 0);
+            t = next;
+        }
+    }
+
     void fit(double t0, double t1, const Vec2& p0, const Vec2& tan0, const Vec2& p1,
              const Vec2& tan1, int depth) {
         if (out.size() > max_primitives) {
@@ -173,7 +230,7 @@ struct Fitter {
         Measured m;
         if (arcs) {
             m = measure(segment, t0, t1, *arcs, kSamples);
-            if (m.deviation <= tolerance) {
+            if (m.deviation <= kMargin * tolerance) {
                 worst = std::max(worst, m.deviation);
                 out.insert(out.end(), arcs->begin(), arcs->end());
                 return;
@@ -302,8 +359,7 @@ FittedCurve fit_curve(const Curve& curve, double tolerance, std::size_t max_prim
         }
         std::vector<Primitive> fitted;
         Fitter f{s, tolerance, max_primitives, curve.source, fitted};
-        f.fit(0.0, 1.0, point(s, 0.0), tangent(s, 0.0, 0.0, 1.0, true), point(s, 1.0),
-              tangent(s, 1.0, 0.0, 1.0, false), 0);
+        f.fit_greedy();
         result.deviation = std::max(result.deviation, f.worst);
         pieces.insert(pieces.end(), fitted.begin(), fitted.end());
         if (pieces.size() > max_primitives) {
