@@ -29,6 +29,8 @@ Command add_explain(CLI::App& parent);
 Command add_serve(CLI::App& parent);
 Command add_baseline(CLI::App& parent);
 Command add_compare(CLI::App& parent);
+Command add_import(CLI::App& parent);
+Command add_export_svg(CLI::App& parent);
 
 /// --report, --urdf, --csv, --build-sheet: shared by solve and export.
 void add_export_options(CLI::App& sub, output::ExportPaths& paths);

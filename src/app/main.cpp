@@ -13,9 +13,10 @@ int main(int argc, char** argv) {
     CLI::App app{"modsynth: synthesise a modular planar manipulator and its control for a task"};
     app.set_version_flag("--version", std::string("modsynth ") + MODSYNTH_VERSION);
     app.require_subcommand(1);
-    const std::vector<Command> commands = {add_validate(app), add_solve(app),    add_export(app),
-                                           add_batch(app),    add_regress(app),  add_explain(app),
-                                           add_serve(app),    add_baseline(app), add_compare(app)};
+    const std::vector<Command> commands = {add_validate(app), add_solve(app),     add_export(app),
+                                           add_batch(app),    add_regress(app),   add_explain(app),
+                                           add_serve(app),    add_baseline(app),  add_compare(app),
+                                           add_import(app),   add_export_svg(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,0 +1,39 @@
+#pragma once
+// What a drawing file holds once read: its curves and the circles of its
+// obstacle layer, in the drawing's own units with y pointing up.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <modsynth/drawing/curve.h>
+#include <modsynth/geometry/disc.h>
+
+namespace modsynth::drawing {
+
+struct Drawing {
+    std::vector<Curve> curves;
+    /// Circles found on the obstacle layer (`--obstacles-from`).
+    std::vector<geometry::Disc> obstacles;
+    /// Metres per drawing unit as the file states it (SVG: its units are
+    /// read as millimetres; DXF: $INSUNITS), 0 when the file does not say.
+    double metres_per_unit = 0.0;
+};
+
+/// What a reader accepts: which layer's circles are obstacles ("" none).
+struct ReadOptions {
+    std::string obstacle_layer;
+};
+
+/// The sizes a reader refuses beyond (a drawing for a robot arm has
+/// hundreds of curves, not millions), so that no file makes it crash or
+/// run for long.
+constexpr std::size_t kMaxDrawingBytes = 16u << 20;
+constexpr std::size_t kMaxCurves = 20000;
+constexpr std::size_t kMaxSegments = 200000;
+constexpr std::size_t kMaxSplineControlPoints = 10000;
+constexpr int kMaxSplineDegree = 10;
+/// Every coordinate of a drawing lies within this many drawing units of
+/// its origin.
+constexpr double kMaxDrawingCoordinate = 1e9;
+
+}  // namespace modsynth::drawing
