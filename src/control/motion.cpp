@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <modsynth/control/travel.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/chain_layout.h>
-#include <modsynth/control/travel.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
@@ -176,11 +176,11 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             const double to =
                 from + std::remainder(robot.proximal_angles[j] - from, geometry::kTau);
             const std::size_t before = out.size();
-            const bool ok = walk(from, to, options.max_joint_step, options, Phase::Transition,
-                                 k - 1, stroke, out, &failed_at, &gave_up,
-                                 [&](double q1, const std::vector<double>* prev) {
-                                     return transition_configuration(task, robot, j - 1, q1, prev);
-                                 });
+            const bool ok =
+                walk(from, to, options.max_joint_step, options, Phase::Transition, k - 1, stroke,
+                     out, &failed_at, &gave_up, [&](double q1, const std::vector<double>* prev) {
+                         return transition_configuration(task, robot, j - 1, q1, prev);
+                     });
             if (!ok) return fail(j - 1, true, failed_at);
             if (out.size() > before) out.pop_back();  // the last pose is the next trace's first
         } else if (j > 0 && k == 0) {
@@ -204,10 +204,11 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
         if (!q) return fail(j, false, 0.0);
         out.push_back({0.0, Phase::Trace, k, 0.0, *q, stroke});
         const double length = geometry::length(task.trajectory[j]);
-        const bool ok = walk(0.0, length, options.max_ee_step, options, Phase::Trace, k, stroke,
-                             out, &failed_at, &gave_up, [&](double s, const std::vector<double>* p) {
-                                 return configuration_at(task, robot, j, s, p);
-                             });
+        const bool ok =
+            walk(0.0, length, options.max_ee_step, options, Phase::Trace, k, stroke, out,
+                 &failed_at, &gave_up, [&](double s, const std::vector<double>* p) {
+                     return configuration_at(task, robot, j, s, p);
+                 });
         if (!ok) return fail(j, false, failed_at);
     }
     return out;
@@ -285,11 +286,10 @@ void assign_times(std::vector<Sample>& samples, const MotionOptions& options) {
     for (std::size_t i = 1; i < samples.size(); ++i) {
         const Sample& a = samples[i - 1];
         Sample& b = samples[i];
-        const double path =
-            (a.phase == Phase::Trace && b.phase == Phase::Trace && a.primitive == b.primitive &&
-             a.stroke == b.stroke)
-                ? std::abs(b.s - a.s)
-                : 0.0;
+        const double path = (a.phase == Phase::Trace && b.phase == Phase::Trace &&
+                             a.primitive == b.primitive && a.stroke == b.stroke)
+                                ? std::abs(b.s - a.s)
+                                : 0.0;
         const double dt =
             std::max(path / options.ee_speed, largest_change(a.q, b.q) / options.joint_speed);
         b.t = std::round((a.t + dt) * options.ticks_per_second) / options.ticks_per_second;

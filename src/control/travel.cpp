@@ -185,8 +185,7 @@ bool TravelOptions::IsValid(std::string* error) const {
 
 std::optional<TravelPlan> plan_travel(const task::Task& task, const kinematics::Robot& robot,
                                       const std::vector<double>& from,
-                                      const std::vector<double>& to,
-                                      const TravelOptions& options) {
+                                      const std::vector<double>& to, const TravelOptions& options) {
     text::require_valid(options);
     const Planner planner(task, robot, options);
     const std::vector<Pose> goals = planner.goals(from, to);

@@ -338,13 +338,14 @@ void check_solution_fits(const task::Task& task, const synth::Solution& solution
                              "the task has only " + std::to_string(strokes) +
                                  (strokes == 1 ? " stroke" : " strokes"));
         }
-        const int primitives = task::stroke_last(task, x.stroke) - task::stroke_first(task, x.stroke) + 1;
+        const int primitives =
+            task::stroke_last(task, x.stroke) - task::stroke_first(task, x.stroke) + 1;
         if (x.primitive >= primitives) {
-            throw InputError(member(element("samples", i), "primitive"),
-                             (task::has_strokes(task)
-                                  ? "strokes[" + std::to_string(x.stroke) + "] has only "
-                                  : std::string("the task has only ")) +
-                                 std::to_string(primitives) + " primitives");
+            throw InputError(
+                member(element("samples", i), "primitive"),
+                (task::has_strokes(task) ? "strokes[" + std::to_string(x.stroke) + "] has only "
+                                         : std::string("the task has only ")) +
+                    std::to_string(primitives) + " primitives");
         }
     }
 }

@@ -332,8 +332,8 @@ void parse_path(const json& doc, Task& task) {
     const json* trajectory = optional(doc, "trajectory");
     const json* strokes = optional(doc, "strokes");
     if (trajectory && strokes) {
-        throw InputError("strokes",
-                         "a task holds either \"trajectory\" (one stroke) or \"strokes\", not both");
+        throw InputError(
+            "strokes", "a task holds either \"trajectory\" (one stroke) or \"strokes\", not both");
     }
     if (strokes) {
         parse_strokes(*strokes, task);
@@ -476,8 +476,7 @@ void check_clearance(const Task& task) {
             if (d <= o.radius) {
                 throw InputError(element("obstacles", i),
                                  "touches " + task::part_name(task, static_cast<int>(j)) +
-                                     " (the path runs " +
-                                     metres(o.radius - d) +
+                                     " (the path runs " + metres(o.radius - d) +
                                      " m inside it); the path must stay outside every obstacle");
             }
         }
@@ -571,19 +570,19 @@ json to_json(const Task& task) {
         regions.push_back({{"min", point_json(b.min)}, {"max", point_json(b.max)}});
     }
     json doc = {{"format", kFormat},
-            {"name", task.name},
-            {"obstacles", obstacles},
-            {"base_regions", regions},
-            {"robot",
-             {{"dof", task.robot.dof},
-              {"link_diameter", task.robot.link_diameter},
-              {"min_link_length", task.robot.min_link_length},
-              {"max_link_length", task.robot.max_link_length},
-              {"module_length", task.robot.module_length},
-              {"module_width", task.robot.module_width},
-              {"module_height", task.robot.module_height},
-              {"adapter_length", task.robot.adapter_length},
-              {"ee_rod_diameter", task.robot.ee_rod_diameter}}}};
+                {"name", task.name},
+                {"obstacles", obstacles},
+                {"base_regions", regions},
+                {"robot",
+                 {{"dof", task.robot.dof},
+                  {"link_diameter", task.robot.link_diameter},
+                  {"min_link_length", task.robot.min_link_length},
+                  {"max_link_length", task.robot.max_link_length},
+                  {"module_length", task.robot.module_length},
+                  {"module_width", task.robot.module_width},
+                  {"module_height", task.robot.module_height},
+                  {"adapter_length", task.robot.adapter_length},
+                  {"ee_rod_diameter", task.robot.ee_rod_diameter}}}};
     if (task::has_strokes(task)) {
         doc["strokes"] = std::move(strokes);
     } else {

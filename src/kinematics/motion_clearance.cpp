@@ -26,9 +26,8 @@ double segment_polygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& po
 
 }  // namespace
 
-PoseClearance linear_motion_clearance(std::span<const geometry::Disc> obstacles,
-                                      const Robot& robot, std::span<const double> qa,
-                                      std::span<const double> qb) {
+PoseClearance linear_motion_clearance(std::span<const geometry::Disc> obstacles, const Robot& robot,
+                                      std::span<const double> qa, std::span<const double> qb) {
     const int n = robot.dof();
     const std::vector<Vec2> a = forward(robot.base, robot.link_lengths, qa);
     const std::vector<Vec2> b = forward(robot.base, robot.link_lengths, qb);
@@ -45,12 +44,11 @@ PoseClearance linear_motion_clearance(std::span<const geometry::Disc> obstacles,
     for (int k = 0; k < n; ++k) {
         const std::vector<Vec2> hull = geometry::convex_hull({a[k], a[k + 1], b[k], b[k + 1]});
         for (const geometry::Disc& ob : obstacles)
-            c.obstacles =
-                std::min(c.obstacles, geometry::point_convex_polygon(ob.center, hull) -
-                                          e[k] / 8.0 - rule.obstacle_distance(ob));
+            c.obstacles = std::min(c.obstacles, geometry::point_convex_polygon(ob.center, hull) -
+                                                    e[k] / 8.0 - rule.obstacle_distance(ob));
         if (k < n - 1)
-            c.self = std::min(c.self, segment_polygon(a[n], b[n], hull) -
-                                          (e[n - 1] + e[k]) / 8.0 - rule.self_distance());
+            c.self = std::min(c.self, segment_polygon(a[n], b[n], hull) - (e[n - 1] + e[k]) / 8.0 -
+                                          rule.self_distance());
     }
     return c;
 }

@@ -157,8 +157,8 @@ private:
         if (depth <= 0) return;
         const double mid = 0.5 * (angle_a + angle_c);
         const Vec2 t0 = p_.start.distal_origin(mid);
-        const std::string where =
-            "transition after " + task::part_name(t_, j) + text::format(", link 1 at %.6f rad", mid);
+        const std::string where = "transition after " + task::part_name(t_, j) +
+                                  text::format(", link 1 at %.6f rad", mid);
         const Point t = new_point("proximal " + where, t0);
         const Affine sum = (a.x - base_.x) + (c.x - base_.x);
         const Affine sum_y = (a.y - base_.y) + (c.y - base_.y);

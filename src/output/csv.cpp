@@ -32,9 +32,8 @@ std::string row(const control::Sample& s, bool strokes) {
 
 std::string trajectory_csv(const synth::Solution& solution) {
     const int dof = solution.samples.empty() ? 2 : static_cast<int>(solution.samples[0].q.size());
-    const bool strokes =
-        std::any_of(solution.samples.begin(), solution.samples.end(),
-                    [](const control::Sample& s) { return s.stroke != 0; });
+    const bool strokes = std::any_of(solution.samples.begin(), solution.samples.end(),
+                                     [](const control::Sample& s) { return s.stroke != 0; });
     std::string out = header(dof, strokes);
     for (const auto& s : solution.samples) out += row(s, strokes);
     return out;

@@ -295,7 +295,8 @@ std::string header(const task::Task& task, const synth::Solution& s) {
            "</span></h1>\n<p class=\"note\">" +
            (task::has_strokes(task) ? std::to_string(task::stroke_count(task)) + " strokes, "
                                     : std::string()) +
-           std::to_string(task.trajectory.size()) + " primitives, " + std::to_string(task.obstacles.size()) + " obstacles, " +
+           std::to_string(task.trajectory.size()) + " primitives, " +
+           std::to_string(task.obstacles.size()) + " obstacles, " +
            std::to_string(task.base_regions.size()) +
            " base regions. Task plane in metres, "
            "x to the right, y up.</p></header>\n";

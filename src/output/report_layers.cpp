@@ -245,8 +245,8 @@ std::string trajectory(const task::Task& task, const plot::Frame& f, const Core&
     }
     for (int k = 0; k < task::stroke_count(task); ++k) {
         const Vec2 start = f.px(task.trajectory[task::stroke_first(task, k)].start);
-        out += "<circle class=\"path-start\" cx=\"" + n2(start.x()) + "\" cy=\"" +
-               n2(start.y()) + "\" r=\"4\"><title>start of the " +
+        out += "<circle class=\"path-start\" cx=\"" + n2(start.x()) + "\" cy=\"" + n2(start.y()) +
+               "\" r=\"4\"><title>start of the " +
                (task::has_strokes(task) ? "stroke strokes[" + std::to_string(k) + "]"
                                         : std::string("path")) +
                "</title></circle>\n";
@@ -282,8 +282,8 @@ std::string travel(const synth::Solution& s, const plot::Frame& f) {
     for (std::size_t i = 0; i + 1 < s.samples.size(); ++i) {
         const auto& a = s.samples[i];
         const auto& b = s.samples[i + 1];
-        const bool free = a.phase == control::Phase::Travel ||
-                          b.phase == control::Phase::Travel || a.stroke != b.stroke;
+        const bool free = a.phase == control::Phase::Travel || b.phase == control::Phase::Travel ||
+                          a.stroke != b.stroke;
         if (!free) {
             flush();
             continue;

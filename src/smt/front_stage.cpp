@@ -276,8 +276,7 @@ struct FrontStage::Impl {
             if (partner == static_cast<int>(j)) {
                 require({pj}, 2 * R >= num(span - options.slack));
             } else {
-                require({pj, task::part_name(task, partner)},
-                        2 * R >= num(span - options.slack));
+                require({pj, task::part_name(task, partner)}, 2 * R >= num(span - options.slack));
             }
         }
     }

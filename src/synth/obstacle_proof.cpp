@@ -69,8 +69,7 @@ std::optional<ObstacleProof> by_separation(const task::Task& task) {
     for (const auto& w : proof.separation->walls) primitives.insert(w.primitive);
     const bool tube = !prove_separation(without_tube(task), keep);
     proof.core = core_of(
-        task,
-        keep, primitives,
+        task, keep, primitives,
         tube ? std::vector<std::string>{"robot.link_diameter"} : std::vector<std::string>{});
     // One sentence per distinct wall.
     std::string said;
@@ -172,8 +171,7 @@ std::optional<ObstacleProof> by_geodesic(const task::Task& task) {
             index_ranges(keep) + " from " +
             (task.base_regions.size() > 1 ? "base_regions[" + std::to_string(d.base_region) + "]"
                                           : "the base region") +
-            " to " + task::part_name(task, d.primitive) +
-            text::format(" is %.2f m", d.lower_bound);
+            " to " + task::part_name(task, d.primitive) + text::format(" is %.2f m", d.lower_bound);
     }
     said += text::format("; %d links of at most %.2f m reach %.2f m.", links,
                          task.robot.max_link_length, proof.geodesic->reach);

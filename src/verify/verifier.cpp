@@ -115,13 +115,12 @@ private:
             const Sample& a = samples_[i];
             if (a.stroke < 0 || a.stroke >= task::stroke_count(task_)) {
                 violation(Violation::Kind::Structure, -1, 0.0,
-                          "stroke " + std::to_string(a.stroke) + " of sample " +
-                              std::to_string(i) + " is not in the task");
+                          "stroke " + std::to_string(a.stroke) + " of sample " + std::to_string(i) +
+                              " is not in the task");
                 break;
             }
-            if (a.primitive < 0 ||
-                a.primitive > task::stroke_last(task_, a.stroke) -
-                                  task::stroke_first(task_, a.stroke)) {
+            if (a.primitive < 0 || a.primitive > task::stroke_last(task_, a.stroke) -
+                                                     task::stroke_first(task_, a.stroke)) {
                 violation(Violation::Kind::Structure, -1, 0.0,
                           "primitive " + std::to_string(a.primitive) + " of sample " +
                               std::to_string(i) + " is not in the task");

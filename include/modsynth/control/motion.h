@@ -109,8 +109,8 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
 
 /// Inserts a sample midway between samples i and i + 1 for each i in
 /// `pairs`: by arc length within a trace, by the first joint's angle in a
-/// transition, in joint space in a travel (which moves linearly there). Returns false when a midpoint is out of reach or the pair
-/// cannot be split.
+/// transition, in joint space in a travel (which moves linearly there). Returns false when a
+/// midpoint is out of reach or the pair cannot be split.
 bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
                    std::vector<Sample>& samples, const std::vector<int>& pairs);
 

@@ -48,7 +48,6 @@ struct TravelPlan {
 /// std::invalid_argument when the options are not valid.
 std::optional<TravelPlan> plan_travel(const task::Task& task, const kinematics::Robot& robot,
                                       const std::vector<double>& from,
-                                      const std::vector<double>& to,
-                                      const TravelOptions& options);
+                                      const std::vector<double>& to, const TravelOptions& options);
 
 }  // namespace modsynth::control

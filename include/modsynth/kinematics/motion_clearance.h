@@ -15,8 +15,7 @@ namespace modsynth::kinematics {
 /// from qa to qb: each link stays within the hull of its end poses widened
 /// by E_k / 8, E_k = sum_{i<=k} r_i (dphi_i)^2. The bound tends to the pose
 /// clearance as the segment shrinks.
-PoseClearance linear_motion_clearance(std::span<const geometry::Disc> obstacles,
-                                      const Robot& robot, std::span<const double> qa,
-                                      std::span<const double> qb);
+PoseClearance linear_motion_clearance(std::span<const geometry::Disc> obstacles, const Robot& robot,
+                                      std::span<const double> qa, std::span<const double> qb);
 
 }  // namespace modsynth::kinematics

@@ -12,7 +12,7 @@ namespace modsynth::verify {
 struct Violation {
     enum class Kind { Structure, Deviation, Clearance, SelfCollision, JointStep, Order };
     Kind kind = Kind::Structure;
-    int sample = -1;          ///< first sample of the offending pair, -1 for the robot itself
+    int sample = -1;  ///< first sample of the offending pair, -1 for the robot itself
     /// Primitive traced there (or left, in a transition or travel) as an
     /// index into task.trajectory, -1 if none.
     int primitive = -1;
