@@ -3,7 +3,10 @@
 // verification of a task of several strokes.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+
+#include <nlohmann/json.hpp>
 
 #include <modsynth/control/motion.h>
 #include <modsynth/control/travel.h>

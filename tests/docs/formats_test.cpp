@@ -71,7 +71,14 @@ double number_or_infinity(const json& j) {
 /// The task example is read, and every value it states is the value read.
 void check_task_example(const json& doc) {
     const modsynth::task::Task task = parse_task(doc);
-    REQUIRE(task.trajectory.size() == doc.at("trajectory").size());
+    if (doc.contains("strokes")) {
+        std::size_t primitives = 0;
+        for (const json& stroke : doc["strokes"]) primitives += stroke.size();
+        REQUIRE(task.trajectory.size() == primitives);
+        CHECK(task.stroke_starts.size() == doc["strokes"].size());
+    } else {
+        REQUIRE(task.trajectory.size() == doc.at("trajectory").size());
+    }
     CHECK(task.obstacles.size() == doc.value("obstacles", json::array()).size());
     CHECK(task.base_regions.size() == doc.value("base_regions", json::array()).size());
     if (doc.contains("name")) CHECK(task.name == doc["name"].get<std::string>());

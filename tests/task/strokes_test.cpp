@@ -111,7 +111,7 @@ TEST_CASE("strokes: to_json writes strokes back and round-trips", "[strokes]") {
     CHECK(back.trajectory.size() == t.trajectory.size());
     // A single stroke written with `strokes` stays `strokes`.
     json single = three_strokes();
-    single["strokes"].erase(1, 2);
+    single["strokes"] = json::array({single["strokes"][0]});
     CHECK(to_json(parse_task(single)).contains("strokes"));
 }
 
