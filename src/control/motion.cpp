@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <modsynth/control/travel.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
@@ -37,15 +39,23 @@ std::optional<std::vector<double>> arm_configuration(const kinematics::Robot& ro
     return q;
 }
 
-std::string transition_name(int j) {
-    return text::format("the transition after trajectory[%d]", j);
+std::string transition_name(const task::Task& task, int j) {
+    return "the transition after " + task::part_name(task, j);
 }
 
-std::string point_name(int j, double s) {
-    return text::format("trajectory[%d] at %.4f m from its start", j, s);
+std::string travel_name(const task::Task& task, int j) {
+    return "the travel after " + task::part_name(task, j);
+}
+
+std::string point_name(const task::Task& task, int j, double s) {
+    return task::part_name(task, j) + text::format(" at %.4f m from its start", s);
 }
 
 }  // namespace
+
+int primitive_index(const task::Task& task, const Sample& sample) {
+    return task::primitive_index(task, sample.stroke, sample.primitive);
+}
 
 bool MotionOptions::IsValid(std::string* error) const {
     return text::OptionCheck("MotionOptions", error)
@@ -83,9 +93,11 @@ namespace {
 // allow, appending a sample per step (the first one excluded).
 // On failure, *failed_at is the parameter that could not be reached.
 // Stops (returning false with *gave_up set) at the sample cap or the deadline.
+// `primitive` and `stroke` tag the samples as the document does.
 template <typename ConfigAt>
 bool walk(double from, double to, double first_step, const MotionOptions& options, Phase phase,
-          int j, std::vector<Sample>& out, double* failed_at, bool* gave_up, ConfigAt config_at) {
+          int primitive, int stroke, std::vector<Sample>& out, double* failed_at, bool* gave_up,
+          ConfigAt config_at) {
     const double max_joint_step = options.max_joint_step;
     const double dir = to >= from ? 1.0 : -1.0;
     double u = from, du = first_step;
@@ -114,7 +126,7 @@ bool walk(double from, double to, double first_step, const MotionOptions& option
             return false;
         }
         u = candidate;
-        out.push_back({0.0, phase, j, u, *next});
+        out.push_back({0.0, phase, primitive, u, *next, stroke});
     }
     return true;
 }
@@ -129,10 +141,17 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
     std::vector<Sample> out;
     double failed_at = 0.0;
     bool gave_up = false;
-    auto fail = [&](int j, bool transition, double s) -> std::optional<std::vector<Sample>> {
+    auto fail = [&](int j, bool transition, double s,
+                    bool travel = false) -> std::optional<std::vector<Sample>> {
         if (failure) {
-            *failure = {j, transition, s, gave_up,
-                        transition ? transition_name(j) : point_name(j, s)};
+            *failure = {j,
+                        transition,
+                        travel,
+                        s,
+                        gave_up,
+                        transition ? transition_name(task, j)
+                        : travel   ? travel_name(task, j)
+                                   : point_name(task, j, s)};
             if (gave_up) {
                 failure->message =
                     out.size() >= options.max_samples
@@ -142,9 +161,15 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
         }
         return std::nullopt;
     };
+    TravelOptions travel_options;
+    travel_options.max_joint_step = options.max_joint_step;
+    travel_options.deadline = options.deadline;
     const int m = static_cast<int>(task.trajectory.size());
     for (int j = 0; j < m; ++j) {
-        if (j > 0 && robot.has_proximal_link()) {
+        const int stroke = task::stroke_of(task, j);
+        const int k = task::index_in_stroke(task, j);
+        std::optional<std::vector<double>> q;
+        if (j > 0 && k > 0 && robot.has_proximal_link()) {
             // The EE holds the transition point while the first joint sweeps
             // the short way round to its angle for the next primitive.
             const double from = out.back().q[0];
@@ -152,22 +177,38 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                 from + std::remainder(robot.proximal_angles[j] - from, geometry::kTau);
             const std::size_t before = out.size();
             const bool ok =
-                walk(from, to, options.max_joint_step, options, Phase::Transition, j - 1, out,
-                     &failed_at, &gave_up, [&](double q1, const std::vector<double>* prev) {
+                walk(from, to, options.max_joint_step, options, Phase::Transition, k - 1, stroke,
+                     out, &failed_at, &gave_up, [&](double q1, const std::vector<double>* prev) {
                          return transition_configuration(task, robot, j - 1, q1, prev);
                      });
             if (!ok) return fail(j - 1, true, failed_at);
             if (out.size() > before) out.pop_back();  // the last pose is the next trace's first
+        } else if (j > 0 && k == 0) {
+            // A new stroke: travel, pen up, to the pose that starts it.
+            const auto start = configuration_at(task, robot, j, 0.0, &out.back().q);
+            if (!start) return fail(j, false, 0.0);
+            const auto plan = plan_travel(task, robot, out.back().q, *start, travel_options);
+            if (!plan) {
+                gave_up = std::chrono::steady_clock::now() >= options.deadline;
+                return fail(j - 1, false, 0.0, true);
+            }
+            const int last = task::index_in_stroke(task, j - 1);
+            for (std::size_t i = 0; i + 1 < plan->poses.size(); ++i)
+                out.push_back({0.0, Phase::Travel, last, 0.0, plan->poses[i], stroke - 1});
+            q = plan->poses.back();
         }
-        const std::vector<double>* prev = out.empty() ? nullptr : &out.back().q;
-        auto q = configuration_at(task, robot, j, 0.0, prev);
+        if (!q) {
+            const std::vector<double>* prev = out.empty() ? nullptr : &out.back().q;
+            q = configuration_at(task, robot, j, 0.0, prev);
+        }
         if (!q) return fail(j, false, 0.0);
-        out.push_back({0.0, Phase::Trace, j, 0.0, *q});
+        out.push_back({0.0, Phase::Trace, k, 0.0, *q, stroke});
         const double length = geometry::length(task.trajectory[j]);
-        const bool ok = walk(0.0, length, options.max_ee_step, options, Phase::Trace, j, out,
-                             &failed_at, &gave_up, [&](double s, const std::vector<double>* p) {
-                                 return configuration_at(task, robot, j, s, p);
-                             });
+        const bool ok =
+            walk(0.0, length, options.max_ee_step, options, Phase::Trace, k, stroke, out,
+                 &failed_at, &gave_up, [&](double s, const std::vector<double>* p) {
+                     return configuration_at(task, robot, j, s, p);
+                 });
         if (!ok) return fail(j, false, failed_at);
     }
     return out;
@@ -181,16 +222,23 @@ bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
         const Sample& a = samples[i];
         const Sample& b = samples[i + 1];
         std::optional<Sample> mid;
-        if (a.phase == Phase::Trace && b.phase == Phase::Trace && a.primitive == b.primitive) {
+        if (a.phase == Phase::Travel || b.phase == Phase::Travel || a.stroke != b.stroke) {
+            // Between strokes the arm moves linearly in joint space: the
+            // midpoint is on the motion already, and halves the pair.
+            std::vector<double> q(a.q.size());
+            for (std::size_t k = 0; k < q.size(); ++k) q[k] = 0.5 * (a.q[k] + b.q[k]);
+            mid = Sample{a.t, Phase::Travel, a.primitive, 0.0, std::move(q), a.stroke};
+        } else if (a.phase == Phase::Trace && b.phase == Phase::Trace &&
+                   a.primitive == b.primitive) {
             const double s = 0.5 * (a.s + b.s);
-            if (auto q = configuration_at(task, robot, a.primitive, s, &a.q))
-                mid = Sample{a.t, Phase::Trace, a.primitive, s, *q};
+            if (auto q = configuration_at(task, robot, primitive_index(task, a), s, &a.q))
+                mid = Sample{a.t, Phase::Trace, a.primitive, s, *q, a.stroke};
         } else if (robot.has_proximal_link() &&
                    (a.phase == Phase::Transition || b.phase == Phase::Transition)) {
-            const int j = a.phase == Phase::Transition ? a.primitive : b.primitive;
+            const Sample& t = a.phase == Phase::Transition ? a : b;
             const double q1 = 0.5 * (a.q[0] + b.q[0]);
-            if (auto q = transition_configuration(task, robot, j, q1, &a.q))
-                mid = Sample{a.t, Phase::Transition, j, q1, *q};
+            if (auto q = transition_configuration(task, robot, primitive_index(task, t), q1, &a.q))
+                mid = Sample{a.t, Phase::Transition, t.primitive, q1, *q, t.stroke};
         }
         if (!mid) return false;
         samples.insert(samples.begin() + i + 1, *mid);
@@ -207,12 +255,17 @@ void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
             a.s = a.q.empty() ? 0.0 : a.q[0];
             continue;
         }
-        const geometry::Primitive& prim = task.trajectory[a.primitive];
+        if (a.phase == Phase::Travel) {
+            a.s = 0.0;
+            continue;
+        }
+        const geometry::Primitive& prim = task.trajectory[primitive_index(task, a)];
         const double length = geometry::length(prim);
         const geometry::Vec2 ee = kinematics::forward(robot.base, robot.link_lengths, a.q).back();
         double s = geometry::nearest(prim, ee).s;
         const bool first = i == 0 || samples[i - 1].phase != Phase::Trace ||
-                           samples[i - 1].primitive != a.primitive;
+                           samples[i - 1].primitive != a.primitive ||
+                           samples[i - 1].stroke != a.stroke;
         // A circle's start is also its end: a run begins at 0.
         if (first && prim.kind == geometry::PrimitiveKind::Circle && s > length - kSnap) s = 0.0;
         if (!first && prim.kind == geometry::PrimitiveKind::Circle) {
@@ -233,10 +286,10 @@ void assign_times(std::vector<Sample>& samples, const MotionOptions& options) {
     for (std::size_t i = 1; i < samples.size(); ++i) {
         const Sample& a = samples[i - 1];
         Sample& b = samples[i];
-        const double path =
-            (a.phase == Phase::Trace && b.phase == Phase::Trace && a.primitive == b.primitive)
-                ? std::abs(b.s - a.s)
-                : 0.0;
+        const double path = (a.phase == Phase::Trace && b.phase == Phase::Trace &&
+                             a.primitive == b.primitive && a.stroke == b.stroke)
+                                ? std::abs(b.s - a.s)
+                                : 0.0;
         const double dt =
             std::max(path / options.ee_speed, largest_change(a.q, b.q) / options.joint_speed);
         b.t = std::round((a.t + dt) * options.ticks_per_second) / options.ticks_per_second;

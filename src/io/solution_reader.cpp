@@ -7,6 +7,7 @@
 
 #include <modsynth/io/input.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/printable.h>
 
 #include "json_parts.h"
@@ -220,8 +221,9 @@ control::Phase parse_phase(const json& j, const std::string& part) {
     const std::string p = text(j, part);
     if (p == "trace") return control::Phase::Trace;
     if (p == "transition") return control::Phase::Transition;
-    throw InputError(part,
-                     "expected \"trace\" or \"transition\", got \"" + text::printable(p) + "\"");
+    if (p == "travel") return control::Phase::Travel;
+    throw InputError(part, "expected \"trace\", \"transition\" or \"travel\", got \"" +
+                               text::printable(p) + "\"");
 }
 
 control::Sample parse_sample(const json& j, const std::string& part, int dof) {
@@ -232,6 +234,8 @@ control::Sample parse_sample(const json& j, const std::string& part, int dof) {
     s.primitive = integer(required(j, part, "primitive"), member(part, "primitive"), 0,
                           std::numeric_limits<int>::max());
     s.q = numbers(required(j, part, "q"), member(part, "q"), dof);
+    if (const json* k = optional(j, "stroke"))
+        s.stroke = integer(*k, member(part, "stroke"), 0, std::numeric_limits<int>::max());
     return s;
 }
 
@@ -326,11 +330,22 @@ void check_solution_fits(const task::Task& task, const synth::Solution& solution
         throw InputError("task", "the solution is for task \"" + solution.task_name + "\", not \"" +
                                      task.name + "\"");
     }
-    const int primitives = static_cast<int>(task.trajectory.size());
+    const int strokes = task::stroke_count(task);
     for (std::size_t i = 0; i < solution.samples.size(); ++i) {
-        if (solution.samples[i].primitive >= primitives) {
-            throw InputError(member(element("samples", i), "primitive"),
-                             "the task has only " + std::to_string(primitives) + " primitives");
+        const control::Sample& x = solution.samples[i];
+        if (x.stroke >= strokes) {
+            throw InputError(member(element("samples", i), "stroke"),
+                             "the task has only " + std::to_string(strokes) +
+                                 (strokes == 1 ? " stroke" : " strokes"));
+        }
+        const int primitives =
+            task::stroke_last(task, x.stroke) - task::stroke_first(task, x.stroke) + 1;
+        if (x.primitive >= primitives) {
+            throw InputError(
+                member(element("samples", i), "primitive"),
+                (task::has_strokes(task) ? "strokes[" + std::to_string(x.stroke) + "] has only "
+                                         : std::string("the task has only ")) +
+                    std::to_string(primitives) + " primitives");
         }
     }
 }

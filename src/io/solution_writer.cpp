@@ -1,5 +1,7 @@
 #include <modsynth/io/solution_io.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include <modsynth/io/atomic_file.h>
@@ -89,12 +91,17 @@ nlohmann::json to_json(const synth::Solution& s) {
                     {"link_lengths", r.link_lengths},
                     {"link_diameter", r.link_diameter},
                     {"elbow", r.elbow}};
+    // `stroke` only when the motion has several (formats.md "Several
+    // strokes": default 0), so one-stroke solutions read as the base format.
+    const bool strokes = std::any_of(s.samples.begin(), s.samples.end(),
+                                     [](const control::Sample& x) { return x.stroke != 0; });
     nlohmann::json samples = nlohmann::json::array();
     for (const auto& x : s.samples) {
-        samples.push_back({{"t", x.t},
-                           {"phase", x.phase == control::Phase::Trace ? "trace" : "transition"},
-                           {"primitive", x.primitive},
-                           {"q", x.q}});
+        const char* phase = x.phase == control::Phase::Trace        ? "trace"
+                            : x.phase == control::Phase::Transition ? "transition"
+                                                                    : "travel";
+        samples.push_back({{"t", x.t}, {"phase", phase}, {"primitive", x.primitive}, {"q", x.q}});
+        if (strokes) samples.back()["stroke"] = x.stroke;
     }
     doc["samples"] = std::move(samples);
     const auto& c = s.certificate;

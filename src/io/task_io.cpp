@@ -17,6 +17,7 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/io/input.h>
 #include <modsynth/task/limits.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
@@ -268,30 +269,79 @@ Primitive parse_primitive(const json& prim, const std::string& part) {
     throw InputError(tp, "unknown primitive type \"" + text::printable(type) + "\"; " + why);
 }
 
-void require_connected(const Primitive& prev, const Primitive& next, std::size_t j) {
+void require_connected(const Primitive& prev, const Primitive& next, const std::string& prev_part,
+                       const std::string& part) {
     const double gap = (next.start - prev.end).norm();
     if (gap > kJoinTolerance) {
-        throw InputError(element("trajectory", j), "starts " + metres(gap) + " m from the end of " +
-                                                       element("trajectory", j - 1) +
-                                                       " (it ends at " + point_text(prev.end) +
-                                                       "); consecutive primitives must connect");
+        throw InputError(part, "starts " + metres(gap) + " m from the end of " + prev_part +
+                                   " (it ends at " + point_text(prev.end) +
+                                   "); consecutive primitives must connect");
     }
 }
 
-std::vector<Primitive> parse_trajectory(const json& doc) {
+/// One list of connected primitives, `part` naming the list; appended to
+/// `out` (whose primitives before `first` belong to earlier strokes).
+void parse_primitives(const json& list, const std::string& part, std::vector<Primitive>& out) {
+    const std::size_t first = out.size();
+    for (std::size_t j = 0; j < list.size(); ++j) {
+        out.push_back(parse_primitive(list[j], element(part, j)));
+        if (j > 0)
+            require_connected(out[first + j - 1], out[first + j], element(part, j - 1),
+                              element(part, j));
+    }
+}
+
+std::vector<Primitive> parse_trajectory(const json& list) {
     const std::string part = "trajectory";
-    const json& list =
-        required(doc, "", "trajectory", "a task needs a list of primitives to follow");
     require_array(list, part, "primitives");
     if (list.empty()) throw InputError(part, "is empty; a task needs at least one primitive");
     require_count_cap(list, part, "primitives", kMaxPrimitives);
     std::vector<Primitive> out;
     out.reserve(list.size());
-    for (std::size_t j = 0; j < list.size(); ++j) {
-        out.push_back(parse_primitive(list[j], element(part, j)));
-        if (j > 0) require_connected(out[j - 1], out[j], j);
-    }
+    parse_primitives(list, part, out);
     return out;
+}
+
+/// formats.md "Several strokes": each stroke connected in itself, the
+/// strokes one after another in task.trajectory.
+void parse_strokes(const json& list, Task& task) {
+    const std::string part = "strokes";
+    require_array(list, part, "strokes (each a list of primitives)");
+    if (list.empty()) throw InputError(part, "is empty; a task needs at least one stroke");
+    std::size_t total = 0;
+    for (std::size_t s = 0; s < list.size(); ++s) {
+        const std::string sp = element(part, s);
+        require_array(list[s], sp, "primitives");
+        if (list[s].empty())
+            throw InputError(sp, "is empty; every stroke needs at least one primitive");
+        total += list[s].size();
+    }
+    if (total > kMaxPrimitives) {
+        throw InputError(part, std::to_string(total) + " primitives, more than the " +
+                                   std::to_string(kMaxPrimitives) + " allowed");
+    }
+    task.trajectory.reserve(total);
+    for (std::size_t s = 0; s < list.size(); ++s) {
+        task.stroke_starts.push_back(static_cast<int>(task.trajectory.size()));
+        parse_primitives(list[s], element(part, s), task.trajectory);
+    }
+}
+
+/// Exactly one of `trajectory` and `strokes`.
+void parse_path(const json& doc, Task& task) {
+    const json* trajectory = optional(doc, "trajectory");
+    const json* strokes = optional(doc, "strokes");
+    if (trajectory && strokes) {
+        throw InputError(
+            "strokes", "a task holds either \"trajectory\" (one stroke) or \"strokes\", not both");
+    }
+    if (strokes) {
+        parse_strokes(*strokes, task);
+        return;
+    }
+    task.trajectory = parse_trajectory(required(
+        doc, "", "trajectory",
+        "a task needs a list of primitives to follow (or \"strokes\", a list of such lists)"));
 }
 
 // -------------------------------------------------------------- the others
@@ -478,8 +528,8 @@ void check_clearance(const Task& task) {
             const double d = geometry::point_primitive(o.center, task.trajectory[j]);
             if (d <= o.radius) {
                 throw InputError(element("obstacles", i),
-                                 "touches " + element("trajectory", j) + " (the path runs " +
-                                     metres(o.radius - d) +
+                                 "touches " + task::part_name(task, static_cast<int>(j)) +
+                                     " (the path runs " + metres(o.radius - d) +
                                      " m inside it); the path must stay outside every obstacle");
             }
         }
@@ -522,7 +572,7 @@ Task parse_task(const json& doc) {
     check_format(doc);
     Task task;
     task.name = parse_name(doc);
-    task.trajectory = parse_trajectory(doc);
+    parse_path(doc, task);
     task.obstacles =
         parse_list<Obstacle>(doc, "obstacles", "obstacles", kMaxObstacles, parse_obstacle);
     task.base_regions = parse_list<BaseRegion>(doc, "base_regions", "base regions", kMaxBaseRegions,
@@ -567,7 +617,15 @@ void add_loads_json(const RobotSpec& r, json& robot) {
 
 json to_json(const Task& task) {
     json trajectory = json::array();
-    for (const Primitive& p : task.trajectory) trajectory.push_back(primitive_json(p));
+    json strokes = json::array();
+    for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
+        if (!task::has_strokes(task)) {
+            trajectory.push_back(primitive_json(task.trajectory[j]));
+            continue;
+        }
+        if (task::index_in_stroke(task, j) == 0) strokes.push_back(json::array());
+        strokes.back().push_back(primitive_json(task.trajectory[j]));
+    }
     json obstacles = json::array();
     for (const Obstacle& o : task.obstacles) {
         obstacles.push_back({{"center", point_json(o.center)}, {"radius", o.radius}});
@@ -578,7 +636,6 @@ json to_json(const Task& task) {
     }
     json doc = {{"format", kFormat},
                 {"name", task.name},
-                {"trajectory", trajectory},
                 {"obstacles", obstacles},
                 {"base_regions", regions},
                 {"robot",
@@ -592,6 +649,11 @@ json to_json(const Task& task) {
                   {"adapter_length", task.robot.adapter_length},
                   {"ee_rod_diameter", task.robot.ee_rod_diameter}}}};
     add_loads_json(task.robot, doc["robot"]);
+    if (task::has_strokes(task)) {
+        doc["strokes"] = std::move(strokes);
+    } else {
+        doc["trajectory"] = std::move(trajectory);
+    }
     return doc;
 }
 

@@ -9,6 +9,7 @@
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/nlp/bilinear.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 
 namespace modsynth::nlp {
@@ -52,7 +53,8 @@ public:
         if (kinematics::has_proximal_link(f_.dof)) add_proximal_poses();
         for (const PathPoint& pt : p_.points) add_trace_point(pt);
         if (kinematics::has_proximal_link(f_.dof)) {
-            for (int j = 0; j + 1 < static_cast<int>(t_.trajectory.size()); ++j) add_transition(j);
+            for (int j = 0; j + 1 < static_cast<int>(t_.trajectory.size()); ++j)
+                if (task::has_transition_after(t_, j)) add_transition(j);
         }
         if (p_.swept == SweptVolume::Over && !kinematics::has_proximal_link(f_.dof))
             add_swept_over();
@@ -123,18 +125,18 @@ private:
     void add_trace_point(const PathPoint& pt) {
         const Vec2 p = geometry::point_at(t_.trajectory[pt.primitive], pt.s);
         distal_pair(origin(pt.primitive), p,
-                    part("trajectory", pt.primitive) + text::format(" at %.6f m", pt.s));
+                    task::part_name(t_, pt.primitive) + text::format(" at %.6f m", pt.s));
     }
 
     void add_proximal_poses() {
         for (int j = 0; j < static_cast<int>(t_.trajectory.size()); ++j) {
             const double angle = p_.start.proximal_angles.at(j);
             proximal_.push_back(
-                new_point("proximal " + part("trajectory", j), p_.start.distal_origin(angle)));
+                new_point("proximal " + task::part_name(t_, j), p_.start.distal_origin(angle)));
             f_.proximal.push_back(
                 {proximal_.back().x.terms[0].first, proximal_.back().y.terms[0].first});
-            link(base_, proximal_.back(), f_.r[0], "proximal " + part("trajectory", j));
-            keep_links_from_obstacles(base_, proximal_.back(), 1, part("trajectory", j));
+            link(base_, proximal_.back(), f_.r[0], "proximal " + task::part_name(t_, j));
+            keep_links_from_obstacles(base_, proximal_.back(), 1, task::part_name(t_, j));
         }
     }
 
@@ -155,8 +157,8 @@ private:
         if (depth <= 0) return;
         const double mid = 0.5 * (angle_a + angle_c);
         const Vec2 t0 = p_.start.distal_origin(mid);
-        const std::string where =
-            "transition after " + part("trajectory", j) + text::format(", link 1 at %.6f rad", mid);
+        const std::string where = "transition after " + task::part_name(t_, j) +
+                                  text::format(", link 1 at %.6f rad", mid);
         const Point t = new_point("proximal " + where, t0);
         const Affine sum = (a.x - base_.x) + (c.x - base_.x);
         const Affine sum_y = (a.y - base_.y) + (c.y - base_.y);
@@ -185,7 +187,7 @@ private:
             for (int o = 0; o < static_cast<int>(t_.obstacles.size()); ++o) {
                 const task::Obstacle& ob = t_.obstacles[o];
                 const double need = need_for(ob);
-                const std::string tag = part("obstacles", o) + " on " + part("trajectory", j);
+                const std::string tag = part("obstacles", o) + " on " + task::part_name(t_, j);
                 const Vec2 mid = geometry::point_at(prim, geometry::length(prim) / 2);
                 const Vec2 n0 = away_from(ob.center, p_.start.base, mid);
                 const int nx = qp_.add_variable(-1.0, 1.0, n0.x(), "sv normal.x " + tag);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <modsynth/output/recertify.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 
 #include "plot.h"
@@ -138,9 +139,8 @@ int index_in(const std::string& part, const std::string& name) {
 }
 
 std::string describe_part(const task::Task& task, const std::string& part) {
-    const int j = index_in(part, "trajectory");
-    if (j >= 0 && j < static_cast<int>(task.trajectory.size())) {
-        const auto& p = task.trajectory[j];
+    if (const auto j = task::primitive_of_part(task, part)) {
+        const auto& p = task.trajectory[*j];
         return std::string(kind_name(p.kind)) + " of " +
                text::format("%.3f m", geometry::length(p)) + " from " + point_text(p.start);
     }
@@ -226,7 +226,7 @@ std::string legend(const task::Task& task, const layers::Core& core) {
     std::string out = "<h2>Trajectory</h2>\n<ul class=\"legend\" id=\"legend\">\n";
     for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
         const auto& p = task.trajectory[j];
-        const std::string part = "trajectory[" + std::to_string(j) + "]";
+        const std::string part = task::part_name(task, static_cast<int>(j));
         out += "<li><span class=\"swatch\" style=\"background:" +
                plot::primitive_colour(static_cast<int>(j)) + "\"></span><code>" + part +
                "</code> " + kind_name(p.kind) + ", " + text::format("%.3f m", geometry::length(p)) +
@@ -246,7 +246,7 @@ std::string svg(const task::Task& task, const synth::Solution& s, const Frame& f
                       plot::n2(f.height()) + "\" role=\"img\">\n";
     if (solved) {
         out += layers::reachable(task, s, f, reach_caption);
-        out += layers::swept(s, f);
+        out += layers::swept(task, s, f);
     }
     if (!solved) out += layers::reach_limit(task, f, core);
     out += layers::base_regions(task, f, core);
@@ -255,7 +255,8 @@ std::string svg(const task::Task& task, const synth::Solution& s, const Frame& f
     if (!solved) out += layers::proof(task, s, f);
     out += layers::trajectory(task, f, core);
     if (solved) {
-        out += layers::poses(s, f);
+        if (task::has_strokes(task)) out += layers::travel(s, f);
+        out += layers::poses(task, s, f);
         out += layers::robot(s, f);
     }
     if (comparison) out += comparison::layer(*comparison, f);
@@ -285,7 +286,7 @@ std::string controls(bool comparison) {
 }
 
 /// The motion for the script: numbers only, so it can sit in a script element.
-std::string motion_data(const synth::Solution& s, const Frame& f) {
+std::string motion_data(const task::Task& task, const synth::Solution& s, const Frame& f) {
     const auto list = [](const auto& values, const char* format) {
         std::string out = "[";
         for (std::size_t i = 0; i < values.size(); ++i)
@@ -296,8 +297,19 @@ std::string motion_data(const synth::Solution& s, const Frame& f) {
     for (const auto& x : s.samples) {
         t.push_back(x.t);
         q.insert(q.end(), x.q.begin(), x.q.end());
-        ph.push_back(x.phase == control::Phase::Transition ? 1.0 : 0.0);
-        pr.push_back(x.primitive);
+        ph.push_back(x.phase == control::Phase::Transition ? 1.0
+                     : x.phase == control::Phase::Travel   ? 2.0
+                                                           : 0.0);
+        pr.push_back(control::primitive_index(task, x));
+    }
+    // The parts' names, for the readout, only where they are not
+    // "trajectory[j]" (the script's default).
+    std::string names;
+    if (task::has_strokes(task)) {
+        names = ",\"nm\":[";
+        for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j)
+            names += (j ? ",\"" : "\"") + task::part_name(task, j) + "\"";
+        names += "]";
     }
     return "<script type=\"application/json\" id=\"motion-data\">{\"base\":[" +
            text::format("%.9g", s.robot.base.x()) + "," + text::format("%.9g", s.robot.base.y()) +
@@ -306,7 +318,7 @@ std::string motion_data(const synth::Solution& s, const Frame& f) {
            ",\"y1\":" + text::format("%.9g", f.max.y()) +
            ",\"s\":" + text::format("%.9g", f.scale) + ",\"p\":" + text::format("%.9g", f.pad) +
            "},\"t\":" + list(t, "%.6f") + ",\"q\":" + list(q, "%.6f") +
-           ",\"ph\":" + list(ph, "%.0f") + ",\"pr\":" + list(pr, "%.0f") + "}</script>\n";
+           ",\"ph\":" + list(ph, "%.0f") + ",\"pr\":" + list(pr, "%.0f") + names + "}</script>\n";
 }
 
 std::string header(const task::Task& task, const synth::Solution& s) {
@@ -318,8 +330,11 @@ std::string header(const task::Task& task, const synth::Solution& s) {
            "</style>\n</head>\n<body>\n"
            "<header><h1>" +
            escape(name) + " <span class=\"status " + status + "\">" + status +
-           "</span></h1>\n<p class=\"note\">" + std::to_string(task.trajectory.size()) +
-           " primitives, " + std::to_string(task.obstacles.size()) + " obstacles, " +
+           "</span></h1>\n<p class=\"note\">" +
+           (task::has_strokes(task) ? std::to_string(task::stroke_count(task)) + " strokes, "
+                                    : std::string()) +
+           std::to_string(task.trajectory.size()) + " primitives, " +
+           std::to_string(task.obstacles.size()) + " obstacles, " +
            std::to_string(task.base_regions.size()) +
            " base regions. Task plane in metres, "
            "x to the right, y up.</p></header>\n";
@@ -349,7 +364,7 @@ std::string html_report(const task::Task& task, const synth::Solution& solution,
     }
     out += "</aside>\n</main>\n";
     if (solved) {
-        out += motion_data(solution, frame);
+        out += motion_data(task, solution, frame);
         out += std::string("<script>") + assets::kScript + "</script>\n";
     }
     return out + "</body>\n</html>\n";

@@ -34,6 +34,7 @@ li.core-part { margin: 2px 0; }
 .obstacle-margin { fill: none; stroke: #a32020; stroke-dasharray: 2 3; }
 .primitive { fill: none; stroke-width: 2.5; stroke-linecap: round; }
 .primitive.active { stroke-width: 5; }
+.travel { fill: none; stroke: #555; stroke-width: 1.5; stroke-dasharray: 6 4; }
 .path-start { fill: #fff; stroke: #000; }
 .core { stroke: #d00 !important; stroke-width: 6 !important; stroke-dasharray: none !important; }
 .wall-disc { fill: #d00; fill-opacity: 0.10; stroke: #d00; stroke-width: 1; }
@@ -137,8 +138,8 @@ const char* const kScript = R"JS(
     showPrimitive(D.pr[at.i]);
     scrub.value = time;
     clock.textContent = (time - T0).toFixed(2) + " / " + (T1 - T0).toFixed(2) + " s";
-    readout.textContent = (D.ph[at.i] ? "transition after" : "tracing") + " trajectory[" +
-      D.pr[at.i] + "]   q = [" + qs.map(function (v) { return v.toFixed(3); }).join(", ") + "] rad";
+    readout.textContent = ["tracing", "transition after", "travel after"][D.ph[at.i]] + " " +
+      (D.nm ? D.nm[D.pr[at.i]] : "trajectory[" + D.pr[at.i] + "]") + "   q = [" + qs.map(function (v) { return v.toFixed(3); }).join(", ") + "] rad";
   }
 
   function frame(now) {

@@ -8,6 +8,7 @@
 #include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/kinematics/reachable_space.h>
+#include <modsynth/task/strokes.h>
 
 namespace modsynth::output::layers {
 namespace {
@@ -42,10 +43,14 @@ std::string length_label(double bound, double reach) {
     return buf;
 }
 
-int primitive_count(const synth::Solution& s) {
-    int n = 0;
-    for (const auto& x : s.samples) n = std::max(n, x.primitive + 1);
-    return n;
+int primitive_count(const task::Task& task) { return static_cast<int>(task.trajectory.size()); }
+
+/// A sample's primitive as an index into task.trajectory, -1 when the
+/// sample names none of the task's.
+int global_primitive(const task::Task& task, const control::Sample& x) {
+    if (x.stroke < 0 || x.stroke >= task::stroke_count(task) || x.primitive < 0) return -1;
+    const int j = control::primitive_index(task, x);
+    return j <= task::stroke_last(task, x.stroke) ? j : -1;
 }
 
 std::string part_attributes(const Core& core, const std::string& part, const char* cls) {
@@ -77,14 +82,12 @@ std::string grid_path(const ReachGrid& g, const plot::Frame& f) {
 
 /// The first sample of each primitive's trace: where link 1 of a 3-joint
 /// arm stands while the primitive is traced, and the pose drawn for it.
-std::vector<int> primitive_starts(const synth::Solution& s, int primitives) {
-    std::vector<int> first(static_cast<std::size_t>(primitives), -1);
+std::vector<int> primitive_starts(const task::Task& task, const synth::Solution& s) {
+    std::vector<int> first(static_cast<std::size_t>(primitive_count(task)), -1);
     for (int i = 0; i < static_cast<int>(s.samples.size()); ++i) {
         const auto& x = s.samples[i];
-        if (x.phase == control::Phase::Trace && x.primitive < primitives &&
-            first[x.primitive] < 0) {
-            first[x.primitive] = i;
-        }
+        const int j = global_primitive(task, x);
+        if (x.phase == control::Phase::Trace && j >= 0 && first[j] < 0) first[j] = i;
     }
     return first;
 }
@@ -220,7 +223,7 @@ std::string reachable(const task::Task& task, const synth::Solution& s, const pl
             "links clear of every obstacle and the end-effector clear of link 1.";
         return out + "</g>\n";
     }
-    const auto starts = primitive_starts(s, static_cast<int>(task.trajectory.size()));
+    const auto starts = primitive_starts(task, s);
     for (int j = 0; j < static_cast<int>(starts.size()); ++j) {
         if (starts[j] < 0) continue;
         out += reach_path(distal_pair(s.robot, s.samples[starts[j]].q), task, s, f,
@@ -234,13 +237,14 @@ std::string reachable(const task::Task& task, const synth::Solution& s, const pl
     return out + "</g>\n";
 }
 
-std::string swept(const synth::Solution& s, const plot::Frame& f) {
-    const int primitives = primitive_count(s);
+std::string swept(const task::Task& task, const synth::Solution& s, const plot::Frame& f) {
+    const int primitives = primitive_count(task);
     std::vector<std::vector<int>> trace(primitives), transition(primitives);
     for (int i = 0; i < static_cast<int>(s.samples.size()); ++i) {
         const auto& x = s.samples[i];
-        if (x.primitive >= primitives) continue;
-        (x.phase == control::Phase::Trace ? trace : transition)[x.primitive].push_back(i);
+        const int j = global_primitive(task, x);
+        if (j < 0 || x.phase == control::Phase::Travel) continue;
+        (x.phase == control::Phase::Trace ? trace : transition)[j].push_back(i);
     }
     std::string out = "<g id=\"swept\">\n";
     for (int j = 0; j < primitives; ++j) {
@@ -285,22 +289,27 @@ std::string trajectory(const task::Task& task, const plot::Frame& f, const Core&
     std::string out = "<g id=\"trajectory\">\n";
     for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
         const auto& p = task.trajectory[j];
-        const std::string part = "trajectory[" + std::to_string(j) + "]";
+        const std::string part = task::part_name(task, static_cast<int>(j));
         const std::string colour = plot::primitive_colour(static_cast<int>(j));
         out += "<path" + part_attributes(core, part, "primitive") + " data-primitive=\"" +
                std::to_string(j) + "\" stroke=\"" + colour + "\" d=\"" +
                plot::path_data(f, plot::polyline(p, f), false) + "\"><title>" + part +
                "</title></path>" + arrow(p, f, colour) + "\n";
     }
-    const Vec2 start = f.px(task.trajectory.front().start);
-    out += "<circle class=\"path-start\" cx=\"" + n2(start.x()) + "\" cy=\"" + n2(start.y()) +
-           "\" r=\"4\"><title>start of the path</title></circle>\n";
+    for (int k = 0; k < task::stroke_count(task); ++k) {
+        const Vec2 start = f.px(task.trajectory[task::stroke_first(task, k)].start);
+        out += "<circle class=\"path-start\" cx=\"" + n2(start.x()) + "\" cy=\"" + n2(start.y()) +
+               "\" r=\"4\"><title>start of the " +
+               (task::has_strokes(task) ? "stroke strokes[" + std::to_string(k) + "]"
+                                        : std::string("path")) +
+               "</title></circle>\n";
+    }
     return out + "</g>\n";
 }
 
-std::string poses(const synth::Solution& s, const plot::Frame& f) {
-    const int primitives = primitive_count(s);
-    const auto starts = primitive_starts(s, primitives);
+std::string poses(const task::Task& task, const synth::Solution& s, const plot::Frame& f) {
+    const int primitives = primitive_count(task);
+    const auto starts = primitive_starts(task, s);
     std::string out = "<g id=\"poses\">\n";
     for (int j = 0; j < primitives; ++j) {
         if (starts[j] < 0) continue;
@@ -308,9 +317,35 @@ std::string poses(const synth::Solution& s, const plot::Frame& f) {
             kinematics::forward(s.robot.base, s.robot.link_lengths, s.samples[starts[j]].q);
         out += "<polyline class=\"pose\" data-primitive=\"" + std::to_string(j) + "\" points=\"" +
                arm_points(f, joints) + "\" stroke-width=\"" + n2(s.robot.link_diameter * f.scale) +
-               "\"><title>the arm at the start of trajectory[" + std::to_string(j) +
-               "]</title></polyline>\n";
+               "\"><title>the arm at the start of " + task::part_name(task, j) +
+               "</title></polyline>\n";
     }
+    return out + "</g>\n";
+}
+
+std::string travel(const synth::Solution& s, const plot::Frame& f) {
+    std::string out = "<g id=\"travel\">\n";
+    std::vector<Vec2> run;
+    auto flush = [&] {
+        if (run.size() >= 2)
+            out += "<path class=\"travel\" d=\"" + plot::path_data(f, run, false) +
+                   "\"><title>travel between strokes</title></path>\n";
+        run.clear();
+    };
+    for (std::size_t i = 0; i + 1 < s.samples.size(); ++i) {
+        const auto& a = s.samples[i];
+        const auto& b = s.samples[i + 1];
+        const bool free = a.phase == control::Phase::Travel || b.phase == control::Phase::Travel ||
+                          a.stroke != b.stroke;
+        if (!free) {
+            flush();
+            continue;
+        }
+        if (run.empty())
+            run.push_back(kinematics::forward(s.robot.base, s.robot.link_lengths, a.q).back());
+        run.push_back(kinematics::forward(s.robot.base, s.robot.link_lengths, b.q).back());
+    }
+    flush();
     return out + "</g>\n";
 }
 

@@ -20,14 +20,16 @@ bool in_core(const Core& core, const std::string& part);
 std::string reachable(const task::Task& task, const synth::Solution& s, const plot::Frame& f,
                       std::string* caption);
 /// The region each primitive's motion sweeps (and each transition's).
-std::string swept(const synth::Solution& s, const plot::Frame& f);
+std::string swept(const task::Task& task, const synth::Solution& s, const plot::Frame& f);
+/// Dashed, the end-effector's way between strokes (the travel moves).
+std::string travel(const synth::Solution& s, const plot::Frame& f);
 std::string base_regions(const task::Task& task, const plot::Frame& f, const Core& core);
 /// Each obstacle, and dashed the limit a link's axis must keep out of.
 std::string obstacles(const task::Task& task, const plot::Frame& f, double diameter,
                       const Core& core);
 std::string trajectory(const task::Task& task, const plot::Frame& f, const Core& core);
 /// The arm at the start of each primitive.
-std::string poses(const synth::Solution& s, const plot::Frame& f);
+std::string poses(const task::Task& task, const synth::Solution& s, const plot::Frame& f);
 /// The animated arm, drawn at the start pose, and the end-effector's trail.
 std::string robot(const synth::Solution& s, const plot::Frame& f);
 /// When the core names robot.max_link_length: the farthest any allowed arm

@@ -13,6 +13,7 @@
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/clearance_rule.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
@@ -191,7 +192,7 @@ struct FrontStage::Impl {
             // The last link ends on the path.
             for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
                 if (geometry::point_primitive(ob.center, task.trajectory[j]) < need)
-                    require({"trajectory[" + std::to_string(j) + "]", name, diam},
+                    require({task::part_name(task, static_cast<int>(j)), name, diam},
                             ctx.bool_val(false));
             }
         }
@@ -224,8 +225,8 @@ struct FrontStage::Impl {
                 double span = 0.0;
                 for (const auto& a : pts[j])
                     for (const auto& b : pts[k]) span = std::max(span, (a - b).norm());
-                const std::string pj = "trajectory[" + std::to_string(j) + "]";
-                const std::string pk = "trajectory[" + std::to_string(k) + "]";
+                const std::string pj = task::part_name(task, j);
+                const std::string pk = task::part_name(task, k);
                 if (j == k) {
                     require({pj}, 2 * R >= num(span - options.slack));
                 } else {
@@ -271,19 +272,18 @@ struct FrontStage::Impl {
                 for (const auto& a : pts[j])
                     if ((a - hull[h]).norm() > span)
                         span = (a - hull[h]).norm(), partner = owner[h];
-            const std::string pj = "trajectory[" + std::to_string(j) + "]";
+            const std::string pj = task::part_name(task, static_cast<int>(j));
             if (partner == static_cast<int>(j)) {
                 require({pj}, 2 * R >= num(span - options.slack));
             } else {
-                require({pj, "trajectory[" + std::to_string(partner) + "]"},
-                        2 * R >= num(span - options.slack));
+                require({pj, task::part_name(task, partner)}, 2 * R >= num(span - options.slack));
             }
         }
     }
 
     void encode_primitive(int j, const z3::expr& R) {
         const geometry::Primitive& p = task.trajectory[j];
-        const std::string name = "trajectory[" + std::to_string(j) + "]";
+        const std::string name = task::part_name(task, j);
         const std::string diam = "robot.link_diameter";
         const kinematics::ClearanceRule rule{task.robot.link_diameter};
         const double d2 = rule.self_distance() * rule.self_distance() - options.slack;

@@ -13,6 +13,7 @@
 #include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/synth/wall_changes.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
@@ -39,6 +40,14 @@ std::vector<std::string> with_prefix(const std::vector<std::string>& v, const st
     std::vector<std::string> out;
     for (const auto& s : v)
         if (s.rfind(prefix, 0) == 0) out.push_back(s);
+    return out;
+}
+
+/// The parts that name primitives ("trajectory[j]" or "strokes[s][k]").
+std::vector<std::string> primitive_parts(const std::vector<std::string>& v) {
+    std::vector<std::string> out;
+    for (const auto& s : v)
+        if (task::names_primitive(s)) out.push_back(s);
     return out;
 }
 
@@ -187,7 +196,7 @@ std::string unproved_message(const InfeasibilityProof& proof, const Solution& s)
 }
 
 std::string describe_conflict(const task::Task& task, const std::vector<std::string>& core) {
-    const auto traj = with_prefix(core, "trajectory[");
+    const auto traj = primitive_parts(core);
     const auto obst = with_prefix(core, "obstacles[");
     const bool base = has(core, "base_regions");
     const bool longest = has(core, "robot.max_link_length");
@@ -222,8 +231,8 @@ std::string describe_conflict(const task::Task& task, const std::vector<std::str
 }
 
 std::string describe_part(const task::Task& task, const std::string& part) {
-    if (part.rfind("trajectory[", 0) == 0) {
-        const auto& p = task.trajectory.at(index_of(part));
+    if (const auto j = task::primitive_of_part(task, part)) {
+        const auto& p = task.trajectory.at(*j);
         switch (p.kind) {
             case geometry::PrimitiveKind::Line:
                 return part + text::format(": a line from (%.3f, %.3f)", p.start.x(), p.start.y()) +
@@ -298,6 +307,7 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
         }
     }
     const auto traj = with_prefix(core, "trajectory[");
+    const auto traj = primitive_parts(core);
     for (const std::string& part : core) {
         if (Clock::now() >= deadline) break;
         if (walled && (part == "base_regions" || part.rfind("obstacles[", 0) == 0)) continue;
@@ -391,10 +401,10 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
             } else {
                 offer(part, "without " + part, t);
             }
-        } else if (part.rfind("trajectory[", 0) == 0 && !task.base_regions.empty()) {
+        } else if (task::primitive_of_part(task, part) && !task.base_regions.empty()) {
             // Bring the whole path (so it stays connected) towards the base
             // region nearest to this primitive.
-            const int j = index_of(part);
+            const int j = *task::primitive_of_part(task, part);
             const geometry::Primitive& prim = task.trajectory[j];
             const Vec2 mid = geometry::point_at(prim, geometry::length(prim) / 2);
             Vec2 target = 0.5 * (task.base_regions[0].min + task.base_regions[0].max);

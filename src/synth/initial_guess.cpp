@@ -9,6 +9,7 @@
 #include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/option_check.h>
 
 namespace modsynth::synth {
@@ -112,7 +113,10 @@ double choose_proximal_angles(const task::Task& task, kinematics::Robot& robot,
             for (int ka = 0; ka < angles; ++ka) {
                 const double bound = std::min(best[j - 1][ka], trace[j][kb]);
                 if (bound <= best[j][kb]) continue;
-                const double v = std::min(bound, sweep(j - 1, ka, kb));
+                // Between strokes the arm travels freely: no sweep to score.
+                const double v = task::has_transition_after(task, j - 1)
+                                     ? std::min(bound, sweep(j - 1, ka, kb))
+                                     : bound;
                 if (v > best[j][kb]) best[j][kb] = v, from[j][kb] = ka;
             }
         }

@@ -1,5 +1,6 @@
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/synth/no_go.h>
+#include <modsynth/task/strokes.h>
 
 namespace modsynth::synth {
 
@@ -28,7 +29,7 @@ std::vector<PathPoint> path_points(const task::Task& task) {
         const auto& p = task.trajectory[j];
         out.push_back({j, p.start});
         out.push_back({j, geometry::point_at(p, geometry::length(p) / 2)});
-        if (j + 1 == static_cast<int>(task.trajectory.size())) out.push_back({j, p.end});
+        if (task::ends_stroke(task, j)) out.push_back({j, p.end});
     }
     if (out.size() <= kMaxPathPoints) return out;
     std::vector<PathPoint> spread;

@@ -4,6 +4,7 @@
 #include <modsynth/synth/no_go.h>
 #include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/synth/separation.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 
 #include <algorithm>
@@ -29,10 +30,11 @@ std::vector<int> minimise(std::vector<int> keep, Holds holds) {
     return keep;
 }
 
-std::vector<std::string> core_of(const std::vector<int>& obstacles, const std::set<int>& primitives,
+std::vector<std::string> core_of(const task::Task& task, const std::vector<int>& obstacles,
+                                 const std::set<int>& primitives,
                                  const std::vector<std::string>& robot_parts) {
     std::vector<std::string> core;
-    for (int j : primitives) core.push_back("trajectory[" + std::to_string(j) + "]");
+    for (int j : primitives) core.push_back(task::part_name(task, j));
     for (int i : obstacles) core.push_back("obstacles[" + std::to_string(i) + "]");
     core.push_back("base_regions");
     for (const auto& p : robot_parts) core.push_back(p);
@@ -67,7 +69,7 @@ std::optional<ObstacleProof> by_separation(const task::Task& task) {
     for (const auto& w : proof.separation->walls) primitives.insert(w.primitive);
     const bool tube = !prove_separation(without_tube(task), keep);
     proof.core = core_of(
-        keep, primitives,
+        task, keep, primitives,
         tube ? std::vector<std::string>{"robot.link_diameter"} : std::vector<std::string>{});
     // One sentence per distinct wall.
     std::string said;
@@ -89,7 +91,7 @@ std::optional<ObstacleProof> by_separation(const task::Task& task) {
         const std::string where =
             every ? (task.base_regions.size() > 1 ? "every base region" : "the base region")
                   : part_list(regions, "base_regions");
-        const std::string path = "trajectory[" + std::to_string(w.primitive) + "]";
+        const std::string path = task::part_name(task, w.primitive);
         said += (said.empty() ? "" : "; ") + std::string("obstacles ") + index_ranges(w.cycle) +
                 " form a closed wall around " +
                 (around_path
@@ -160,7 +162,7 @@ std::optional<ObstacleProof> by_geodesic(const task::Task& task) {
     std::vector<std::string> robot{"robot.max_link_length"};
     if (!prove_geodesic_reach(without_tube(task), keep, false))
         robot.push_back("robot.link_diameter");
-    proof.core = core_of(keep, primitives, robot);
+    proof.core = core_of(task, keep, primitives, robot);
     const int links = *std::max_element(task.robot.dof.begin(), task.robot.dof.end());
     std::string said;
     for (const auto& d : proof.geodesic->detours) {
@@ -169,8 +171,7 @@ std::optional<ObstacleProof> by_geodesic(const task::Task& task) {
             index_ranges(keep) + " from " +
             (task.base_regions.size() > 1 ? "base_regions[" + std::to_string(d.base_region) + "]"
                                           : "the base region") +
-            " to trajectory[" + std::to_string(d.primitive) + "]" +
-            text::format(" is %.2f m", d.lower_bound);
+            " to " + task::part_name(task, d.primitive) + text::format(" is %.2f m", d.lower_bound);
     }
     said += text::format("; %d links of at most %.2f m reach %.2f m.", links,
                          task.robot.max_link_length, proof.geodesic->reach);

@@ -355,6 +355,12 @@ Verdict Search::judge(const kinematics::Robot& robot) {
         verdict.gave_up = true;  // the refinement of this guess ends
         return verdict;
     }
+    if (!motion && failure.travel) {
+        // Nothing along the path to learn from: the next guess may do.
+        say("    no clear travel: " + failure.message);
+        stats_.verify_seconds += seconds_since(t0);
+        return verdict;
+    }
     if (!motion) {
         say("    out of reach at " + failure.message);
         if (failure.transition) {
@@ -390,7 +396,7 @@ Verdict Search::judge(const kinematics::Robot& robot) {
     }
     std::set<std::pair<int, long>> seen;
     for (const auto& v : cert.violations) {
-        if (v.primitive < 0) continue;
+        if (v.primitive < 0 || v.travel) continue;
         if (v.transition) {
             ++verdict.deeper_transitions;
             continue;

@@ -9,6 +9,7 @@
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
@@ -74,8 +75,9 @@ private:
         v.kind = kind;
         v.sample = i;
         if (i >= 0) {
-            v.primitive = samples_[i].primitive;
+            v.primitive = control::primitive_index(task_, samples_[i]);
             v.transition = samples_[i].phase == Phase::Transition;
+            v.travel = samples_[i].phase == Phase::Travel;
             v.s = samples_[i].s;
         }
         v.obstacle = obstacle;
@@ -110,11 +112,18 @@ private:
                                    robot_.base.y()));
         if (samples_.empty()) violation(Violation::Kind::Structure, -1, 0.0, "no samples");
         for (std::size_t i = 0; i < samples_.size(); ++i) {
-            if (samples_[i].primitive < 0 ||
-                samples_[i].primitive >= static_cast<int>(task_.trajectory.size())) {
-                violation(
-                    Violation::Kind::Structure, static_cast<int>(i), 0.0,
-                    "primitive " + std::to_string(samples_[i].primitive) + " is not in the task");
+            const Sample& a = samples_[i];
+            if (a.stroke < 0 || a.stroke >= task::stroke_count(task_)) {
+                violation(Violation::Kind::Structure, -1, 0.0,
+                          "stroke " + std::to_string(a.stroke) + " of sample " + std::to_string(i) +
+                              " is not in the task");
+                break;
+            }
+            if (a.primitive < 0 || a.primitive > task::stroke_last(task_, a.stroke) -
+                                                     task::stroke_first(task_, a.stroke)) {
+                violation(Violation::Kind::Structure, -1, 0.0,
+                          "primitive " + std::to_string(a.primitive) + " of sample " +
+                              std::to_string(i) + " is not in the task");
                 break;
             }
         }
@@ -129,25 +138,31 @@ private:
     }
 
     // Trace runs of primitives 0..m-1 in order, each from start to end with
-    // non-decreasing progress; transitions only between consecutive runs.
+    // non-decreasing progress; transitions only between consecutive runs of
+    // a stroke, travel only between strokes.
     void check_order() {
         const int m = static_cast<int>(task_.trajectory.size());
         int expected = 0;
         for (std::size_t i = 0; i < samples_.size(); ++i) {
             const Sample& a = samples_[i];
+            const int j = control::primitive_index(task_, a);
+            const std::string name = task::part_name(task_, j);
             const bool first = i == 0 || samples_[i - 1].phase != a.phase ||
-                               samples_[i - 1].primitive != a.primitive;
+                               samples_[i - 1].primitive != a.primitive ||
+                               samples_[i - 1].stroke != a.stroke;
             if (a.phase == Phase::Trace && first) {
-                if (a.primitive != expected || a.s != 0.0)
+                if (j != expected || a.s != 0.0)
                     violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
-                              "trace of trajectory[" + std::to_string(a.primitive) +
-                                  "] out of order or not from its start");
-                expected = a.primitive + 1;
+                              "trace of " + name + " out of order or not from its start");
+                expected = j + 1;
             }
             if (a.phase == Phase::Transition &&
-                (a.primitive != expected - 1 || a.primitive + 1 >= m))
+                (j != expected - 1 || !task::has_transition_after(task_, j)))
                 violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
                           "transition out of place");
+            if (a.phase == Phase::Travel &&
+                (j != expected - 1 || j + 1 >= m || !task::ends_stroke(task_, j)))
+                violation(Violation::Kind::Order, static_cast<int>(i), 0.0, "travel out of place");
             if (!first && a.phase == Phase::Trace) {
                 const double step = a.s - samples_[i - 1].s;
                 if (step < 0.0 || step > opt_.max_ee_step + 1e-12)
@@ -155,12 +170,12 @@ private:
                               text::format("progress step %.6f m between samples", step));
             }
             const bool last = i + 1 == samples_.size() || samples_[i + 1].phase != a.phase ||
-                              samples_[i + 1].primitive != a.primitive;
+                              samples_[i + 1].primitive != a.primitive ||
+                              samples_[i + 1].stroke != a.stroke;
             if (a.phase == Phase::Trace && last &&
-                std::abs(a.s - geometry::length(task_.trajectory[a.primitive])) > 1e-9)
+                std::abs(a.s - geometry::length(task_.trajectory[j])) > 1e-9)
                 violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
-                          "trace of trajectory[" + std::to_string(a.primitive) +
-                              "] stops before its end");
+                          "trace of " + name + " stops before its end");
         }
         if (expected != m)
             violation(Violation::Kind::Order, -1, 0.0, "the motion does not trace every primitive");
@@ -171,8 +186,11 @@ private:
         Pose p;
         p.joints = kinematics::forward(robot_.base, robot_.link_lengths, a.q);
         p.phi = kinematics::absolute_angles(a.q);
-        const geometry::Primitive& prim = task_.trajectory[a.primitive];
-        p.target = a.phase == Phase::Trace ? geometry::point_at(prim, a.s) : prim.end;
+        const geometry::Primitive& prim = task_.trajectory[control::primitive_index(task_, a)];
+        // In travel the EE is free: it is its own target.
+        p.target = a.phase == Phase::Trace        ? geometry::point_at(prim, a.s)
+                   : a.phase == Phase::Transition ? prim.end
+                                                  : p.joints.back();
         p.deviation = (p.joints.back() - p.target).norm();
         return p;
     }
@@ -230,9 +248,15 @@ private:
             e[k] = acc;
         }
         const bool in_transition = sa.phase == Phase::Transition || sb.phase == Phase::Transition;
-        const bool refinable = (sa.phase == Phase::Trace && sb.phase == Phase::Trace &&
-                                sa.primitive == sb.primitive && sb.s - sa.s > 1e-7) ||
-                               (in_transition && std::abs(sb.q[0] - sa.q[0]) > 1e-7);
+        // Between strokes (travel, or one stroke's end straight to the next
+        // one's start) the EE is free and only clearance is checked.
+        const bool free =
+            sa.phase == Phase::Travel || sb.phase == Phase::Travel || sa.stroke != sb.stroke;
+        const bool same_trace = sa.phase == Phase::Trace && sb.phase == Phase::Trace &&
+                                sa.primitive == sb.primitive && sa.stroke == sb.stroke;
+        const bool refinable = (same_trace && sb.s - sa.s > 1e-7) ||
+                               (in_transition && std::abs(sb.q[0] - sa.q[0]) > 1e-7) ||
+                               (free && step > 1e-7);
         bool coarse = false;
         auto settle = [&](double bound, bool samples_ok) {
             if (bound >= 0.0) return;
@@ -246,20 +270,20 @@ private:
 
         // Guarantee 1/2: the EE stays near the path between the samples.
         double sag = 0.0;
-        const bool same_trace =
-            sa.phase == Phase::Trace && sb.phase == Phase::Trace && sa.primitive == sb.primitive;
         if (same_trace) {
-            const geometry::Primitive& prim = task_.trajectory[sa.primitive];
+            const geometry::Primitive& prim = task_.trajectory[control::primitive_index(task_, sa)];
             if (prim.kind != geometry::PrimitiveKind::Line)
                 sag = sagitta(prim.radius, (b.target - a.target).norm());
         }
         // Across a boundary both targets are the same transition point (up to
         // the task's join tolerance, which is added).
-        const double gap = same_trace ? sag : (a.target - b.target).norm();
-        const double dev = std::max(a.deviation, b.deviation) + e[n - 1] / 8.0 + gap;
-        cert_.max_deviation = std::max(cert_.max_deviation, dev);
-        settle(opt_.deviation_tolerance - dev,
-               std::max(a.deviation, b.deviation) <= opt_.deviation_tolerance);
+        if (!free) {
+            const double gap = same_trace ? sag : (a.target - b.target).norm();
+            const double dev = std::max(a.deviation, b.deviation) + e[n - 1] / 8.0 + gap;
+            cert_.max_deviation = std::max(cert_.max_deviation, dev);
+            settle(opt_.deviation_tolerance - dev,
+                   std::max(a.deviation, b.deviation) <= opt_.deviation_tolerance);
+        }
 
         for (int k = 0; k < n; ++k) {
             const std::vector<Vec2> hull =

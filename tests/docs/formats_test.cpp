@@ -72,7 +72,14 @@ double number_or_infinity(const json& j) {
 /// The task example is read, and every value it states is the value read.
 void check_task_example(const json& doc) {
     const modsynth::task::Task task = parse_task(doc);
-    REQUIRE(task.trajectory.size() == doc.at("trajectory").size());
+    if (doc.contains("strokes")) {
+        std::size_t primitives = 0;
+        for (const json& stroke : doc["strokes"]) primitives += stroke.size();
+        REQUIRE(task.trajectory.size() == primitives);
+        CHECK(task.stroke_starts.size() == doc["strokes"].size());
+    } else {
+        REQUIRE(task.trajectory.size() == doc.at("trajectory").size());
+    }
     CHECK(task.obstacles.size() == doc.value("obstacles", json::array()).size());
     CHECK(task.base_regions.size() == doc.value("base_regions", json::array()).size());
     if (doc.contains("name")) CHECK(task.name == doc["name"].get<std::string>());
@@ -194,7 +201,7 @@ TEST_CASE("docs/formats.md: the project additions are marked and cover the exten
           "`robot.adapter_length`", "`robot.ee_rod_diameter`", "`robot.elbow`",
           "`certificate.min_clearance_margin`", "`certificate.min_self_collision_margin`",
           "`certificate.max_ee_deviation`", "`certificate.max_joint_step`",
-          "`explanation.separation`", "`explanation.geodesic`"}) {
+          "`explanation.separation`", "`explanation.geodesic`", "`strokes[s][j]`"}) {
         INFO(key);
         CHECK(text.find(key) != std::string::npos);
     }
@@ -231,37 +238,55 @@ TEST_CASE("docs/formats.md: the extensions not yet implemented behave as documen
         "trajectory": [{"type": "line", "start": [0.4, 0.1], "end": [0.5, 0.1]}]
     })");
 
-    SECTION("a task with only strokes is rejected for its missing trajectory") {
-        json doc = task;
-        doc["strokes"] = json::array({doc["trajectory"]});
-        doc.erase("trajectory");
-        try {
-            parse_task(doc);
-            FAIL("a task without trajectory was accepted");
-        } catch (const InputError& e) {
-            CHECK(e.part() == "trajectory");
-        }
-    }
     SECTION("robot.joint_limits is not read") {
         json doc = task;
         doc["robot"] = {{"joint_limits", {{"velocity", 1.0}, {"acceleration", 2.0}}}};
         const modsynth::task::Task parsed = parse_task(doc);
         CHECK(parsed.trajectory.size() == 1);
     }
-    SECTION("a travel sample is rejected; stroke, qd and qdd are not read") {
+    SECTION("qd and qdd are not read") {
         json sol = json::parse(R"({
             "format": "modsynth-solution/1", "status": "solved",
             "robot": {"dof": 2, "base": [0, 0], "link_lengths": [0.3, 0.3], "link_diameter": 0.03},
             "samples": [{"t": 0, "phase": "trace", "primitive": 0, "q": [0.1, 1.0],
-                         "stroke": 0, "qd": [0, 0], "qdd": [0, 0]}]
+                         "qd": [0, 0], "qdd": [0, 0]}]
         })");
         CHECK(parse_solution(sol).solution.samples.size() == 1);
-        sol["samples"][0]["phase"] = "travel";
+    }
+}
+
+// The extension "Several strokes", as docs/formats.md says modsynth reads it.
+TEST_CASE("docs/formats.md: several strokes are read as documented", "[docs]") {
+    const json line = json::parse(R"({"type": "line", "start": [0.4, 0.1], "end": [0.5, 0.1]})");
+    const json other = json::parse(R"({"type": "line", "start": [0.4, 0.3], "end": [0.5, 0.3]})");
+    json task = {{"format", "modsynth-task/1"}, {"strokes", {{line}, {other}}}};
+
+    SECTION("a task with strokes names its primitives strokes[s][j]") {
+        const modsynth::task::Task parsed = parse_task(task);
+        REQUIRE(parsed.trajectory.size() == 2);
+        CHECK(parsed.stroke_starts == std::vector<int>{0, 1});
+    }
+    SECTION("trajectory and strokes together are rejected") {
+        task["trajectory"] = {line};
         try {
-            parse_solution(sol);
-            FAIL("a travel sample was accepted");
+            parse_task(task);
+            FAIL("a task with both trajectory and strokes was accepted");
         } catch (const InputError& e) {
-            CHECK(e.part() == "samples[0].phase");
+            CHECK(e.part() == "strokes");
         }
+    }
+    SECTION("travel samples and stroke are read; a missing stroke is 0") {
+        json sol = json::parse(R"({
+            "format": "modsynth-solution/1", "status": "solved",
+            "robot": {"dof": 2, "base": [0, 0], "link_lengths": [0.3, 0.3], "link_diameter": 0.03},
+            "samples": [{"t": 0, "phase": "trace", "primitive": 0, "q": [0.1, 1.0]},
+                        {"t": 1, "phase": "travel", "primitive": 0, "q": [0.1, 1.0], "stroke": 0},
+                        {"t": 2, "phase": "trace", "primitive": 0, "q": [0.1, 1.0], "stroke": 1}]
+        })");
+        const auto samples = parse_solution(sol).solution.samples;
+        REQUIRE(samples.size() == 3);
+        CHECK(samples[0].stroke == 0);
+        CHECK(samples[1].phase == modsynth::control::Phase::Travel);
+        CHECK(samples[2].stroke == 1);
     }
 }

@@ -12,21 +12,30 @@
 
 namespace modsynth::control {
 
-enum class Phase { Trace, Transition };
+/// Travel: the pen-up motion between two strokes (formats.md "Several
+/// strokes"), the EE free.
+enum class Phase { Trace, Transition, Travel };
 
 struct Sample {
     double t = 0.0;
     Phase phase = Phase::Trace;
+    /// As in the document: the index within `stroke` (task/strokes.h maps it
+    /// to task.trajectory, see primitive_index below). In travel the last
+    /// primitive of the stroke just finished.
     int primitive = 0;
     /// Where along the motion: arc length along the primitive for trace
-    /// samples, the first joint's angle for transition samples.
+    /// samples, the first joint's angle for transition samples, 0 in travel.
     double s = 0.0;
     std::vector<double> q;
     /// Joint rates (rad/s) and accelerations (rad/s^2), as long as q when
     /// the motion is timed for a controller, empty otherwise (formats.md,
     /// "Timing a controller accepts").
     std::vector<double> qd, qdd;
+    int stroke = 0;
 };
+
+/// The index in task.trajectory of the primitive a sample belongs to.
+int primitive_index(const task::Task& task, const Sample& sample);
 
 struct MotionOptions {
     /// rad between consecutive samples, for every joint. formats.md
@@ -78,14 +87,16 @@ std::optional<std::vector<double>> transition_configuration(const task::Task& ta
                                                             const std::vector<double>* previous);
 
 /// Samples the whole motion: every primitive traced from its start to its
-/// end, and with three joints a transition between primitives in which the
-/// first joint sweeps while the EE holds the transition point; no joint moves
+/// end, with three joints a transition between consecutive primitives of a
+/// stroke in which the first joint sweeps while the EE holds the transition
+/// point, and between strokes a travel (control/travel.h); no joint moves
 /// more than max_joint_step and the EE no more than max_ee_step between
 /// samples. Times are not set.
 /// Where a motion could not be planned: the first point out of reach.
 struct MotionFailure {
-    int primitive = -1;
+    int primitive = -1;       ///< index in task.trajectory
     bool transition = false;  ///< in the transition after `primitive`
+    bool travel = false;      ///< in the travel after `primitive`, the last of its stroke
     double s = 0.0;           ///< arc length (first joint's angle in a transition)
     /// Planning stopped at the sample cap or the deadline: no point of the
     /// path is to blame.
@@ -102,15 +113,15 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
 
 /// Inserts a sample midway between samples i and i + 1 for each i in
 /// `pairs`: by arc length within a trace, by the first joint's angle in a
-/// transition. Returns false when a midpoint is out of reach or the pair
-/// cannot be split.
+/// transition, in joint space in a travel (which moves linearly there). Returns false when a
+/// midpoint is out of reach or the pair cannot be split.
 bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
                    std::vector<Sample>& samples, const std::vector<int>& pairs);
 
 /// For samples read from a file, which carry no `s`: the arc length of the
 /// EE's nearest point along its primitive, followed continuously (a circle
 /// ends at its length, not at 0) and snapped to the ends within 10 um; in
-/// transitions the first joint's angle.
+/// transitions the first joint's angle; 0 in travel.
 void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
                         std::vector<Sample>& samples);
 

@@ -1,6 +1,8 @@
 #pragma once
 // The control as a CSV table for position-controlled actuators: one row per
-// sample, `t,q1,...,qn,phase,primitive`, angles in radians, never wrapped.
+// sample, `t,q1,...,qn,phase,primitive` (and `,stroke` when the motion has
+// several strokes; phase `travel` between them), angles in radians, never
+// wrapped.
 #include <string>
 
 #include <modsynth/synth/solution.h>

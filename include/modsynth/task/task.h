@@ -58,10 +58,19 @@ struct RobotSpec {
 
 struct Task {
     std::string name;
+    /// Every primitive to trace, in order: with several strokes (formats.md
+    /// "Several strokes") the strokes one after another, split by
+    /// stroke_starts. Primitives are numbered in this list everywhere inside
+    /// modsynth; task/strokes.h names them as the document does.
     std::vector<Primitive> trajectory;
     std::vector<Obstacle> obstacles;
     std::vector<BaseRegion> base_regions;  ///< empty: the base may be anywhere
     RobotSpec robot;
+    /// Last, so that code building a Task member by member is unchanged.
+    /// Empty: the task was written with `trajectory`, one stroke. Otherwise
+    /// (written with `strokes`) the index in `trajectory` of each stroke's
+    /// first primitive, starting with 0 and increasing.
+    std::vector<int> stroke_starts;
 };
 
 /// The base-region choices of a search: each index into base_regions, or

@@ -12,9 +12,12 @@ namespace modsynth::verify {
 struct Violation {
     enum class Kind { Structure, Deviation, Clearance, SelfCollision, JointStep, Order };
     Kind kind = Kind::Structure;
-    int sample = -1;          ///< first sample of the offending pair, -1 for the robot itself
-    int primitive = -1;       ///< primitive traced there (or left, in a transition), -1 if none
+    int sample = -1;  ///< first sample of the offending pair, -1 for the robot itself
+    /// Primitive traced there (or left, in a transition or travel) as an
+    /// index into task.trajectory, -1 if none.
+    int primitive = -1;
     bool transition = false;  ///< in the transition after `primitive`
+    bool travel = false;      ///< in the travel after `primitive` (to the next stroke)
     double s = 0.0;           ///< arc length along it (first joint's angle in a transition)
     int obstacle = -1;        ///< for Clearance
     int link = -1;            ///< 0-based link index, for Clearance and SelfCollision
