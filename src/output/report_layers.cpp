@@ -410,8 +410,8 @@ std::string proof(const task::Task& task, const synth::Solution& s, const plot::
             std::vector<int> sorted = w.cycle;
             std::sort(sorted.begin(), sorted.end());
             const std::string region = "base_regions[" + std::to_string(w.base_region) + "]";
-            out += point_mark(w.point, "trajectory[" + std::to_string(w.primitive) +
-                                           "] at a point " + region + " cannot reach");
+            out += point_mark(w.point, task::part_name(task, w.primitive) + " at a point " +
+                                           region + " cannot reach");
             if (std::find(drawn.begin(), drawn.end(), sorted) != drawn.end()) continue;
             drawn.push_back(sorted);
             out += "<g class=\"wall\" data-cycle=\"";
@@ -476,8 +476,8 @@ std::string proof(const task::Task& task, const synth::Solution& s, const plot::
                    "\" text-anchor=\"" + (left ? "end" : "start") + "\"><tspan x=\"" + x + "\">" +
                    label.substr(0, semicolon) + "</tspan><tspan x=\"" + x + "\" dy=\"15\">" +
                    label.substr(semicolon + 2) + "</tspan></text>\n";
-            out += point_mark(
-                d.point, "trajectory[" + std::to_string(d.primitive) + "] at a point beyond reach");
+            out += point_mark(d.point,
+                              task::part_name(task, d.primitive) + " at a point beyond reach");
         }
     }
     return out + "</g>\n";

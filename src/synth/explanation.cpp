@@ -306,7 +306,6 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
             }
         }
     }
-    const auto traj = with_prefix(core, "trajectory[");
     const auto traj = primitive_parts(core);
     for (const std::string& part : core) {
         if (Clock::now() >= deadline) break;

@@ -27,11 +27,11 @@ struct Sample {
     /// samples, the first joint's angle for transition samples, 0 in travel.
     double s = 0.0;
     std::vector<double> q;
+    int stroke = 0;
     /// Joint rates (rad/s) and accelerations (rad/s^2), as long as q when
     /// the motion is timed for a controller, empty otherwise (formats.md,
     /// "Timing a controller accepts").
     std::vector<double> qd, qdd;
-    int stroke = 0;
 };
 
 /// The index in task.trajectory of the primitive a sample belongs to.
