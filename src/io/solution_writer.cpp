@@ -62,10 +62,14 @@ nlohmann::json to_json(const synth::Solution& s) {
                     {"elbow", r.elbow}};
     nlohmann::json samples = nlohmann::json::array();
     for (const auto& x : s.samples) {
-        samples.push_back({{"t", x.t},
-                           {"phase", x.phase == control::Phase::Trace ? "trace" : "transition"},
-                           {"primitive", x.primitive},
-                           {"q", x.q}});
+        nlohmann::json sample = {
+            {"t", x.t},
+            {"phase", x.phase == control::Phase::Trace ? "trace" : "transition"},
+            {"primitive", x.primitive},
+            {"q", x.q}};
+        if (!x.qd.empty()) sample["qd"] = x.qd;
+        if (!x.qdd.empty()) sample["qdd"] = x.qdd;
+        samples.push_back(std::move(sample));
     }
     doc["samples"] = std::move(samples);
     const auto& c = s.certificate;

@@ -7,27 +7,45 @@
 namespace modsynth::output {
 namespace {
 
-std::string header(int dof) {
+bool timed(const synth::Solution& solution) {
+    return !solution.samples.empty() && !solution.samples[0].qd.empty() &&
+           !solution.samples[0].qdd.empty();
+}
+
+// Velocities and accelerations come after the columns a position-only
+// reader already knows, so that their positions stay.
+std::string header(int dof, bool with_rates) {
     std::string h = "t";
     for (int k = 1; k <= dof; ++k) h += ",q" + std::to_string(k);
-    return h + ",phase,primitive\n";
+    h += ",phase,primitive";
+    if (with_rates) {
+        for (int k = 1; k <= dof; ++k) h += ",qd" + std::to_string(k);
+        for (int k = 1; k <= dof; ++k) h += ",qdd" + std::to_string(k);
+    }
+    return h + "\n";
 }
 
 // Nanoradians and microseconds: finer than any actuator resolves, and
 // fixed-point so that the file diffs cleanly.
-std::string row(const control::Sample& s) {
+std::string row(const control::Sample& s, bool with_rates) {
     std::string r = text::format("%.6f", s.t);
     for (double q : s.q) r += text::format(",%.9f", q);
     r += s.phase == control::Phase::Trace ? ",trace," : ",transition,";
-    return r + std::to_string(s.primitive) + "\n";
+    r += std::to_string(s.primitive);
+    if (with_rates) {
+        for (double v : s.qd) r += text::format(",%.9f", v);
+        for (double a : s.qdd) r += text::format(",%.9f", a);
+    }
+    return r + "\n";
 }
 
 }  // namespace
 
 std::string trajectory_csv(const synth::Solution& solution) {
     const int dof = solution.samples.empty() ? 2 : static_cast<int>(solution.samples[0].q.size());
-    std::string out = header(dof);
-    for (const auto& s : solution.samples) out += row(s);
+    const bool with_rates = timed(solution);
+    std::string out = header(dof, with_rates);
+    for (const auto& s : solution.samples) out += row(s, with_rates);
     return out;
 }
 

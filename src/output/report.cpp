@@ -11,6 +11,7 @@
 #include "report_assets.h"
 #include "report_comparison.h"
 #include "report_layers.h"
+#include "report_timing.h"
 
 namespace modsynth::output {
 namespace {
@@ -310,6 +311,7 @@ std::string html_report(const task::Task& task, const synth::Solution& solution,
                "Dotted circles: how close a link's axis may come to each obstacle.</p>\n";
     }
     out += "</aside>\n</main>\n";
+    out += timing::section(task, solution);
     if (solved) {
         out += motion_data(solution, frame);
         out += std::string("<script>") + assets::kScript + "</script>\n";

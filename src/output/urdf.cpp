@@ -112,10 +112,9 @@ std::vector<Range> joint_ranges(const synth::Solution& solution) {
 
 std::string revolute(int k, const std::string& parent, double x, double z, const Range& range) {
     const double velocity = std::max(0.01, 1.1 * range.speed);
-    return "  <joint name=\"joint_" + std::to_string(k + 1) +
-           "\" type=\"revolute\">\n    <parent link=\"" + parent + "\"/>\n    <child link=\"link_" +
-           std::to_string(k + 1) + "\"/>\n    " + origin(x, 0.0, z) +
-           "\n    <axis xyz=\"0 0 1\"/>\n    <limit lower=\"" +
+    return "  <joint name=\"" + urdf_joint_name(k) + "\" type=\"revolute\">\n    <parent link=\"" +
+           parent + "\"/>\n    <child link=\"link_" + std::to_string(k + 1) + "\"/>\n    " +
+           origin(x, 0.0, z) + "\n    <axis xyz=\"0 0 1\"/>\n    <limit lower=\"" +
            num(range.lower - kJointLimitMargin) + "\" upper=\"" +
            num(range.upper + kJointLimitMargin) + "\" effort=\"16\" velocity=\"" + num(velocity) +
            "\"/>\n  </joint>\n";
@@ -144,6 +143,8 @@ std::string preamble(const task::Task& task) {
 }
 
 }  // namespace
+
+std::string urdf_joint_name(int k) { return "joint_" + std::to_string(k + 1); }
 
 std::string robot_urdf(const task::Task& task, const synth::Solution& solution) {
     const kinematics::Robot& robot = solution.robot;

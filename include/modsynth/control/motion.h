@@ -22,6 +22,11 @@ struct Sample {
     /// samples, the first joint's angle for transition samples.
     double s = 0.0;
     std::vector<double> q;
+    /// Joint velocities and accelerations at t (formats.md "Timing a
+    /// controller accepts"), as long as q; empty until the motion is timed
+    /// by retime().
+    std::vector<double> qd{};
+    std::vector<double> qdd{};
 };
 
 struct MotionOptions {
@@ -111,8 +116,9 @@ void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
                         std::vector<Sample>& samples);
 
 /// Sets t: each step takes the longer of path length / ee_speed and
-/// largest joint change / joint_speed. Throws std::invalid_argument when the
-/// options are not valid.
+/// largest joint change / joint_speed. A plain timing without
+/// accelerations; solutions are timed by retime() (retime.h) instead. Throws std::invalid_argument
+/// when the options are not valid.
 void assign_times(std::vector<Sample>& samples, const MotionOptions& options);
 
 }  // namespace modsynth::control

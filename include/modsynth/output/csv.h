@@ -1,6 +1,8 @@
 #pragma once
-// The control as a CSV table for position-controlled actuators: one row per
-// sample, `t,q1,...,qn,phase,primitive`, angles in radians, never wrapped.
+// The control as a CSV table for actuators: one row per sample,
+// `t,q1,...,qn,phase,primitive`, then `qd1,...,qdn,qdd1,...,qddn` when the
+// motion is timed (its samples carry velocities and accelerations); angles
+// in radians, never wrapped, rates in rad/s and rad/s^2.
 #include <string>
 
 #include <modsynth/synth/solution.h>

@@ -1,6 +1,7 @@
 #pragma once
 // The task a user asks modsynth to solve (formats.md, modsynth-task/1), as
 // plain value types. A Task that exists has been validated.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,15 @@ struct BaseRegion {
     }
 };
 
+/// Joint speed and acceleration limits a controller must respect
+/// (formats.md `robot.joint_limits`), in rad/s and rad/s^2. Each list holds
+/// one value for every joint, or one value per joint (then its length is
+/// the only joint count the task allows).
+struct JointLimitsSpec {
+    std::vector<double> velocity;
+    std::vector<double> acceleration;
+};
+
 /// Defaults are those of formats.md.
 struct RobotSpec {
     std::vector<int> dof{2, 3};  ///< allowed joint counts, fewest preferred
@@ -42,6 +52,9 @@ struct RobotSpec {
     double adapter_length = 0.020;
     /// The rod that carries the end-effector down to the task plane.
     double ee_rod_diameter = 0.0095;
+    /// Absent: the motion is timed with the modules' limits
+    /// (control::default_joint_limits()).
+    std::optional<JointLimitsSpec> joint_limits;
 };
 
 struct Task {
