@@ -147,7 +147,7 @@ with_limits "$root/tasks/clean-table.json" "$tmp/clean.json" \
     '{"velocity": [3.35, 2.5, 3.35], "acceleration": [10, 6, 10]}'
 check_task clean-table "$tmp/clean.json"
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['robot']['dof']==3" \
-    "$tmp/clean/solution.json" || fail "per-joint limits of 3 joints, but not a 3-joint robot"
+    "$tmp/clean-table/solution.json" || fail "per-joint limits of 3 joints, but not a 3-joint robot"
 
 if [ -f "$planter" ]; then
     python3 "$planter" --kind 2dof --seed 7 --out "$tmp/planted" >/dev/null ||
@@ -168,7 +168,7 @@ expect_invalid() {  # limits-json part
 }
 expect_invalid '{"velocity": [1, -1], "acceleration": 5}' "robot.joint_limits.velocity[1]"
 expect_invalid '{"velocity": [1, 1, 1, 1], "acceleration": 5}' "robot.joint_limits.velocity"
-expect_invalid '{"velocity": 1, "acceleration": [5, 5, 5]}' "robot.joint_limits.acceleration"
+expect_invalid '{"velocity": 1, "acceleration": [5, 5, 5, 5]}' "robot.joint_limits.acceleration"
 expect_invalid '{"velocity": [1, 2], "acceleration": [5, 5, 5]}' "robot.joint_limits.acceleration"
 expect_invalid '{"velocity": 0, "acceleration": 5}' "robot.joint_limits.velocity"
 expect_invalid '{"velocity": 1}' "robot.joint_limits.acceleration"
