@@ -62,13 +62,16 @@ done
 # Outputs people use: report, URDF, CSV and build sheet, from solve and
 # again from the saved solution with export.
 outputs() {  # prefix
-    echo --report "$tmp/$1.html" --urdf "$tmp/$1.urdf" --csv "$tmp/$1.csv" --build-sheet "$tmp/$1.md"
+    echo --report "$tmp/$1.html" --urdf "$tmp/$1.urdf" --csv "$tmp/$1.csv" --build-sheet "$tmp/$1.md" \
+        --joint-trajectory "$tmp/$1.yaml"
 }
 expect_exit 0 "solve rose with outputs" "$bin" solve "$root/tasks/rose.json" -o "$tmp/s.json" --quiet $(outputs s)
-for f in s.html s.urdf s.csv s.md; do
+for f in s.html s.urdf s.csv s.md s.yaml; do
     [ -s "$tmp/$f" ] || fail "solve rose did not write $f"
 done
-head -1 "$tmp/s.csv" | grep -qE '^t,q1,q2(,q3)?,phase,primitive$' || fail "CSV header: $(head -1 "$tmp/s.csv")"
+# Every solved motion is timed: velocities and accelerations follow.
+head -1 "$tmp/s.csv" | grep -qE '^t,q1,q2(,q3)?,phase,primitive,qd1,qd2(,qd3)?,qdd1,qdd2(,qdd3)?$' ||
+    fail "CSV header: $(head -1 "$tmp/s.csv")"
 [ "$(($(wc -l <"$tmp/s.csv") - 1))" -eq "$(grep -c '"phase"' "$tmp/s.json")" ] ||
     fail "CSV rows do not match the solution's samples"
 grep -q '<svg id="plot"' "$tmp/s.html" || fail "report has no plot"
@@ -76,7 +79,7 @@ if command -v check_urdf >/dev/null 2>&1; then
     check_urdf "$tmp/s.urdf" >"$tmp/check_urdf" 2>&1 || fail "check_urdf rejects the rose URDF: $(tail -3 "$tmp/check_urdf")"
 fi
 expect_exit 0 "export rose" "$bin" export "$root/tasks/rose.json" "$tmp/s.json" $(outputs e)
-for ext in urdf csv md; do
+for ext in urdf csv md yaml; do
     cmp -s "$tmp/s.$ext" "$tmp/e.$ext" || fail "export gives a different .$ext than solve"
 done
 # The reports differ only in the stage timings, which a saved solution does not record.

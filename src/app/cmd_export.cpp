@@ -22,8 +22,8 @@ struct ExportArgs {
 int run_export(const ExportArgs& a) {
     if (!a.exports.any()) {
         std::fprintf(stderr,
-                     "error: nothing to export; give --report, --urdf, --csv and/or "
-                     "--build-sheet\n");
+                     "error: nothing to export; give --report, --urdf, --csv, "
+                     "--joint-trajectory and/or --build-sheet\n");
         return kInvalid;
     }
     const task::Task task = io::load_task(a.task);
@@ -49,7 +49,10 @@ void add_export_options(CLI::App& sub, output::ExportPaths& paths) {
     sub.add_option("--report", paths.report, "write a visual report (self-contained HTML)");
     sub.add_option("--urdf", paths.urdf, "write the robot as a URDF model");
     sub.add_option("--csv", paths.csv,
-                   "write the joint trajectory as CSV (t,q1..qn,phase,primitive)");
+                   "write the joint trajectory as CSV "
+                   "(t,q1..qn,phase,primitive,qd1..qdn,qdd1..qddn)");
+    sub.add_option("--joint-trajectory", paths.joint_trajectory,
+                   "write the joint trajectory as a ROS 2 trajectory_msgs/JointTrajectory (YAML)");
     sub.add_option("--build-sheet", paths.build_sheet,
                    "write a build sheet (Markdown): parts, tube cut lengths, base, start pose");
 }
@@ -57,7 +60,8 @@ void add_export_options(CLI::App& sub, output::ExportPaths& paths) {
 Command add_export(CLI::App& parent) {
     auto a = std::make_shared<ExportArgs>();
     CLI::App* sub = parent.add_subcommand(
-        "export", "Write the report, URDF, CSV or build sheet of a saved solution");
+        "export",
+        "Write the report, URDF, CSV, joint trajectory or build sheet of a saved solution");
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file the solution is for")->required();
     sub->add_option("SOLUTION", a->solution, "modsynth-solution/1 JSON file")->required();
     add_export_options(*sub, a->exports);

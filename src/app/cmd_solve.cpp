@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,7 +26,9 @@ struct SolveArgs {
     std::string task, output;
     double time_limit = 60.0;
     unsigned seed = 0;
-    double ee_speed = 0.05, joint_speed = 1.0;
+    /// Caps on top of the joint limits; infinity: none.
+    double ee_speed = std::numeric_limits<double>::infinity();
+    double joint_speed = std::numeric_limits<double>::infinity();
     bool quiet = false;
     output::ExportPaths exports;
 };
@@ -92,8 +95,8 @@ int run_solve(const SolveArgs& a) {
     synth::SynthesisOptions options;
     options.time_limit = std::max(0.0, a.time_limit - elapsed());
     options.seed = a.seed;
-    options.motion.ee_speed = a.ee_speed;
-    options.motion.joint_speed = a.joint_speed;
+    options.retime.ee_speed = a.ee_speed;
+    options.retime.joint_speed = a.joint_speed;
     options.progress = [&](const std::string& line) {
         watchdog.set_stage(line.size() > 11 ? line.substr(11) : line);  // without the clock
         if (!a.quiet) std::cerr << line << std::endl;
@@ -141,9 +144,11 @@ Command add_solve(CLI::App& parent) {
     sub->add_option("--seed", a->seed,
                     "varies initial guesses; same seed, same output (default 0)");
     sub->add_option("--ee-speed", a->ee_speed,
-                    "end-effector speed along the path, m/s (default 0.05)")
+                    "cap on the end-effector speed along the path, m/s (default: none; the "
+                    "joint limits decide)")
         ->check(positive());
-    sub->add_option("--joint-speed", a->joint_speed, "joint speed limit, rad/s (default 1)")
+    sub->add_option("--joint-speed", a->joint_speed,
+                    "cap on every joint's speed below its limit, rad/s (default: none)")
         ->check(positive());
     sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");
     add_export_options(*sub, a->exports);

@@ -236,7 +236,19 @@ control::Sample parse_sample(const json& j, const std::string& part, int dof) {
     s.q = numbers(required(j, part, "q"), member(part, "q"), dof);
     if (const json* k = optional(j, "stroke"))
         s.stroke = integer(*k, member(part, "stroke"), 0, std::numeric_limits<int>::max());
+    if (const json* v = optional(j, "qd")) s.qd = numbers(*v, member(part, "qd"), dof);
+    if (const json* v = optional(j, "qdd")) s.qdd = numbers(*v, member(part, "qdd"), dof);
     return s;
+}
+
+void require_like_first(const std::vector<double>& values, const std::vector<double>& first,
+                        const std::string& part, const char* key) {
+    if (values.empty() == first.empty()) return;
+    throw InputError(member(part, key), values.empty()
+                                            ? std::string("missing, but samples[0] has it; ") +
+                                                  "give it on every sample or on none"
+                                            : std::string("given, but samples[0] has none; ") +
+                                                  "give it on every sample or on none");
 }
 
 std::vector<control::Sample> parse_samples(const json& doc, int dof) {
@@ -250,6 +262,9 @@ std::vector<control::Sample> parse_samples(const json& doc, int dof) {
         if (i > 0 && out[i].t < out[i - 1].t) {
             throw InputError(member(element(part, i), "t"), "time goes backwards");
         }
+        // Velocities and accelerations are on every sample or on none.
+        require_like_first(out[i].qd, out[0].qd, element(part, i), "qd");
+        require_like_first(out[i].qdd, out[0].qdd, element(part, i), "qdd");
     }
     return out;
 }

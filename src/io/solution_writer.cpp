@@ -100,8 +100,11 @@ nlohmann::json to_json(const synth::Solution& s) {
         const char* phase = x.phase == control::Phase::Trace        ? "trace"
                             : x.phase == control::Phase::Transition ? "transition"
                                                                     : "travel";
-        samples.push_back({{"t", x.t}, {"phase", phase}, {"primitive", x.primitive}, {"q", x.q}});
-        if (strokes) samples.back()["stroke"] = x.stroke;
+        nlohmann::json sample = {{"t", x.t}, {"phase", phase}, {"primitive", x.primitive}, {"q", x.q}};
+        if (!x.qd.empty()) sample["qd"] = x.qd;
+        if (!x.qdd.empty()) sample["qdd"] = x.qdd;
+        if (strokes) sample["stroke"] = x.stroke;
+        samples.push_back(std::move(sample));
     }
     doc["samples"] = std::move(samples);
     const auto& c = s.certificate;

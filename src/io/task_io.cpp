@@ -479,6 +479,66 @@ void parse_loads(const json& robot, const std::string& part, RobotSpec& r) {
     }
 }
 
+/// Joint limits outside this range are typing mistakes rather than actuators,
+/// and would make the motion's times overflow or vanish.
+constexpr double kMinJointLimit = 1e-6;
+constexpr double kMaxJointLimit = 1e6;
+
+/// One limit: a positive number for every joint, or a list with one per
+/// joint whose length is an allowed joint count.
+std::vector<double> joint_limit_values(const json& j, const std::string& part, const char* unit,
+                                       const std::vector<int>& dof) {
+    const auto value = [&](const json& v, const std::string& p) {
+        const double x = finite_number(v, p, (std::string("a limit in ") + unit).c_str());
+        if (x <= 0.0) {
+            throw InputError(
+                p, "must be greater than 0 " + std::string(unit) + ", got " + text::compact(x));
+        }
+        if (x < kMinJointLimit || x > kMaxJointLimit) {
+            throw InputError(p, text::compact(x) + " " + unit + " is outside the " +
+                                    text::compact(kMinJointLimit) + " to " +
+                                    text::compact(kMaxJointLimit) + " allowed");
+        }
+        return x;
+    };
+    if (!j.is_array()) return {value(j, part)};
+    if (std::find(dof.begin(), dof.end(), static_cast<int>(j.size())) == dof.end()) {
+        std::string allowed;
+        for (int n : dof) allowed += (allowed.empty() ? "" : " or ") + std::to_string(n);
+        throw InputError(part, "has " + std::to_string(j.size()) +
+                                   " values, but a list needs one per joint and the robot may "
+                                   "have " +
+                                   allowed + " joints (robot.dof)");
+    }
+    std::vector<double> out;
+    for (std::size_t i = 0; i < j.size(); ++i) out.push_back(value(j[i], element(part, i)));
+    return out;
+}
+
+/// `robot.joint_limits`. A list with one value per joint fixes the joint
+/// count: the search then considers only that count.
+void parse_joint_limits(const json& robot, const std::string& robot_part, RobotSpec& r) {
+    const json* limits = optional(robot, "joint_limits");
+    if (!limits) return;
+    const std::string part = member(robot_part, "joint_limits");
+    require_object(*limits, part, "{\"velocity\": 3.35, \"acceleration\": 10}");
+    const char* why = "joint limits need \"velocity\" (rad/s) and \"acceleration\" (rad/s^2)";
+    task::JointLimitsSpec spec;
+    spec.velocity = joint_limit_values(required(*limits, part, "velocity", why),
+                                       member(part, "velocity"), "rad/s", r.dof);
+    spec.acceleration = joint_limit_values(required(*limits, part, "acceleration", why),
+                                           member(part, "acceleration"), "rad/s^2", r.dof);
+    const std::size_t nv = spec.velocity.size(), na = spec.acceleration.size();
+    if (nv > 1 && na > 1 && nv != na) {
+        throw InputError(member(part, "acceleration"),
+                         "has " + std::to_string(na) + " values but velocity has " +
+                             std::to_string(nv) + "; both lists need one value per joint");
+    }
+    const std::size_t per_joint = std::max(nv, na);
+    if (per_joint > 1) r.dof = {static_cast<int>(per_joint)};
+    r.joint_limits = std::move(spec);
+}
+
 RobotSpec parse_robot(const json& doc) {
     RobotSpec r;
     const json* robot = optional(doc, "robot");
@@ -497,6 +557,7 @@ RobotSpec parse_robot(const json& doc) {
     }
     parse_hardware(*robot, part, r);
     parse_loads(*robot, part, r);
+    parse_joint_limits(*robot, part, r);
     if (r.min_link_length > r.max_link_length) {
         throw InputError(member(part, "min_link_length"),
                          "minimum link length " + metres(r.min_link_length) +
@@ -634,12 +695,7 @@ json to_json(const Task& task) {
     for (const BaseRegion& b : task.base_regions) {
         regions.push_back({{"min", point_json(b.min)}, {"max", point_json(b.max)}});
     }
-    json doc = {{"format", kFormat},
-                {"name", task.name},
-                {"obstacles", obstacles},
-                {"base_regions", regions},
-                {"robot",
-                 {{"dof", task.robot.dof},
+    json robot = {{"dof", task.robot.dof},
                   {"link_diameter", task.robot.link_diameter},
                   {"min_link_length", task.robot.min_link_length},
                   {"max_link_length", task.robot.max_link_length},
@@ -647,8 +703,21 @@ json to_json(const Task& task) {
                   {"module_width", task.robot.module_width},
                   {"module_height", task.robot.module_height},
                   {"adapter_length", task.robot.adapter_length},
-                  {"ee_rod_diameter", task.robot.ee_rod_diameter}}}};
-    add_loads_json(task.robot, doc["robot"]);
+                  {"ee_rod_diameter", task.robot.ee_rod_diameter}};
+    if (const auto& l = task.robot.joint_limits) {
+        // One value for every joint is written as a number, as it was read.
+        const auto values = [](const std::vector<double>& v) {
+            return v.size() == 1 ? json(v[0]) : json(v);
+        };
+        robot["joint_limits"] = {{"velocity", values(l->velocity)},
+                                 {"acceleration", values(l->acceleration)}};
+    }
+    add_loads_json(task.robot, robot);
+    json doc = {{"format", kFormat},
+                {"name", task.name},
+                {"obstacles", obstacles},
+                {"base_regions", regions},
+                {"robot", robot}};
     if (task::has_strokes(task)) {
         doc["strokes"] = std::move(strokes);
     } else {

@@ -6,6 +6,7 @@
 #include <modsynth/io/atomic_file.h>
 #include <modsynth/output/build_sheet.h>
 #include <modsynth/output/csv.h>
+#include <modsynth/output/joint_trajectory.h>
 #include <modsynth/output/urdf.h>
 
 namespace modsynth::output {
@@ -26,6 +27,8 @@ std::vector<std::string> write_exports(const task::Task& task, const synth::Solu
         {paths.urdf, "--urdf", [&] { return robot_urdf(task, solution); }},
         {paths.csv, "--csv", [&] { return trajectory_csv(solution); }},
         {paths.build_sheet, "--build-sheet", [&] { return build_sheet(task, solution); }},
+        {paths.joint_trajectory, "--joint-trajectory",
+         [&] { return joint_trajectory_yaml(solution); }},
     };
     std::vector<std::string> skipped;
     for (const auto& o : robot_outputs) {

@@ -1,6 +1,8 @@
 #include <modsynth/output/recertify.h>
 
+#include <modsynth/control/joint_limits.h>
 #include <modsynth/control/motion.h>
+#include <modsynth/control/retime.h>
 #include <modsynth/synth/synthesizer.h>
 
 namespace modsynth::output {
@@ -15,6 +17,12 @@ std::string recertify(const task::Task& task, io::ParsedSolution& parsed) {
     // With the limits the search certified it against: a long path is
     // planned with steps coarser than the verifier's default.
     s.certificate = verify::certify(task, s.robot, s.samples, synth::verify_options_for(task));
+    // The task's per-joint limits must fit the robot (an InputError naming
+    // robot.joint_limits otherwise). A motion saved without velocities is
+    // timed for the controller outputs as solve would; its path is kept.
+    const control::JointLimits limits = control::joint_limits_for(task, s.robot.dof());
+    if (s.samples.front().qd.empty() || s.samples.front().qdd.empty())
+        s.samples = control::retime(std::move(s.samples), limits);
     // Figures recomputed from an unchanged motion are the stored ones, so
     // the report of a saved solution matches the one solve wrote.
     return parsed.has_certificate ? ""

@@ -12,6 +12,7 @@
 #include "report_assets.h"
 #include "report_comparison.h"
 #include "report_layers.h"
+#include "report_timing.h"
 
 namespace modsynth::output {
 namespace {
@@ -363,6 +364,7 @@ std::string html_report(const task::Task& task, const synth::Solution& solution,
                "Dotted circles: how close a link's axis may come to each obstacle.</p>\n";
     }
     out += "</aside>\n</main>\n";
+    out += timing::section(task, solution);
     if (solved) {
         out += motion_data(task, solution, frame);
         out += std::string("<script>") + assets::kScript + "</script>\n";

@@ -134,7 +134,7 @@ std::vector<Range> joint_ranges(const synth::Solution& solution) {
 
 std::string revolute(int k, const std::string& parent, double x, double z, const Range& range,
                      const hardware::Actuator& module) {
-    return "  <joint name=\"joint_" + std::to_string(k + 1) +
+    return "  <joint name=\"" + urdf_joint_name(k) +
            "\" type=\"revolute\">\n    <parent link=\"" + parent + "\"/>\n    <child link=\"link_" +
            std::to_string(k + 1) + "\"/>\n    " + origin(x, 0.0, z) +
            "\n    <axis xyz=\"0 0 1\"/>\n    <limit lower=\"" +
@@ -212,6 +212,8 @@ std::vector<const hardware::Actuator*> urdf_modules(const task::Task& task,
 }
 
 }  // namespace
+
+std::string urdf_joint_name(int k) { return "joint_" + std::to_string(k + 1); }
 
 std::string robot_urdf(const task::Task& task, const synth::Solution& solution) {
     return robot_urdf(task, solution, hardware::load_default_catalog());

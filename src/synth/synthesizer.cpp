@@ -7,7 +7,9 @@
 #include <optional>
 #include <set>
 
+#include <modsynth/control/joint_limits.h>
 #include <modsynth/control/motion.h>
+#include <modsynth/control/retime.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/chain_layout.h>
@@ -123,6 +125,7 @@ public:
     }
 
     Solution run();
+    Solution timed(Solution solution);
 
 private:
     double remaining() const { return opt_.time_limit - seconds_since(start_); }
@@ -214,7 +217,7 @@ Solution Search::run() {
             say(text::format("%d joints: skeleton %d (elbow %+d, base region %d)", dof, skeletons,
                              sk.elbow, sk.base_region));
             if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton))
-                return shorten(sk, std::move(*found));
+                return timed(shorten(sk, std::move(*found)));
             front.block(sk);
             const auto t1 = Clock::now();
             result = front.check();
@@ -248,6 +251,19 @@ Solution Search::run() {
                 out.explanation.core.end())
                 out.explanation.core.push_back(part);
     return out;
+}
+
+// The chosen robot's certified motion, timed for a controller (retime.h):
+// its q stay as certified, so the certificate holds for the result.
+Solution Search::timed(Solution solution) {
+    const auto t0 = Clock::now();
+    control::RetimeStats timing;
+    solution.samples = control::retime(std::move(solution.samples),
+                                       control::joint_limits_for(task_, solution.robot.dof()),
+                                       opt_.retime, &timing);
+    say(text::format("timed: %.3f s of motion, %d rests, %d passes, in %.1f ms", timing.duration,
+                     timing.rests, timing.passes, 1e3 * seconds_since(t0)));
+    return solution;
 }
 
 // The first certified robot ends the search, but it is often not the
@@ -381,7 +397,6 @@ Verdict Search::judge(const kinematics::Robot& robot) {
     }
     stats_.verify_seconds += seconds_since(t0);
     if (cert.ok) {
-        control::assign_times(*motion, motion_);
         Solution& out = verdict.solution.emplace();
         out.task_name = task_.name;
         out.status = Status::Solved;
@@ -430,6 +445,7 @@ bool SynthesisOptions::IsValid(std::string* error) const {
     return text::OptionCheck("SynthesisOptions", error)
         .at_least("time_limit", time_limit, 0.0)
         .nested("motion", motion)
+        .nested("retime", retime)
         .nested("front", front)
         .nested("verify", verify)
         .nested("guesses", guesses)

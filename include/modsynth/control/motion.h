@@ -126,8 +126,9 @@ void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
                         std::vector<Sample>& samples);
 
 /// Sets t: each step takes the longer of path length / ee_speed and
-/// largest joint change / joint_speed. Throws std::invalid_argument when the
-/// options are not valid.
+/// largest joint change / joint_speed. A plain timing without
+/// accelerations; solutions are timed by retime() (retime.h) instead. Throws std::invalid_argument
+/// when the options are not valid.
 void assign_times(std::vector<Sample>& samples, const MotionOptions& options);
 
 }  // namespace modsynth::control

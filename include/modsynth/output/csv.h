@@ -1,8 +1,9 @@
 #pragma once
-// The control as a CSV table for position-controlled actuators: one row per
-// sample, `t,q1,...,qn,phase,primitive` (and `,stroke` when the motion has
-// several strokes; phase `travel` between them), angles in radians, never
-// wrapped.
+// The control as a CSV table for actuators: one row per sample,
+// `t,q1,...,qn,phase,primitive`, then `qd1,...,qdn,qdd1,...,qddn` when the
+// motion is timed (its samples carry velocities and accelerations), and
+// `,stroke` last when the motion has several strokes (phase `travel` between
+// them); angles in radians, never wrapped, rates in rad/s and rad/s^2.
 #include <string>
 
 #include <modsynth/synth/solution.h>

@@ -1,6 +1,7 @@
 #pragma once
 // The outputs people use besides the solution file, written together by
-// `solve` and by `export`: report (HTML), URDF, trajectory CSV, build sheet.
+// `solve` and by `export`: report (HTML), URDF, trajectory CSV, ROS 2 joint
+// trajectory (YAML), build sheet.
 #include <string>
 #include <vector>
 
@@ -16,14 +17,16 @@ struct ExportPaths {
     std::string urdf;
     std::string csv;
     std::string build_sheet;
+    std::string joint_trajectory{};
 
     bool any() const {
-        return !report.empty() || !urdf.empty() || !csv.empty() || !build_sheet.empty();
+        return !report.empty() || !urdf.empty() || !csv.empty() || !build_sheet.empty() ||
+               !joint_trajectory.empty();
     }
 };
 
-/// Writes every wanted output. The report is always possible; the URDF, CSV
-/// and build sheet need a robot, so for an unsolved solution they are not
+/// Writes every wanted output. The report is always possible; the URDF, CSV,
+/// joint trajectory and build sheet need a robot, so for an unsolved solution they are not
 /// written and the returned list says so, one line each (empty: all written).
 /// Throws std::runtime_error naming the path when a file cannot be written.
 std::vector<std::string> write_exports(const task::Task& task, const synth::Solution& solution,

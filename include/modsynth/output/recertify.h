@@ -13,7 +13,10 @@ namespace modsynth::output {
 
 /// Checks that the solution fits the task (check_solution_fits, which
 /// throws InputError) and, for a solved one, replaces its certificate with
-/// the verifier's. Returns the report's "Certificate source" note: set when
+/// the verifier's; a motion without velocities and accelerations is timed
+/// (control::retime) with the task's joint limits, its q unchanged. Throws
+/// InputError naming robot.joint_limits when the task's per-joint limits do
+/// not fit the robot's joint count. Returns the report's "Certificate source" note: set when
 /// the file carried no certificate to compare with, else "".
 std::string recertify(const task::Task& task, io::ParsedSolution& parsed);
 

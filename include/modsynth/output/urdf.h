@@ -16,6 +16,10 @@ namespace modsynth::output {
 /// give its URDF limits.
 constexpr double kJointLimitMargin = 0.05;
 
+/// The name of joint k (0-based, from the base): "joint_1", ... Other
+/// outputs that address the joints (joint_trajectory.h) use it too.
+std::string urdf_joint_name(int k);
+
 /// The model of a solved solution (its robot and, for the joint limits,
 /// its samples); the module sizes come from task.robot, the masses and
 /// ratings from the catalog: the modules of solution.modules when chosen,

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <modsynth/control/motion.h>
+#include <modsynth/control/retime.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/solution.h>
@@ -17,6 +18,9 @@ struct SynthesisOptions {
     double time_limit = 60.0;  ///< seconds, wall clock, for the whole run
     unsigned seed = 0;         ///< varies the initial guesses deterministically
     control::MotionOptions motion;
+    /// How a certified motion is timed: with the task's joint limits (or
+    /// the modules' defaults, control::joint_limits_for()) and these caps.
+    control::RetimeOptions retime;
     /// The front stage's options. Its time_limit caps each check, which
     /// the run shortens to what is left of its own time; its deadline is
     /// set by the run.

@@ -25,6 +25,15 @@ struct BaseRegion {
     }
 };
 
+/// Joint speed and acceleration limits a controller must respect
+/// (formats.md `robot.joint_limits`), in rad/s and rad/s^2. Each list holds
+/// one value for every joint, or one value per joint (then its length is
+/// the only joint count the task allows).
+struct JointLimitsSpec {
+    std::vector<double> velocity;
+    std::vector<double> acceleration;
+};
+
 /// Defaults are those of formats.md.
 struct RobotSpec {
     std::vector<int> dof{2, 3};  ///< allowed joint counts, fewest preferred
@@ -54,6 +63,9 @@ struct RobotSpec {
     /// joint axes, where it loads no joint (the bearings carry it) and the
     /// torques are inertial only.
     std::optional<Vec2> gravity;
+    /// Absent: the motion is timed with the modules' limits
+    /// (control::default_joint_limits()).
+    std::optional<JointLimitsSpec> joint_limits;
 };
 
 struct Task {

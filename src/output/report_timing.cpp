@@ -1,0 +1,161 @@
+#include "report_timing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include <modsynth/control/joint_limits.h>
+#include <modsynth/task/input_error.h>
+#include <modsynth/text/format.h>
+
+#include "plot.h"
+
+namespace modsynth::output::timing {
+namespace {
+
+using Samples = std::vector<control::Sample>;
+using Pick = std::function<const std::vector<double>&(const control::Sample&)>;
+
+constexpr double kWidth = 860.0, kHeight = 170.0;
+constexpr double kLeft = 64.0, kRight = 12.0, kTop = 22.0, kBottom = 26.0;
+
+struct Axes {
+    double t_end = 1.0, lo = -1.0, hi = 1.0;
+    double x(double t) const { return kLeft + (kWidth - kLeft - kRight) * t / t_end; }
+    double y(double v) const { return kTop + (kHeight - kTop - kBottom) * (hi - v) / (hi - lo); }
+};
+
+/// The curve of joint k, at most two points (its lowest and highest) per
+/// pixel column: a long motion stays a small file, and no peak is lost.
+std::string curve(const Samples& s, const Pick& pick, std::size_t k, const Axes& a) {
+    std::string out;
+    const int columns = static_cast<int>(kWidth - kLeft - kRight);
+    std::size_t i = 0;
+    while (i < s.size()) {
+        const int column = static_cast<int>(std::floor(s[i].t / a.t_end * columns));
+        std::size_t lo = i, hi = i;
+        std::size_t j = i;
+        for (; j < s.size() && static_cast<int>(std::floor(s[j].t / a.t_end * columns)) == column;
+             ++j) {
+            if (pick(s[j])[k] < pick(s[lo])[k]) lo = j;
+            if (pick(s[j])[k] > pick(s[hi])[k]) hi = j;
+        }
+        for (std::size_t m : {std::min(lo, hi), std::max(lo, hi)}) {
+            out += (out.empty() ? "" : " ") + plot::n2(a.x(s[m].t)) + "," +
+                   plot::n2(a.y(pick(s[m])[k]));
+            if (lo == hi) break;
+        }
+        i = j;
+    }
+    return out;
+}
+
+std::string chart(const char* id, const std::string& title, const Samples& s, const Pick& pick,
+                  const std::vector<double>* limits) {
+    const std::size_t dof = s[0].q.size();
+    Axes a;
+    a.t_end = std::max(s.back().t, 1e-9);
+    a.lo = 1e300;
+    a.hi = -1e300;
+    for (const auto& x : s) {
+        for (double v : pick(x)) {
+            a.lo = std::min(a.lo, v);
+            a.hi = std::max(a.hi, v);
+        }
+    }
+    if (limits) {
+        for (double l : *limits) {
+            a.lo = std::min(a.lo, -l);
+            a.hi = std::max(a.hi, l);
+        }
+    }
+    const double span = std::max(a.hi - a.lo, 1e-6);
+    a.lo -= 0.05 * span;
+    a.hi += 0.05 * span;
+    std::string out = std::string("<svg class=\"chart\" id=\"") + id + "\" width=\"" +
+                      plot::n2(kWidth) + "\" height=\"" + plot::n2(kHeight) + "\" viewBox=\"0 0 " +
+                      plot::n2(kWidth) + " " + plot::n2(kHeight) + "\" role=\"img\">\n";
+    out += "<text x=\"" + plot::n2(kLeft) + "\" y=\"14\" font-size=\"12\">" + plot::escape(title) +
+           "</text>\n";
+    // Frame, zero line and the axis figures.
+    out += "<rect x=\"" + plot::n2(kLeft) + "\" y=\"" + plot::n2(kTop) + "\" width=\"" +
+           plot::n2(kWidth - kLeft - kRight) + "\" height=\"" + plot::n2(kHeight - kTop - kBottom) +
+           "\" fill=\"none\" stroke=\"#bbb\"/>\n";
+    if (a.lo < 0.0 && a.hi > 0.0)
+        out += "<line x1=\"" + plot::n2(kLeft) + "\" x2=\"" + plot::n2(kWidth - kRight) +
+               "\" y1=\"" + plot::n2(a.y(0.0)) + "\" y2=\"" + plot::n2(a.y(0.0)) +
+               "\" stroke=\"#ddd\"/>\n";
+    for (double v : {a.lo, a.hi})
+        out += "<text x=\"" + plot::n2(kLeft - 4.0) + "\" y=\"" + plot::n2(a.y(v) + 4.0) +
+               "\" font-size=\"10\" text-anchor=\"end\">" + text::format("%.3g", v) + "</text>\n";
+    out += "<text x=\"" + plot::n2(kWidth - kRight) + "\" y=\"" + plot::n2(kHeight - 8.0) +
+           "\" font-size=\"10\" text-anchor=\"end\">" + text::format("%.3f s", s.back().t) +
+           "</text>\n<text x=\"" + plot::n2(kLeft) + "\" y=\"" + plot::n2(kHeight - 8.0) +
+           "\" font-size=\"10\">0 s</text>\n";
+    for (std::size_t k = 0; k < dof; ++k) {
+        const std::string colour = plot::primitive_colour(static_cast<int>(k));
+        if (limits) {
+            for (double v : {(*limits)[k], -(*limits)[k]})
+                out += "<line class=\"limit\" x1=\"" + plot::n2(kLeft) + "\" x2=\"" +
+                       plot::n2(kWidth - kRight) + "\" y1=\"" + plot::n2(a.y(v)) + "\" y2=\"" +
+                       plot::n2(a.y(v)) + "\" stroke=\"" + colour +
+                       "\" stroke-dasharray=\"6 4\" stroke-width=\"1\"/>\n";
+        }
+        out += "<polyline class=\"joint\" data-joint=\"" + std::to_string(k + 1) +
+               "\" fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"1.2\" points=\"" +
+               curve(s, pick, k, a) + "\"/>\n";
+    }
+    return out + "</svg>\n";
+}
+
+std::string limit_text(const std::vector<double>& values, const char* unit) {
+    std::string out;
+    for (std::size_t k = 0; k < values.size(); ++k)
+        out += (k ? ", " : "") + text::format("%.3g", values[k]);
+    return out + " " + unit;
+}
+
+}  // namespace
+
+std::string section(const task::Task& task, const synth::Solution& solution) {
+    const Samples& s = solution.samples;
+    if (solution.status != synth::Status::Solved || s.empty() || s[0].qd.empty() ||
+        s[0].qdd.empty())
+        return "";
+    const std::size_t dof = s[0].q.size();
+    std::optional<control::JointLimits> limits;
+    try {
+        limits = control::joint_limits_for(task, static_cast<int>(dof));
+    } catch (const task::InputError&) {
+        // Limits for another joint count: the charts go without them.
+    }
+    std::string legend;
+    for (std::size_t k = 0; k < dof; ++k)
+        legend += "<li><span class=\"swatch\" style=\"background:" +
+                  plot::primitive_colour(static_cast<int>(k)) + "\"></span>joint " +
+                  std::to_string(k + 1) + "</li>";
+    std::string out = "<section id=\"timing\">\n<h2>Timing</h2>\n<p class=\"note\">";
+    out += text::format("Motion time %.3f s. ", s.back().t);
+    if (limits) {
+        out += std::string(task.robot.joint_limits ? "Joint limits of the task"
+                                                   : "Joint limits of the modules (HEBI X8-9)") +
+               ": velocity " + limit_text(limits->velocity, "rad/s") + ", acceleration " +
+               limit_text(limits->acceleration, "rad/s&sup2;") + " (dashed). ";
+    }
+    out += "At rest at the start, the end and every corner.</p>\n<ul class=\"legend\">" + legend +
+           "</ul>\n";
+    out += chart(
+        "chart-q", "Joint angles q (rad)", s,
+        [](const control::Sample& x) -> const std::vector<double>& { return x.q; }, nullptr);
+    out += chart(
+        "chart-qd", "Joint velocities qd (rad/s)", s,
+        [](const control::Sample& x) -> const std::vector<double>& { return x.qd; },
+        limits ? &limits->velocity : nullptr);
+    out += chart(
+        "chart-qdd", "Joint accelerations qdd (rad/s\u00b2)", s,
+        [](const control::Sample& x) -> const std::vector<double>& { return x.qdd; },
+        limits ? &limits->acceleration : nullptr);
+    return out + "</section>\n";
+}
+
+}  // namespace modsynth::output::timing
