@@ -100,7 +100,8 @@ nlohmann::json to_json(const synth::Solution& s) {
         const char* phase = x.phase == control::Phase::Trace        ? "trace"
                             : x.phase == control::Phase::Transition ? "transition"
                                                                     : "travel";
-        nlohmann::json sample = {{"t", x.t}, {"phase", phase}, {"primitive", x.primitive}, {"q", x.q}};
+        nlohmann::json sample = {
+            {"t", x.t}, {"phase", phase}, {"primitive", x.primitive}, {"q", x.q}};
         if (!x.qd.empty()) sample["qd"] = x.qd;
         if (!x.qdd.empty()) sample["qdd"] = x.qdd;
         if (strokes) sample["stroke"] = x.stroke;

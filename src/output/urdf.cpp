@@ -134,10 +134,9 @@ std::vector<Range> joint_ranges(const synth::Solution& solution) {
 
 std::string revolute(int k, const std::string& parent, double x, double z, const Range& range,
                      const hardware::Actuator& module) {
-    return "  <joint name=\"" + urdf_joint_name(k) +
-           "\" type=\"revolute\">\n    <parent link=\"" + parent + "\"/>\n    <child link=\"link_" +
-           std::to_string(k + 1) + "\"/>\n    " + origin(x, 0.0, z) +
-           "\n    <axis xyz=\"0 0 1\"/>\n    <limit lower=\"" +
+    return "  <joint name=\"" + urdf_joint_name(k) + "\" type=\"revolute\">\n    <parent link=\"" +
+           parent + "\"/>\n    <child link=\"link_" + std::to_string(k + 1) + "\"/>\n    " +
+           origin(x, 0.0, z) + "\n    <axis xyz=\"0 0 1\"/>\n    <limit lower=\"" +
            num(range.lower - kJointLimitMargin) + "\" upper=\"" +
            num(range.upper + kJointLimitMargin) + "\" effort=\"" + num(module.peak_torque) +
            "\" velocity=\"" + num(module.max_speed) + "\"/>\n  </joint>\n";
