@@ -35,6 +35,25 @@ printf '%s' '{"format": "modsynth-task/1", "trajectory": [{"type": "line", "star
 expect_exit 2 "solve with an unknown module" "$bin" solve "$tmp/unknown_module.json" -o "$tmp/unknown_module.out.json"
 grep -q 'robot.modules\[1\]: the module catalog has no "X9-9"' "$tmp/err" || fail "the unknown module is not named: $(cat "$tmp/err")"
 expect_exit 2 "validate with an unknown module" "$bin" validate "$tmp/unknown_module.json"
+# A certified motion no allowed module carries is not "solved": it is
+# "unknown", and the answer names the joint, the module, the time and margin.
+python3 - "$root/tasks/rose.json" "$tmp/heavy.json" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+t["robot"].update({"modules": ["X5-1"], "payload": 5.0, "gravity": [0.0, -9.81]})
+json.dump(t, open(sys.argv[2], "w"))
+PY
+expect_exit 4 "solve with a payload no allowed module carries" "$bin" solve "$tmp/heavy.json" -o "$tmp/heavy.out.json" --quiet
+python3 - "$tmp/heavy.out.json" <<'PY' || fail "the overload is not explained: $(cat "$tmp/heavy.out.json")"
+import json, re, sys
+d = json.load(open(sys.argv[1]))
+e = d["explanation"]
+assert d["status"] == "unknown" and "samples" not in d
+assert re.search(r"joint 1 is overloaded", e["message"]), e["message"]
+assert "X5-1" in e["message"] and re.search(r"margin -[0-9.]+ N m", e["message"])
+assert re.search(r"at t = [0-9.]+ s", e["message"])
+assert set(e["core"]) == {"robot.modules", "robot.payload", "robot.gravity"}, e["core"]
+PY
 expect_exit 2 "solve without -o" "$bin" solve "$root/tasks/rose.json"
 expect_exit 2 "negative time limit" "$bin" solve "$root/tasks/rose.json" -o "$tmp/x.json" --time-limit -1
 expect_exit 2 "missing file" "$bin" validate "$tmp/does-not-exist.json"

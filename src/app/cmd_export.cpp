@@ -31,9 +31,10 @@ int run_export(const ExportArgs& a) {
     io::ParsedSolution parsed = io::load_solution(a.solution);
     output::ReportFigures figures;
     figures.certificate_note = output::recertify(task, parsed);
+    const bool was_solved = parsed.solution.status == synth::Status::Solved;
     choose_modules(task, catalog, parsed.solution);
-    if (parsed.solution.modules && parsed.solution.modules->overloaded_joint > 0)
-        std::fprintf(stderr, "warning: %s\n", parsed.solution.modules->message.c_str());
+    if (was_solved && parsed.solution.status != synth::Status::Solved)
+        std::fprintf(stderr, "error: %s\n", parsed.solution.explanation.message.c_str());
     const synth::Solution& s = parsed.solution;
     if (s.status == synth::Status::Solved && !s.certificate.ok)
         std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),

@@ -35,12 +35,7 @@ struct SolveArgs {
 
 void print_summary(const task::Task& task, const synth::Solution& solution, double seconds,
                    const synth::SynthesisStats& stats, const std::string& output) {
-    // A certified motion that no allowed module carries is not a plain
-    // "solved": the status line says which joint is overloaded.
-    const bool overloaded = solution.modules && solution.modules->overloaded_joint > 0;
-    const std::string status = overloaded ? text::format("solved, but joint %d is overloaded",
-                                                         solution.modules->overloaded_joint)
-                                          : std::string(synth::to_string(solution.status));
+    const std::string status = synth::to_string(solution.status);
     std::printf("%s: %s in %.3f s (front stage %.3f s, refinement %.3f s, verification %.3f s)\n",
                 text::printable(task.name, 80).c_str(), status.c_str(), seconds,
                 stats.front_seconds, stats.refine_seconds, stats.verify_seconds);
@@ -96,7 +91,7 @@ int run_solve(const SolveArgs& a) {
     options.time_limit = std::max(0.0, a.time_limit - elapsed());
     options.seed = a.seed;
     options.retime.ee_speed = a.ee_speed;
-    options.retime.joint_speed = a.joint_speed;
+    options.retime.joint_speed = std::min(a.joint_speed, module_speed_cap(task, catalog));
     options.progress = [&](const std::string& line) {
         watchdog.set_stage(line.size() > 11 ? line.substr(11) : line);  // without the clock
         if (!a.quiet) std::cerr << line << std::endl;

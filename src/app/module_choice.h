@@ -15,7 +15,14 @@ namespace modsynth::app {
 /// without a choice of modules, and a note on stderr says why.
 std::optional<hardware::Catalog> catalog_for(const task::Task& task);
 
-/// Sets solution.modules for a solved solution when there is a catalog.
+/// The joint speed every allowed module reaches: a cap for timing a task
+/// that names its modules but no robot.joint_limits, so that whichever module
+/// is chosen runs the motion (infinity when the task names no modules).
+double module_speed_cap(const task::Task& task, const std::optional<hardware::Catalog>& catalog);
+
+/// Sets solution.modules for a solved solution when there is a catalog. When
+/// no allowed module carries some joint, the answer becomes "unknown" with
+/// an explanation naming the joint, the module, the worst time and margin.
 void choose_modules(const task::Task& task, const std::optional<hardware::Catalog>& catalog,
                     synth::Solution& solution);
 
