@@ -80,6 +80,8 @@ for s in (samples[0], samples[-1]):
 rows = list(csv.reader(open(out + "/t.csv")))
 names = ["t"] + [f"q{k+1}" for k in range(dof)] + ["phase", "primitive"] + \
         [f"qd{k+1}" for k in range(dof)] + [f"qdd{k+1}" for k in range(dof)]
+if "stroke" in samples[0]:  # several strokes: the stroke column comes last
+    names.append("stroke")
 assert rows[0] == names, rows[0]
 assert len(rows) == len(samples) + 1, (len(rows), len(samples))
 for s, r in zip(samples, rows[1:]):
@@ -148,6 +150,11 @@ with_limits "$root/tasks/clean-table.json" "$tmp/clean.json" \
 check_task clean-table "$tmp/clean.json"
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['robot']['dof']==3" \
     "$tmp/clean-table/solution.json" || fail "per-joint limits of 3 joints, but not a 3-joint robot"
+# Several strokes: the travel between them is timed like the rest.
+with_limits "$root/tasks/strokes-two-circles.json" "$tmp/strokes.json" '{"velocity": 2.0, "acceleration": 5}'
+check_task strokes-two-circles "$tmp/strokes.json"
+with_limits "$root/tasks/strokes-around-post.json" "$tmp/post.json" '{"velocity": 3.35, "acceleration": 10}'
+check_task strokes-around-post "$tmp/post.json"
 
 if [ -f "$planter" ]; then
     python3 "$planter" --kind 2dof --seed 7 --out "$tmp/planted" >/dev/null ||
