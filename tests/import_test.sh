@@ -141,4 +141,20 @@ expect_error "$tmp/big.svg" "too large"
 timeout 60 "$bin" import "$root/tasks/drawings/sketch.svg" -o "$tmp/t.json" --tolerance 1e-9 --width 100 >"$tmp/out" 2>"$tmp/err"
 [ $? -eq 2 ] && grep -q "raise --tolerance" "$tmp/err" || fail "tolerance 1e-9: $(cat "$tmp/err")"
 
+# Drawings become tasks that solve: the SVG (Béziers, an ellipse, letters as
+# paths) and the DXF (bulges, a spline), placed in reach of a base region,
+# each solved with a certified motion over every stroke.
+grader_py=$root/../shared/grader/check_solution.py
+for drawing in sketch.svg bracket.dxf; do
+    "$bin" import "$root/tasks/drawings/$drawing" -o "$tmp/solve-$drawing.json" --at 0.3,0.1 \
+        --base -0.1,-0.1,0.1,0.1 >"$tmp/out" 2>&1 || fail "import $drawing to solve: $(cat "$tmp/out")"
+    timeout 120 "$bin" solve "$tmp/solve-$drawing.json" -o "$tmp/solve-$drawing.sol.json" --quiet \
+        >"$tmp/out" 2>&1 || fail "solve the imported $drawing: exit $?: $(tail -3 "$tmp/out")"
+    grep -q "certified over the whole motion" "$tmp/out" || fail "imported $drawing: not certified"
+    if [ -f "$grader_py" ]; then
+        python3 "$grader_py" "$tmp/solve-$drawing.json" "$tmp/solve-$drawing.sol.json" \
+            --expect solved >"$tmp/grade" 2>&1 || fail "imported $drawing: $(tail -2 "$tmp/grade")"
+    fi
+done
+
 finish import
