@@ -4,6 +4,7 @@
 #include <fstream>
 #include <string>
 
+#include <modsynth/control/joint_limits.h>
 #include <modsynth/hardware/catalog.h>
 
 #include "../output/output_fixtures.h"
@@ -53,6 +54,8 @@ TEST_CASE("the shipped catalog has the paper's HEBI X-series modules", "[hardwar
     CHECK(c.tube_closest_to(0.03175).mass_per_metre == Approx(0.4));
     CHECK(c.tube_closest_to(0.009).diameter == Approx(0.0095));
     CHECK(c.adapter().mass > 0.0);
+    // A task without joint limits is timed with the X8-9's (joint_limits.h).
+    CHECK(c.actuator("X8-9")->max_speed == Approx(modsynth::control::kDefaultJointSpeed));
 }
 
 TEST_CASE("the program finds its catalog", "[hardware]") {

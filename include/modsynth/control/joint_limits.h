@@ -17,15 +17,15 @@ struct JointLimits {
 };
 
 /// The modules' limits when the task gives none: a HEBI X8-9 actuator.
-/// Speed: 32 rpm = 3.35 rad/s, the X8-9's maximum output speed in HEBI's
-/// X-Series datasheet (docs.hebi.us/hardware.html, "X-Series Actuators",
-/// speed-torque curves: about 30 rpm while spinning continuously).
+/// Speed: the X8-9's top speed in the module catalog
+/// (catalog/hebi-x-series.json, 3.142 rad/s = 30 rpm, after HEBI's
+/// hebi_description); tests/hardware/catalog_test.cpp holds the two equal.
 /// Acceleration: the datasheet gives none; 10 rad/s^2 reaches full speed
 /// in a third of a second, and is a conservative figure for the sub-metre
 /// tube arms modsynth builds: a 0.5 m link carrying a 0.5 kg module at its
 /// end (about 0.13 kg m^2) needs some 1.3 N m for it, a small share of the
 /// 9 N m the X8-9 is rated for.
-inline constexpr double kDefaultJointSpeed = 3.35;
+inline constexpr double kDefaultJointSpeed = 3.142;
 inline constexpr double kDefaultJointAcceleration = 10.0;
 
 /// kDefaultJointSpeed and kDefaultJointAcceleration for every joint.
