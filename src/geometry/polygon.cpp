@@ -69,6 +69,15 @@ bool point_in_convex_polygon(const Vec2& p, const std::vector<Vec2>& polygon) {
     return true;
 }
 
+double segment_convex_polygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& polygon) {
+    if (point_in_convex_polygon(a, polygon) || point_in_convex_polygon(b, polygon)) return 0.0;
+    if (polygon.size() == 1) return point_segment(polygon[0], a, b);
+    double d = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+        d = std::min(d, segment_segment(a, b, polygon[i], polygon[(i + 1) % polygon.size()]));
+    return d;
+}
+
 double point_convex_polygon(const Vec2& p, const std::vector<Vec2>& polygon) {
     const std::size_t n = polygon.size();
     if (n == 0) return std::numeric_limits<double>::infinity();

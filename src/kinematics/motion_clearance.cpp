@@ -10,21 +10,19 @@
 #include <modsynth/kinematics/kinematics.h>
 
 namespace modsynth::kinematics {
-namespace {
-
 using geometry::Vec2;
 
-double segment_polygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& poly) {
-    if (geometry::point_in_convex_polygon(a, poly) || geometry::point_in_convex_polygon(b, poly))
-        return 0.0;
-    if (poly.size() == 1) return geometry::point_segment(poly[0], a, b);
-    double d = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < poly.size(); ++i)
-        d = std::min(d, geometry::segment_segment(a, b, poly[i], poly[(i + 1) % poly.size()]));
-    return d;
+std::vector<double> sweep_bounds(const Robot& robot, std::span<const double> phi_a,
+                                 std::span<const double> phi_b) {
+    std::vector<double> e(phi_a.size());
+    double acc = 0.0;
+    for (std::size_t k = 0; k < e.size(); ++k) {
+        const double d = phi_b[k] - phi_a[k];
+        acc += robot.link_lengths[k] * d * d;
+        e[k] = acc;
+    }
+    return e;
 }
-
-}  // namespace
 
 PoseClearance linear_motion_clearance(std::span<const geometry::Disc> obstacles, const Robot& robot,
                                       std::span<const double> qa, std::span<const double> qb) {
@@ -33,13 +31,7 @@ PoseClearance linear_motion_clearance(std::span<const geometry::Disc> obstacles,
     const std::vector<Vec2> b = forward(robot.base, robot.link_lengths, qb);
     const std::vector<double> pa = absolute_angles(qa), pb = absolute_angles(qb);
     const ClearanceRule rule{robot.link_diameter};
-    std::vector<double> e(n);
-    double acc = 0.0;
-    for (int k = 0; k < n; ++k) {
-        const double d = pb[k] - pa[k];
-        acc += robot.link_lengths[k] * d * d;
-        e[k] = acc;
-    }
+    const std::vector<double> e = sweep_bounds(robot, pa, pb);
     PoseClearance c;
     for (int k = 0; k < n; ++k) {
         const std::vector<Vec2> hull = geometry::convex_hull({a[k], a[k + 1], b[k], b[k + 1]});
@@ -47,8 +39,8 @@ PoseClearance linear_motion_clearance(std::span<const geometry::Disc> obstacles,
             c.obstacles = std::min(c.obstacles, geometry::point_convex_polygon(ob.center, hull) -
                                                     e[k] / 8.0 - rule.obstacle_distance(ob));
         if (k < n - 1)
-            c.self = std::min(c.self, segment_polygon(a[n], b[n], hull) - (e[n - 1] + e[k]) / 8.0 -
-                                          rule.self_distance());
+            c.self = std::min(c.self, geometry::segment_convex_polygon(a[n], b[n], hull) -
+                                          (e[n - 1] + e[k]) / 8.0 - rule.self_distance());
     }
     return c;
 }

@@ -9,6 +9,7 @@
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/kinematics/motion_clearance.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -21,16 +22,6 @@ using control::Sample;
 using geometry::Vec2;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kGeomEps = 1e-9;
-
-double segment_polygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& poly) {
-    if (geometry::point_in_convex_polygon(a, poly) || geometry::point_in_convex_polygon(b, poly))
-        return 0.0;
-    if (poly.size() == 1) return geometry::point_segment(poly[0], a, b);
-    double d = kInf;
-    for (std::size_t i = 0; i < poly.size(); ++i)
-        d = std::min(d, geometry::segment_segment(a, b, poly[i], poly[(i + 1) % poly.size()]));
-    return d;
-}
 
 // Largest distance from the chord of an arc of radius r to the arc, for a
 // chord of length c (the shorter arc).
@@ -240,13 +231,7 @@ private:
             return;  // the bounds below assume small steps
         }
         // E_k: bound on |p''| for any point of link k (certified-verification.md).
-        std::vector<double> e(n);
-        double acc = 0.0;
-        for (int k = 0; k < n; ++k) {
-            const double d = b.phi[k] - a.phi[k];
-            acc += robot_.link_lengths[k] * d * d;
-            e[k] = acc;
-        }
+        const std::vector<double> e = kinematics::sweep_bounds(robot_, a.phi, b.phi);
         const bool in_transition = sa.phase == Phase::Transition || sb.phase == Phase::Transition;
         // Between strokes (travel, or one stroke's end straight to the next
         // one's start) the EE is free and only clearance is checked.
@@ -297,8 +282,9 @@ private:
                 settle(bound, ok);
             }
             if (k < n - 1) {
-                const double bound = segment_polygon(a.joints[n], b.joints[n], hull) -
-                                     (e[n - 1] + e[k]) / 8.0 - rule.self_distance();
+                const double bound =
+                    geometry::segment_convex_polygon(a.joints[n], b.joints[n], hull) -
+                    (e[n - 1] + e[k]) / 8.0 - rule.self_distance();
                 cert_.min_self_clearance = std::min(cert_.min_self_clearance, bound);
                 const bool ok =
                     rule.self_margin(a.joints[n], a.joints[k], a.joints[k + 1]) >= 0.0 &&

@@ -14,6 +14,8 @@ std::vector<Vec2> convex_hull(std::vector<Vec2> points);
 bool point_in_convex_polygon(const Vec2& p, const std::vector<Vec2>& polygon);
 /// Distance from p to a convex polygon (ccw), 0 inside.
 double point_convex_polygon(const Vec2& p, const std::vector<Vec2>& polygon);
+/// Distance from the segment ab to a convex polygon (ccw), 0 when they meet.
+double segment_convex_polygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& polygon);
 /// Gap between a disc and a convex polygon (ccw), 0 when they overlap.
 double disc_convex_polygon(const Vec2& center, double radius, const std::vector<Vec2>& polygon);
 /// How many times the closed polygon (any shape, self-crossings allowed; the
