@@ -359,6 +359,52 @@ bool looks_like_dxf(std::string_view text) {
     return false;
 }
 
+/// dxflib sizes its arrays from counts the file declares (a LWPOLYLINE's
+/// vertex count, a SPLINE's knot, control and fit point counts, a HATCH's
+/// loops and edges, a LEADER's vertices) before reading the items. A few
+/// bytes declaring 200 million vertices would take gigabytes, so every such
+/// count must be one the file could hold: at most one item per two lines
+/// (each item takes at least one group code and value).
+void check_declared_counts(std::string_view text) {
+    static const std::map<std::string, std::vector<std::string>> kCounts = {
+        {"LWPOLYLINE", {"90"}},
+        {"SPLINE", {"72", "73", "74"}},
+        {"HATCH", {"91", "93"}},
+        {"LEADER", {"76"}}};
+    const auto trim = [](std::string_view v) {
+        const auto b = v.find_first_not_of(" \t\r");
+        if (b == std::string_view::npos) return std::string_view{};
+        return v.substr(b, v.find_last_not_of(" \t\r") - b + 1);
+    };
+    std::vector<std::string_view> lines;
+    for (std::size_t at = 0; at <= text.size();) {
+        const std::size_t end = std::min(text.find('\n', at), text.size());
+        lines.push_back(trim(text.substr(at, end - at)));
+        at = end + 1;
+    }
+    const long long room = static_cast<long long>(lines.size() / 2);
+    const std::vector<std::string>* codes = nullptr;
+    std::string entity;
+    for (std::size_t i = 0; i + 1 < lines.size(); i += 2) {
+        const std::string code(lines[i]);
+        if (code == "0") {
+            entity = std::string(lines[i + 1]);
+            const auto it = kCounts.find(entity);
+            codes = it == kCounts.end() ? nullptr : &it->second;
+            continue;
+        }
+        if (!codes || std::find(codes->begin(), codes->end(), code) == codes->end()) continue;
+        long long n = 0;
+        std::istringstream in{std::string(lines[i + 1])};
+        if (!(in >> n) || n < 0 || n > room) {
+            throw InputError(entity + " (line " + std::to_string(i + 2) + ")",
+                             "group code " + code + " declares " + std::string(lines[i + 1]) +
+                                 " items, more than the file's " + std::to_string(lines.size()) +
+                                 " lines can hold");
+        }
+    }
+}
+
 }  // namespace
 
 Drawing read_dxf(std::string_view text, const ReadOptions& options) {
@@ -369,6 +415,7 @@ Drawing read_dxf(std::string_view text, const ReadOptions& options) {
     if (!looks_like_dxf(text)) {
         throw InputError("(document)", "not a DXF file: it does not begin with a SECTION");
     }
+    check_declared_counts(text);
     Collector collector(options);
     DL_Dxf dxf;
     std::stringstream stream{std::string(text)};
