@@ -222,6 +222,7 @@ def test_solve_and_files():
         check(any(line.startswith("[") for line in job.get("log", [])), "progress lines were followed")
         for name, marker in [("solution.json", b'"status": "solved"'), ("report.html", b'<svg id="plot"'),
                              ("robot.urdf", b"<robot"), ("trajectory.csv", b"t,q1,q2"),
+                             ("joint-trajectory.yaml", b"joint_names:"),
                              ("build-sheet.md", b"#")]:
             url = job.get("files", {}).get(name)
             status, headers, body = s.request("GET", url or "/missing")

@@ -11,6 +11,7 @@ import { $, h } from "./dom.js";
 // (the task itself is not offered: the page holds it).
 const DOWNLOAD_LABELS = {
   "solution.json": "solution JSON", "robot.urdf": "URDF", "trajectory.csv": "CSV",
+  "joint-trajectory.yaml": "ROS 2 joint trajectory",
   "report.html": "report", "build-sheet.md": "build sheet", "solve.log": "log",
 };
 /// Results that come with the report's drawing.

@@ -494,6 +494,7 @@ private:
         if (ends(".md")) return "text/markdown; charset=utf-8";
         if (ends(".csv")) return "text/csv; charset=utf-8";
         if (ends(".urdf")) return "application/xml";
+        if (ends(".yaml")) return "application/yaml; charset=utf-8";
         return "text/plain; charset=utf-8";
     }
 

@@ -25,9 +25,9 @@ constexpr std::size_t kLogLines = 60;
 constexpr double kExplainProofSeconds = 10.0;
 
 // The files a job may hand out, in the order clients list them.
-const std::vector<std::string> kFiles = {"solution.json",  "report.html",    "robot.urdf",
-                                         "trajectory.csv", "build-sheet.md", "task.json",
-                                         "solve.log"};
+const std::vector<std::string> kFiles = {
+    "solution.json",         "report.html",    "robot.urdf", "trajectory.csv",
+    "joint-trajectory.yaml", "build-sheet.md", "task.json",  "solve.log"};
 
 std::string number(double v) { return text::format("%.6g", v); }
 
@@ -115,6 +115,8 @@ std::string SolveJobs::start(const std::string& task_text, double time_limit) {
                  "robot.urdf",
                  "--csv",
                  "trajectory.csv",
+                 "--joint-trajectory",
+                 "joint-trajectory.yaml",
                  "--build-sheet",
                  "build-sheet.md"};
     spec.working_dir = job->dir->path();
