@@ -63,6 +63,9 @@ export class TaskModel extends EventTarget {
 
   get trajectory() { return Array.isArray(this.doc.trajectory) ? this.doc.trajectory : []; }
   get obstacles() { return Array.isArray(this.doc.obstacles) ? this.doc.obstacles : []; }
+  /// The strokes of a task of several (formats.md "Several strokes"), each
+  /// a list of primitives; empty for a task of one trajectory.
+  get strokes() { return Array.isArray(this.doc.strokes) ? this.doc.strokes.filter(Array.isArray) : []; }
   get regions() { return Array.isArray(this.doc.base_regions) ? this.doc.base_regions : []; }
 
   /// Applies `edit` to the document as one undoable step.
@@ -112,6 +115,8 @@ export class TaskModel extends EventTarget {
 
   ensureLists() {
     for (const k of ["trajectory", "obstacles", "base_regions"]) {
+      // A task of strokes holds no trajectory besides.
+      if (k === "trajectory" && Array.isArray(this.doc.strokes)) continue;
       if (!Array.isArray(this.doc[k])) this.doc[k] = [];
     }
   }
