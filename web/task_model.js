@@ -122,12 +122,25 @@ export class TaskModel extends EventTarget {
   }
 
   /// Where the next primitive starts: the end of the last one.
+  /// In a task of strokes, the last stroke's: drawing goes on from there.
   pathEnd() {
-    const t = this.trajectory;
+    const strokes = this.doc.strokes;
+    const t = Array.isArray(strokes) ? (Array.isArray(strokes[strokes.length - 1]) ? strokes[strokes.length - 1] : [])
+                                     : this.trajectory;
     return t.length ? primitiveEnd(t[t.length - 1]) : null;
   }
 
   addPrimitive(p) {
+    const strokes = this.doc.strokes;
+    if (Array.isArray(strokes)) {
+      const s = strokes.length - 1;
+      if (s >= 0 && Array.isArray(strokes[s])) {
+        this.change((d) => d.strokes[s].push(p));
+        return `strokes[${s}][${this.doc.strokes[s].length - 1}]`;
+      }
+      this.change((d) => d.strokes.push([p]));
+      return `strokes[${s + 1}][0]`;
+    }
     this.change((d) => d.trajectory.push(p));
     return partName("trajectory", this.trajectory.length - 1);
   }

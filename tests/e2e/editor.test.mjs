@@ -391,6 +391,20 @@ async function drawingImport(url) {
         `the drawing's frame lines up with the image: ${JSON.stringify(pathBox)} in ${JSON.stringify(box)}`);
   await page.screenshot({ path: path.join(outDir, "e2e-editor-import.png") });
 
+  // Drawing goes on from the last stroke's end; undo takes it back.
+  const last = doc.strokes[doc.strokes.length - 1];
+  const from = last[last.length - 1].end || last[last.length - 1].start;
+  await page.click('button[data-tool="line"]');
+  await clickAt(page, [from[0] + 0.02, from[1]]);
+  const strokes = await page.evaluate(() => window.modsynth.model.doc.strokes);
+  const added = strokes[strokes.length - 1].at(-1);
+  check(added && added.type === "line" && JSON.stringify(added.start) === JSON.stringify(from) && !("trajectory" in
+        (await page.evaluate(() => window.modsynth.model.doc))), "a line drawn after the import extends the last stroke");
+  await page.click("#undo");
+  check(JSON.stringify(await page.evaluate(() => window.modsynth.model.doc.strokes)) === JSON.stringify(doc.strokes),
+        "undo takes the line back");
+  await page.click('button[data-tool="select"]');
+
   // A broken file through the file picker: the error names the element.
   const bad = path.join(outDir, "broken.svg");
   fs.writeFileSync(bad, '<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100">\n' +
