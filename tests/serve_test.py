@@ -526,13 +526,77 @@ def test_shutdown_kills_solves():
     check(all(not os.path.exists("/proc/%d" % k) for k in kids), "no solve outlives the server")
 
 
+def test_import_drawing():
+    """POST /api/import: a drawing's bytes to the task `modsynth import` writes, with the
+    map that puts the file's page under it; a bad file is a 4xx naming its element."""
+    sketch = os.path.join(ROOT, "tasks/drawings/sketch.svg")
+    svg_type = {"Content-Type": "image/svg+xml"}
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "cli.json")
+        subprocess.run([BIN, "import", sketch, "-o", out, "--at", "0.3,0.1", "--tolerance", "0.001"],
+                       check=True, stdout=subprocess.DEVNULL)
+        cli = json.load(open(out))
+    with Server() as s:
+        status, _, body = s.json("POST", "/api/import?format=svg&at=0.3,0.1&tolerance=0.001&name=sketch",
+                                 read(sketch), svg_type)
+        check(status == 200 and body.get("task") == cli,
+              "the task is the one `modsynth import` writes with the same options (%s)" % status)
+        n = sum(len(stroke) for stroke in cli.get("strokes", [cli.get("trajectory")]))
+        check(body.get("primitives") == n and body.get("strokes") == len(cli.get("strokes", [0])),
+              "counts of primitives and strokes: %s %s" % (body.get("primitives"), body.get("strokes")))
+        check(0 < body.get("deviation", 0) <= 0.001 and body.get("tolerance") == 0.001,
+              "the deviation reached is within the tolerance: %s" % body.get("deviation"))
+        u = body.get("underlay") or {}
+        # The page is 200 x 150 mm at 96 px per inch; the map is a scale of
+        # 1 mm per unit with y flipped, so (20, 40) mm on the page, the wave's
+        # first point, lands on a vertex of the fitted path.
+        check(abs(u.get("width", 0) - 200 / 25.4 * 96) < 1e-6 and abs(u.get("height", 0) - 150 / 25.4 * 96) < 1e-6
+              and u.get("y_flip") is True, "the underlay's page size and flip: %s" % u)
+        a, b, c, d, e, f = u.get("transform", [0] * 6)
+        px = (20 / 25.4 * 96, 40 / 25.4 * 96)
+        wave = (a * px[0] + c * px[1] + e, b * px[0] + d * px[1] + f)
+        ends = [p[k] for stroke in cli["strokes"] for p in stroke for k in ("start", "end") if k in p]
+        check(any(abs(q[0] - wave[0]) < 1e-6 and abs(q[1] - wave[1]) < 1e-6 for q in ends),
+              "the underlay's map puts the wave's start on the path: %s" % (wave,))
+        check(body.get("placement", {}).get("metres_per_unit") == 0.001, "placement: %s" % body.get("placement"))
+
+        status, _, body = s.json("POST", "/api/import?format=dxf", read(os.path.join(ROOT, "tasks/drawings/bracket.dxf")),
+                                 {"Content-Type": "application/dxf"})
+        check(status == 200 and body.get("underlay") is None and body.get("primitives", 0) > 0,
+              "a DXF imports, with no page to show (%s %s)" % (status, body.get("error")))
+        bad = b'<svg xmlns="http://www.w3.org/2000/svg"><path id="p3" d="M 10,10 L 20"/></svg>'
+        status, _, body = s.json("POST", "/api/import?format=svg", bad, svg_type)
+        check(status == 422 and "path#p3" in body.get("error", "") and "path#p3" in body.get("part", ""),
+              "a malformed path: 422 naming the element: %s" % body)
+        for garbage in [b"", b"\x00\xff<svg", b"<svg", b"not xml at all", b"<html/>", b"0\nSECTION\n"]:
+            status, _, body = s.json("POST", "/api/import?format=svg", garbage, svg_type)
+            check(status == 422 and body.get("error"), "garbage %r: 422 with a message (%s)" % (garbage[:12], status))
+        for query, part in [("format=png", "format"), ("format=svg&width=-1", "width"),
+                            ("format=svg&at=1", "at"), ("format=svg&at=1,x", "at"),
+                            ("format=svg&tolerance=5", "tolerance"), ("format=svg&width=1&scale=1", "scale"),
+                            ("format=svg&rotate=1e9", "rotate")]:
+            status, _, body = s.json("POST", "/api/import?" + query, read(sketch), svg_type)
+            check(status == 400 and body.get("part") == part, "%s: 400 naming %s (%s %s)" % (query, part, status, body))
+        status, _, body = s.json("POST", "/api/import?format=svg", read(sketch), {"Content-Type": "text/plain"})
+        check(status == 415, "a drawing sent as text/plain (what a cross-site form can send): 415 (%s)" % status)
+        status, _, body = s.json("POST", "/api/import?format=svg", read(sketch), JSON_TYPE)
+        check(status == 415, "a drawing sent as JSON: 415 (%s)" % status)
+        big = b"<svg>" + b" " * (1 << 20) + b"</svg>"
+        try:
+            status, _, body = s.json("POST", "/api/import?format=svg", big, svg_type)
+        except OSError as e:
+            status, body = None, {"error": str(e)}
+        check(status == 413, "a drawing over 1 MB: 413 (%s)" % status)
+        check(s.alive(), "server alive after bad drawings")
+
+
 def main():
     tests = [test_page_and_info, test_body_limit, test_malformed_and_invalid, test_solve_and_files,
              test_infeasible_explained, test_concurrency_limit_and_cancel, test_time_limit,
              test_client_that_leaves, test_long_poll, test_garbage_does_not_kill, test_invalid_utf8,
              test_chunked_body_limit, test_host_rule, test_port_in_use, test_media_type,
              test_whole_replies, test_slow_clients, test_solves_hold_no_sockets,
-             test_shutdown_kills_solves]
+             test_shutdown_kills_solves, test_import_drawing]
     for t in tests:
         started = time.monotonic()
         try:

@@ -44,3 +44,23 @@ export async function cancel(job) {
 export function fileUrl(job, name) {
   return (job.files && job.files[name]) || job.links.self + "/files/" + name;
 }
+
+/// POST /api/import: a drawing file (.svg or .dxf) to a task, placed by
+/// `options` ({width, at: [x, y], tolerance}, each optional). {status, body}:
+/// 200 with {task, primitives, deviation, underlay ...}, or an error naming
+/// the element that could not be read.
+export async function importDrawing(file, options = {}) {
+  const dxf = /\.dxf$/i.test(file.name);
+  const query = new URLSearchParams({ format: dxf ? "dxf" : "svg", name: file.name.replace(/\.[^.]*$/, "") || "drawing" });
+  if (options.width > 0) query.set("width", options.width);
+  if (options.tolerance > 0) query.set("tolerance", options.tolerance);
+  if (Array.isArray(options.at)) query.set("at", options.at.join(","));
+  const type = dxf ? "application/dxf" : "image/svg+xml";
+  try {
+    const res = await fetch("/api/import?" + query, { method: "POST", headers: { "Content-Type": type }, body: file });
+    const body = await res.json().catch(() => ({ error: res.statusText }));
+    return { status: res.status, body };
+  } catch (e) {
+    return { status: 0, body: { error: "cannot reach the server: " + e.message } };
+  }
+}

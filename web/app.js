@@ -15,6 +15,7 @@ import { TaskModel, emptyTask, exampleTask } from "./task_model.js";
 import { Toolbar } from "./toolbar.js";
 import { Validation } from "./validation.js";
 import { $ } from "./dom.js";
+import { lengthText } from "./geometry.js";
 
 const model = new TaskModel();
 const store = new Store(model);
@@ -29,7 +30,9 @@ function setTool(tool) { store.setTool(tool); }
 
 const newTask = () => emptyTask(store.info ? store.info.robot_defaults : undefined);
 
-function loadDocument(doc, tool) {
+/// `underlay`: the drawing to show under the task, if it came from one.
+function loadDocument(doc, tool, underlay = null) {
+  store.setUnderlay(underlay);
   store.load(doc);
   canvas.fit();
   setTool(tool || "select");
@@ -44,6 +47,39 @@ async function openFile(file) {
   else loadDocument(doc);
 }
 
+/// The placement asked for in the panel; what is left empty the server
+/// decides (the file's own units, the drawing's origin at the task's).
+function importOptions() {
+  const at = $("import-at").value.split(",").map((v) => v.trim()).filter((v) => v !== "").map(Number);
+  return { width: parseFloat($("import-width").value), tolerance: parseFloat($("import-tolerance").value),
+           at: at.length === 2 && at.every(Number.isFinite) ? at : undefined };
+}
+
+async function importDrawing(file) {
+  $("import-error").textContent = "";
+  $("import-status").textContent = "importing " + file.name + " …";
+  const { status, body } = await api.importDrawing(file, importOptions());
+  if (status !== 200) {
+    $("import-status").textContent = "";
+    $("import-error").textContent = `${file.name}: ${body.error || "HTTP " + status}`;
+    return;
+  }
+  // The drawing makes the path and its obstacles; the base regions and the
+  // robot of the task being edited stay.
+  const doc = { ...body.task };
+  const current = store.doc;
+  if (Array.isArray(current.base_regions) && current.base_regions.length) doc.base_regions = current.base_regions;
+  if (current.robot && typeof current.robot === "object" && Object.keys(current.robot).length) doc.robot = current.robot;
+  const u = body.underlay;
+  const underlay = u && !/\.dxf$/i.test(file.name)
+    ? { url: URL.createObjectURL(file), width: u.width, height: u.height, transform: u.transform } : null;
+  validation.abandon();
+  store.checking();
+  loadDocument(doc, "select", underlay);
+  $("import-status").textContent = `${file.name}: ${body.primitives} primitives in ${body.strokes} stroke${body.strokes === 1 ? "" : "s"}, ` +
+    `deviation ${lengthText(body.deviation)} (tolerance ${lengthText(body.tolerance)})`;
+}
+
 new Toolbar(store, {
   undo: () => model.undo(),
   redo: () => model.redo(),
@@ -52,6 +88,7 @@ new Toolbar(store, {
   newTask: () => loadDocument(newTask(), "line"),
   example: () => loadDocument(exampleTask()),
   open: openFile,
+  importDrawing,
   save: () => files.save(store.doc),
   synthesize: (timeLimit) => {
     store.setView("editor");

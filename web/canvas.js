@@ -12,13 +12,14 @@ import { keyPoints, snapPoint } from "./snap.js";
 import { DrawTool } from "./draw_tool.js";
 import { ProofRender } from "./proof_render.js";
 import { TaskRender } from "./task_render.js";
+import { UnderlayRender } from "./underlay.js";
 import { ViewTransform } from "./view_transform.js";
 import { svg } from "./dom.js";
 
 const DRAG_PIXELS = 5;   // a press that moves further is a drag, not a click
 const HIT_PIXELS = 7;    // a click this close to a primitive is on it
 const WHEEL_ZOOM = 0.0015;
-const LAYERS = ["grid", "regions", "obstacles", "proof", "trajectory", "handles", "labels", "overlay"];
+const LAYERS = ["grid", "underlay", "regions", "obstacles", "proof", "trajectory", "handles", "labels", "overlay"];
 
 export class EditorCanvas {
   constructor(element, store, { hint, cursor }) {
@@ -32,10 +33,11 @@ export class EditorCanvas {
     for (const name of LAYERS) layers[name] = svg("g", { id: "layer-" + name }, element);
     this.view = new ViewTransform(() => this.size());
     this.task = new TaskRender(layers, store, this.view);
+    this.underlay = new UnderlayRender(layers.underlay, store, this.view);
     this.proof = new ProofRender(layers.proof, store, this.view);
     this.drawTool = new DrawTool(store, this.view, layers.overlay);
     this.listen();
-    for (const type of ["doc", "selection", "validation", "core", "witness"]) store.on(type, () => this.render());
+    for (const type of ["doc", "selection", "validation", "core", "witness", "underlay"]) store.on(type, () => this.render());
     store.on("tool", (tool) => {
       this.drawTool.cancel();
       this.svg.classList.toggle("select-tool", tool === "select");
@@ -52,6 +54,7 @@ export class EditorCanvas {
 
   render() {
     this.task.render();
+    this.underlay.render();
     this.proof.render();
     this.drawTool.render();
   }

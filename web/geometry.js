@@ -118,6 +118,9 @@ export function niceStep(x) {
 export function taskBounds(doc) {
   const pts = [];
   for (const p of doc.trajectory || []) pts.push(...samplePrimitive(p));
+  for (const s of Array.isArray(doc.strokes) ? doc.strokes : []) {
+    for (const p of Array.isArray(s) ? s : []) pts.push(...samplePrimitive(p));
+  }
   for (const o of doc.obstacles || []) {
     if (isPoint(o.center) && Number.isFinite(o.radius)) {
       pts.push([o.center[0] - o.radius, o.center[1] - o.radius], [o.center[0] + o.radius, o.center[1] + o.radius]);

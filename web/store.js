@@ -12,6 +12,7 @@
 //   synthesis   the solve's state changed (idle, starting, running, solved ...)
 //   view        the editor or the result is shown
 //   info        the server's settings arrived
+//   underlay    the drawing shown under the task changed (or went)
 
 import { concerns, inCore } from "./parts.js";
 
@@ -29,6 +30,7 @@ export class Store extends EventTarget {
     this.synthesis = "idle";
     this.view = "editor";
     this.info = null;
+    this.underlay = null;  // {url, width, height, transform}: an imported drawing
     model.addEventListener("change", () => {
       // A core names the parts of the task as it was solved.
       if (this.core.length) this.setCore([]);
@@ -65,6 +67,14 @@ export class Store extends EventTarget {
     this.setCore([]);
     this.setWitness(null);
     this.select(null);
+  }
+
+  /// The drawing to show under the task (null: none); the page's address
+  /// of the one before is let go.
+  setUnderlay(underlay) {
+    if (this.underlay && this.underlay.url) URL.revokeObjectURL(this.underlay.url);
+    this.underlay = underlay || null;
+    this.emit("underlay", this.underlay);
   }
 
   // ---------------------------------------------------------- validation

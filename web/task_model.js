@@ -63,6 +63,9 @@ export class TaskModel extends EventTarget {
 
   get trajectory() { return Array.isArray(this.doc.trajectory) ? this.doc.trajectory : []; }
   get obstacles() { return Array.isArray(this.doc.obstacles) ? this.doc.obstacles : []; }
+  /// The strokes of a task of several (formats.md "Several strokes"), each
+  /// a list of primitives; empty for a task of one trajectory.
+  get strokes() { return Array.isArray(this.doc.strokes) ? this.doc.strokes.filter(Array.isArray) : []; }
   get regions() { return Array.isArray(this.doc.base_regions) ? this.doc.base_regions : []; }
 
   /// Applies `edit` to the document as one undoable step.
@@ -112,17 +115,32 @@ export class TaskModel extends EventTarget {
 
   ensureLists() {
     for (const k of ["trajectory", "obstacles", "base_regions"]) {
+      // A task of strokes holds no trajectory besides.
+      if (k === "trajectory" && Array.isArray(this.doc.strokes)) continue;
       if (!Array.isArray(this.doc[k])) this.doc[k] = [];
     }
   }
 
   /// Where the next primitive starts: the end of the last one.
+  /// In a task of strokes, the last stroke's: drawing goes on from there.
   pathEnd() {
-    const t = this.trajectory;
+    const strokes = this.doc.strokes;
+    const t = Array.isArray(strokes) ? (Array.isArray(strokes[strokes.length - 1]) ? strokes[strokes.length - 1] : [])
+                                     : this.trajectory;
     return t.length ? primitiveEnd(t[t.length - 1]) : null;
   }
 
   addPrimitive(p) {
+    const strokes = this.doc.strokes;
+    if (Array.isArray(strokes)) {
+      const s = strokes.length - 1;
+      if (s >= 0 && Array.isArray(strokes[s])) {
+        this.change((d) => d.strokes[s].push(p));
+        return `strokes[${s}][${this.doc.strokes[s].length - 1}]`;
+      }
+      this.change((d) => d.strokes.push([p]));
+      return `strokes[${s + 1}][0]`;
+    }
     this.change((d) => d.trajectory.push(p));
     return partName("trajectory", this.trajectory.length - 1);
   }

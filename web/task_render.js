@@ -108,6 +108,28 @@ export class TaskRender {
       const s = this.view.toScreen(t[0].start);
       svg("circle", { cx: s[0], cy: s[1], r: 5, class: "path-start" }, g);
     }
+    this.renderStrokes(g);
+  }
+
+  /// A task of several strokes (an imported drawing): each stroke's
+  /// primitives, coloured along the whole, with a mark where each begins.
+  renderStrokes(g) {
+    let j = 0;
+    this.store.model.strokes.forEach((stroke, s) => {
+      stroke.forEach((p, k) => {
+        const pts = samplePrimitive(p);
+        const part = `strokes[${s}][${k}]`, colour = primitiveColour(j++);
+        if (pts.length < 2) return;
+        const screen = pts.map((q) => this.view.toScreen(q));
+        svg("polyline", { points: pointsAttr(screen), class: this.classes(part, "primitive"), stroke: colour,
+                          "data-part": part, "data-type": p.type }, g);
+        this.arrow(g, pts, colour);
+      });
+      if (stroke.length && isPoint(stroke[0].start)) {
+        const q = this.view.toScreen(stroke[0].start);
+        svg("circle", { cx: q[0], cy: q[1], r: 4, class: "path-start" }, g);
+      }
+    });
   }
 
   /// A wide translucent band under a core primitive, and a ring around one

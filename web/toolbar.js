@@ -7,7 +7,8 @@ import { $ } from "./dom.js";
 const TOOL_KEYS = { v: "select", l: "line", a: "arc", c: "circle", o: "obstacle", b: "region" };
 
 /// `commands`: {undo, redo, fit, snap(on), newTask, example, open(file),
-/// save, synthesize, remove, escape}.
+/// importDrawing(file), save, synthesize, remove, escape}. A file dropped on
+/// the canvas is imported when it is a drawing, opened otherwise.
 export class Toolbar {
   constructor(store, commands) {
     this.store = store;
@@ -37,9 +38,33 @@ export class Toolbar {
       if (e.target.files[0]) c.open(e.target.files[0]);
       e.target.value = "";
     });
+    $("import").addEventListener("click", () => $("import-file").click());
+    $("import-file").addEventListener("change", (e) => {
+      if (e.target.files[0]) c.importDrawing(e.target.files[0]);
+      e.target.value = "";
+    });
+    this.bindDrop($("editor-view"));
     $("save").addEventListener("click", c.save);
     $("synthesize").addEventListener("click", () => c.synthesize(parseFloat($("time-limit").value)));
     for (const b of document.querySelectorAll("#tabs button")) b.addEventListener("click", () => store.setView(b.dataset.view));
+  }
+
+  bindDrop(target) {
+    const c = this.commands;
+    const hasFiles = (e) => e.dataTransfer && [...e.dataTransfer.types].includes("Files");
+    target.addEventListener("dragover", (e) => {
+      if (!hasFiles(e)) return;
+      e.preventDefault();
+      target.classList.add("dropping");
+    });
+    target.addEventListener("dragleave", () => target.classList.remove("dropping"));
+    target.addEventListener("drop", (e) => {
+      target.classList.remove("dropping");
+      const file = e.dataTransfer && e.dataTransfer.files[0];
+      if (!file) return;
+      e.preventDefault();
+      if (/\.(svg|dxf)$/i.test(file.name)) c.importDrawing(file); else c.open(file);
+    });
   }
 
   bindKeys() {

@@ -1,5 +1,6 @@
 #include "api_routes.h"
 
+#include <modsynth/drawing/import.h>
 #include <modsynth/io/input.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/text/printable.h>
@@ -14,6 +15,7 @@
 #include <regex>
 #include <sstream>
 
+#include "imported_task.h"
 #include "loopback.h"
 #include "solve_jobs.h"
 #include "stream_slots.h"
@@ -34,7 +36,7 @@ using nlohmann::json;
 constexpr auto kHeartbeat = std::chrono::milliseconds(1000);
 constexpr double kLongestPoll = 20.0;
 // What a POST may name: a request body is read only for these.
-const std::regex kPostRoutes(R"(/api/validate|/api/solve|/api/jobs/[0-9a-f]+/cancel)");
+const std::regex kPostRoutes(R"(/api/validate|/api/solve|/api/import|/api/jobs/[0-9a-f]+/cancel)");
 // Longer paths name nothing here; refusing them early also spares the route
 // patterns (std::regex recurses once per character).
 constexpr std::size_t kLongestPath = 1024;
@@ -89,6 +91,19 @@ bool is_json_type(const std::string& content_type) {
     const auto last = type.find_last_not_of(" \t");
     type = first == std::string::npos ? "" : type.substr(first, last - first + 1);
     return equals_ignoring_case(type, "application/json");
+}
+
+/// What a drawing is sent as to /api/import. None of these is a type a
+/// cross-site form may send without a preflight, as with JSON.
+bool is_drawing_type(const std::string& content_type) {
+    if (is_json_type(content_type)) return false;
+    std::string type = content_type.substr(0, content_type.find(';'));
+    type.erase(0, std::min(type.size(), type.find_first_not_of(" \t")));
+    type.erase(type.find_last_not_of(" \t") + 1);
+    for (const char* t :
+         {"image/svg+xml", "application/dxf", "image/vnd.dxf", "application/octet-stream"})
+        if (equals_ignoring_case(type, t)) return true;
+    return false;
 }
 
 std::string status_text(int status, const ApiSettings& settings, const Request& req) {
@@ -200,6 +215,47 @@ std::optional<double> query_number(const Request& req, const char* name) {
     return v;
 }
 
+/// Comma-separated numbers from the query string, exactly `count` of them,
+/// each finite; nothing when absent. Throws task::InputError naming the
+/// parameter otherwise.
+std::optional<std::vector<double>> query_numbers(const Request& req, const char* name,
+                                                 std::size_t count) {
+    if (!req.has_param(name)) return std::nullopt;
+    const std::string text = req.get_param_value(name);
+    std::vector<double> out;
+    std::size_t at = 0;
+    while (out.size() < count && at <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', at), text.size());
+        const std::string item = text.substr(at, comma - at);
+        std::size_t used = 0;
+        double v = 0.0;
+        try {
+            v = std::stod(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (item.empty() || used != item.size() || !std::isfinite(v)) break;
+        out.push_back(v);
+        at = comma + 1;
+    }
+    if (out.size() != count || at != text.size() + 1)
+        throw task::InputError(name, "expected " + std::to_string(count) +
+                                         " numbers separated by commas: '" + printable(text) + "'");
+    return out;
+}
+
+/// The SVG matrix(a, b, c, d, e, f) of a map: x' = a x + c y + e,
+/// y' = b x + d y + f.
+json svg_matrix(const drawing::Affine& m) {
+    return {m.m(0, 0), m.m(1, 0), m.m(0, 1), m.m(1, 1), m.offset.x(), m.offset.y()};
+}
+
+/// True when the map turns the plane over (an SVG page, y down, to the
+/// task's y up).
+bool is_mirror(const drawing::Affine& a) {
+    return a.m(0, 0) * a.m(1, 1) - a.m(0, 1) * a.m(1, 0) < 0.0;
+}
+
 bool host_is_loopback(const Request& req) {
     if (!req.has_header("Host")) return true;  // HTTP/1.0 clients send none
     if (req.get_header_value_count("Host") != 1) return false;
@@ -227,6 +283,9 @@ public:
              [self](const Request& req, Response& res, const std::string& body) {
                  self->solve(req, res, body);
              });
+        post(server, "/api/import", [](const Request& req, Response& res, const std::string& body) {
+            import_drawing(req, res, body);
+        });
         server.Get(R"(/api/jobs/([0-9a-f]+))",
                    [self](const Request& req, Response& res) { self->job(req, res); });
         server.Get(R"(/api/jobs/([0-9a-f]+)/events)",
@@ -303,8 +362,16 @@ private:
         const std::string length = req.get_header_value("Content-Length");
         const bool has_body =
             (!length.empty() && length != "0") || req.has_header("Transfer-Encoding");
-        if (req.method == "POST" && (has_body || req.has_header("Content-Type")) &&
-            !is_json_type(req.get_header_value("Content-Type"))) {
+        const bool drawing = req.path == "/api/import";
+        const std::string type = req.get_header_value("Content-Type");
+        if (req.method == "POST" && drawing && !is_drawing_type(type)) {
+            send_final_error(res, 415,
+                             "send the drawing as Content-Type: image/svg+xml, application/dxf "
+                             "or application/octet-stream");
+            return R::Handled;
+        }
+        if (req.method == "POST" && !drawing && (has_body || req.has_header("Content-Type")) &&
+            !is_json_type(type)) {
             send_final_error(res, 415, "send the body as Content-Type: application/json");
             return R::Handled;
         }
@@ -360,6 +427,75 @@ private:
                       {{"valid", false},
                        {"errors", json::array({{{"part", printable(e.part())},
                                                 {"message", printable(e.what())}}})}});
+        }
+    }
+
+    /// A drawing (the file's bytes) to a task, as `modsynth import` makes
+    /// it, with what a page needs to draw the original under it: the map
+    /// from the file's page (SVG pixels, y down) to task metres.
+    static void import_drawing(const Request& req, Response& res, const std::string& body) {
+        drawing::DrawingFormat format = drawing::DrawingFormat::Svg;
+        drawing::ImportOptions options;
+        task::Task base;
+        base.name = "drawing";
+        try {
+            const std::string f = req.has_param("format") ? req.get_param_value("format") : "";
+            if (equals_ignoring_case(f, "dxf")) {
+                format = drawing::DrawingFormat::Dxf;
+            } else if (!equals_ignoring_case(f, "svg")) {
+                throw task::InputError("format", "expected svg or dxf, not '" + printable(f) + "'");
+            }
+            if (req.has_param("name")) base.name = req.get_param_value("name");
+            options.placement.width = query_number(req, "width");
+            options.placement.scale = query_number(req, "scale");
+            if (options.placement.width && options.placement.scale)
+                throw task::InputError("scale", "give width or scale, not both");
+            if (const auto at = query_numbers(req, "at", 2))
+                options.placement.at = geometry::Vec2((*at)[0], (*at)[1]);
+            if (const auto r = query_numbers(req, "rotate", 1)) {
+                if (std::abs((*r)[0]) > 3600.0)
+                    throw task::InputError("rotate", "degrees within -3600 to 3600");
+                options.placement.rotate_degrees = (*r)[0];
+            }
+            options.tolerance = query_number(req, "tolerance").value_or(options.tolerance);
+            if (!(options.tolerance >= 1e-9 && options.tolerance <= 1.0))
+                throw task::InputError("tolerance", "metres within 1e-9 to 1");
+            if (const auto b = query_numbers(req, "base", 4)) {
+                const auto& v = *b;
+                if (!(v[0] <= v[2]) || !(v[1] <= v[3]))
+                    throw task::InputError("base", "expected xmin,ymin,xmax,ymax with min <= max");
+                base.base_regions.push_back(
+                    {geometry::Vec2(v[0], v[1]), geometry::Vec2(v[2], v[3])});
+            }
+        } catch (const task::InputError& e) {
+            return send_error(res, 400, e.what(), e.part());
+        }
+        try {
+            const drawing::ImportResult r = drawing::import_drawing(body, format, options);
+            std::size_t primitives = 0;
+            for (const auto& s : r.strokes) primitives += s.size();
+            json underlay = nullptr;
+            if (r.page_size.x() > 0.0 && r.page_size.y() > 0.0) {
+                underlay = {{"width", r.page_size.x()},
+                            {"height", r.page_size.y()},
+                            {"transform", svg_matrix(r.page_to_task)},
+                            {"y_flip", is_mirror(r.page_to_task)}};
+            }
+            send_json(res, 200,
+                      {{"task", imported_task_json(r, base)},
+                       {"strokes", r.strokes.size()},
+                       {"primitives", primitives},
+                       {"obstacles", r.obstacles.size()},
+                       {"deviation", r.deviation},
+                       {"tolerance", options.tolerance},
+                       {"travel", r.travel},
+                       {"placement",
+                        {{"metres_per_unit", r.metres_per_unit},
+                         {"rotate_degrees", options.placement.rotate_degrees},
+                         {"transform", svg_matrix(r.placement)}}},
+                       {"underlay", underlay}});
+        } catch (const task::InputError& e) {
+            send_error(res, 422, e.what(), e.part());
         }
     }
 

@@ -17,6 +17,7 @@
 #include <modsynth/task/input_error.h>
 
 #include "command.h"
+#include "imported_task.h"
 
 namespace modsynth::app {
 
@@ -36,14 +37,10 @@ struct ImportArgs {
     bool keep_order = false;
 };
 
-/// A task holding one stroke as its trajectory: how the task writer and
-/// reader, which know trajectories, check and write each stroke.
-task::Task stroke_task(const ImportArgs& a, const std::vector<geometry::Primitive>& stroke,
-                       const drawing::ImportResult& r) {
+/// What the task gets from the options: its name, base regions and robot.
+task::Task base_task(const ImportArgs& a) {
     task::Task t;
     t.name = a.name;
-    t.trajectory = stroke;
-    t.obstacles = r.obstacles;
     for (const auto& b : a.bases) t.base_regions.push_back({Vec2(b[0], b[1]), Vec2(b[2], b[3])});
     if (!a.dof.empty()) t.robot.dof = a.dof;
     if (a.link_diameter > 0.0) t.robot.link_diameter = a.link_diameter;
@@ -80,23 +77,7 @@ int run_import(ImportArgs& a) {
         throw InputError(a.input + ": " + e.part(), problem);
     }
     if (a.name.empty()) a.name = file_stem(a.input);
-    // Every stroke goes through the task reader: what is written is valid.
-    nlohmann::json doc;
-    nlohmann::json strokes = nlohmann::json::array();
-    for (std::size_t s = 0; s < r.strokes.size(); ++s) {
-        const nlohmann::json one = io::to_json(stroke_task(a, r.strokes[s], r));
-        try {
-            io::parse_task(one);
-        } catch (const InputError& e) {
-            throw InputError("strokes[" + std::to_string(s) + "]", e.what());
-        }
-        if (s == 0) doc = one;
-        strokes.push_back(one["trajectory"]);
-    }
-    if (r.strokes.size() > 1) {
-        doc.erase("trajectory");
-        doc["strokes"] = strokes;
-    }
+    const nlohmann::json doc = imported_task_json(r, base_task(a));
     io::write_file_atomically(a.output, doc.dump(2) + "\n");
 
     std::size_t total = 0;

@@ -83,6 +83,9 @@ ImportResult import_drawing(std::string_view text, DrawingFormat format,
         format == DrawingFormat::Svg ? read_svg(text, options.read) : read_dxf(text, options.read);
     const Affine map = placement_map(drawing, options.placement);
     ImportResult result;
+    result.placement = map;
+    result.page_size = drawing.page_size;
+    result.page_to_task = map.after(drawing.page_to_units);
     result.metres_per_unit =
         std::abs(map.m.determinant()) > 0.0 ? std::sqrt(std::abs(map.m.determinant())) : 0.0;
     auto check = [](const Vec2& p, const std::string& source) {

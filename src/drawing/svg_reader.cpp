@@ -431,6 +431,8 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
     to_mm.offset = Vec2(0.0, kMmPerPx * state.page_height);
     Drawing out;
     out.metres_per_unit = 1e-3;
+    out.page_size = Vec2(state.page_width, state.page_height);
+    out.page_to_units = to_mm;
     for (Curve& c : state.curves) {
         for (Segment& s : c.segments) s = transformed(s, to_mm);
         out.curves.push_back(std::move(c));

@@ -2,13 +2,14 @@
 // /usr/bin/chromium driven by playwright-core): draw a small task by clicking,
 // synthesize, watch the robot move along the path; load an infeasible task
 // and see its core outlined; edit numbers, drag, undo, and cancel a long
-// solve. Every wait is for a condition, bounded.
+// solve; drop a drawing, see it fitted over the original, and synthesize.
+// Every wait is for a condition, bounded.
 //
 // usage: node editor.test.mjs MODSYNTH_BINARY SOURCE_DIR OUTPUT_DIR
 // Exit: 0 all passed, 1 a check failed, 77 skipped (Chromium or
 // playwright-core missing: ./scripts/test installs both).
 
-import { spawn } from "node:child_process";
+import { spawn, spawnSync } from "node:child_process";
 import fs from "node:fs";
 import path from "node:path";
 import readline from "node:readline";
@@ -317,6 +318,113 @@ async function editAndCancel(url) {
   await page.context().close();
 }
 
+// ---------------------------------------------------------- drawing import
+
+const IMPORT_AT = [0.3, 0.1];
+const IMPORT_TOLERANCE = 0.001;
+const SVG_MM_PER_PX = 25.4 / 96;
+
+/// Drops a file on the canvas as a file manager does: a DataTransfer made in
+/// the page holding the file's bytes.
+async function dropFile(page, file, type) {
+  const bytes = fs.readFileSync(file).toString("base64");
+  const transfer = await page.evaluateHandle(([b64, name, t]) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([Uint8Array.from(atob(b64), (c) => c.charCodeAt(0))], name, { type: t }));
+    return dt;
+  }, [bytes, path.basename(file), type]);
+  await page.dispatchEvent("#editor-view", "dragover", { dataTransfer: transfer });
+  await page.dispatchEvent("#editor-view", "drop", { dataTransfer: transfer });
+}
+
+/// What `modsynth import` makes of the drawing with the same options.
+function importedByCli(file) {
+  const out = path.join(outDir, "e2e-import-cli.json");
+  const r = spawnSync(bin, ["import", file, "-o", out, "--at", IMPORT_AT.join(","), "--tolerance", String(IMPORT_TOLERANCE)],
+                      { encoding: "utf8" });
+  if (r.status !== 0) throw new Error("modsynth import failed: " + r.stderr);
+  return JSON.parse(fs.readFileSync(out, "utf8"));
+}
+
+async function drawingImport(url) {
+  const page = await openEditor(url);
+  const sketch = path.join(root, "tasks/drawings/sketch.svg");
+  const cli = importedByCli(sketch);
+  const primitives = (cli.strokes || [cli.trajectory]).flat();
+  // The example's base region and robot stay when a drawing replaces the path.
+  await page.click("#example");
+  await page.fill("#import-at", IMPORT_AT.join(","));
+  await page.fill("#import-tolerance", String(IMPORT_TOLERANCE));
+  await dropFile(page, sketch, "image/svg+xml");
+  await page.waitForFunction(() => /deviation/.test(document.getElementById("import-status").textContent), null,
+                             { timeout: 10_000 });
+  const doc = await page.evaluate(() => window.modsynth.model.doc);
+  check(JSON.stringify(doc.strokes) === JSON.stringify(cli.strokes) &&
+        JSON.stringify(doc.trajectory) === JSON.stringify(cli.trajectory),
+        "the dropped drawing gives the task `modsynth import` writes with the same options");
+  const drawn = (await page.$$("#canvas #layer-trajectory polyline.primitive")).length;
+  check(drawn === primitives.length && drawn > 10,
+        `the fitted primitives are drawn: ${drawn} on the canvas, ${primitives.length} from modsynth import`);
+  check(JSON.stringify(doc.base_regions) === JSON.stringify([{ min: [-0.1, -0.1], max: [0.1, 0.1] }]),
+        "the base region of the task before stays");
+  figures.importStatus = await text(page, "#import-status");
+  const deviation = /deviation ([0-9.]+) mm \(tolerance 1.0 mm\)/.exec(figures.importStatus);
+  check(deviation && parseFloat(deviation[1]) <= 1.0, "the deviation reached is shown: " + figures.importStatus);
+
+  // The underlay: the dropped file as an image, placed so that the wave's
+  // first point (20, 40 in the file's millimetres, y down) lands on a
+  // vertex of the fitted primitives.
+  const image = await page.$("#layer-underlay image.underlay");
+  check(image !== null && /^blob:/.test((await image.getAttribute("href")) || ""), "the drawing is shown under the task");
+  const underlay = await page.evaluate(() => window.modsynth.store.underlay);
+  const [a, b, c, d, e, f] = underlay.transform;
+  const px = [20 / SVG_MM_PER_PX, 40 / SVG_MM_PER_PX];
+  const wave = [a * px[0] + c * px[1] + e, b * px[0] + d * px[1] + f];
+  const near = (p) => Math.hypot(p[0] - wave[0], p[1] - wave[1]) < 1e-6;
+  check(primitives.some((p) => near(p.start) || (p.end && near(p.end))),
+        `the underlay's placement puts the wave's start on the fitted path: ${wave}`);
+  const box = await image.boundingBox();
+  const pathBox = await (await page.$("#canvas #layer-trajectory")).boundingBox();
+  check(box && pathBox && pathBox.x >= box.x - 1 && pathBox.y >= box.y - 1 &&
+        pathBox.x + pathBox.width <= box.x + box.width + 1 && pathBox.y + pathBox.height <= box.y + box.height + 1 &&
+        pathBox.width > 0.9 * box.width,
+        `the drawing's frame lines up with the image: ${JSON.stringify(pathBox)} in ${JSON.stringify(box)}`);
+  await page.screenshot({ path: path.join(outDir, "e2e-editor-import.png") });
+
+  // Drawing goes on from the last stroke's end; undo takes it back.
+  const last = doc.strokes[doc.strokes.length - 1];
+  const from = last[last.length - 1].end || last[last.length - 1].start;
+  await page.click('button[data-tool="line"]');
+  await clickAt(page, [from[0] + 0.02, from[1]]);
+  const strokes = await page.evaluate(() => window.modsynth.model.doc.strokes);
+  const added = strokes[strokes.length - 1].at(-1);
+  check(added && added.type === "line" && JSON.stringify(added.start) === JSON.stringify(from) && !("trajectory" in
+        (await page.evaluate(() => window.modsynth.model.doc))), "a line drawn after the import extends the last stroke");
+  await page.click("#undo");
+  check(JSON.stringify(await page.evaluate(() => window.modsynth.model.doc.strokes)) === JSON.stringify(doc.strokes),
+        "undo takes the line back");
+  await page.click('button[data-tool="select"]');
+
+  // A broken file through the file picker: the error names the element.
+  const bad = path.join(outDir, "broken.svg");
+  fs.writeFileSync(bad, '<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100">\n' +
+                        '  <path id="p3" d="M 10,10 L 20"/>\n</svg>\n');
+  const [chooser] = await Promise.all([page.waitForEvent("filechooser"), page.click("#import")]);
+  await chooser.setFiles(bad);
+  await page.waitForFunction(() => document.getElementById("import-error").textContent !== "", null, { timeout: 10_000 });
+  const error = await text(page, "#import-error");
+  check(/path#p3/.test(error) && /broken\.svg/.test(error), "a bad drawing's error names the file and the element: " + error);
+  check((await page.$$("#canvas #layer-trajectory polyline.primitive")).length === drawn, "the task before stays");
+
+  await page.waitForSelector('body[data-validity="valid"]', { timeout: 10_000 });
+  await page.fill("#time-limit", "40");
+  await page.click("#synthesize");
+  await page.waitForSelector('body[data-synthesis="solved"], body[data-synthesis="infeasible"]', { timeout: SOLVE_MS });
+  figures.importSynthesis = await page.evaluate(() => document.body.dataset.synthesis);
+  console.log(`drawing import: ${drawn} primitives, ${figures.importStatus}; synthesis ${figures.importSynthesis}`);
+  await page.context().close();
+}
+
 // ------------------------------------------------------------------- main
 
 async function main() {
@@ -332,7 +440,7 @@ async function main() {
     browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_FLAGS });
     for (const [name, run] of [["draw, synthesize, animate", firstUser], ["infeasible core", infeasibleTask],
                                ["the proof drawn", proofDrawn],
-                               ["edit and cancel", editAndCancel]]) {
+                               ["edit and cancel", editAndCancel], ["drawing import", drawingImport]]) {
       const started = Date.now();
       try {
         await run(url);

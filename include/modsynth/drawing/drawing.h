@@ -17,6 +17,12 @@ struct Drawing {
     /// Metres per drawing unit as the file states it (SVG: its units are
     /// read as millimetres; DXF: $INSUNITS), 0 when the file does not say.
     double metres_per_unit = 0.0;
+    /// The file's own page as a viewer shows it (SVG: the outer viewport in
+    /// pixels, y down) and the map from it to drawing units, so that the
+    /// original can be drawn under what is fitted; a size of 0 when the
+    /// format has no page (DXF).
+    Vec2 page_size = Vec2::Zero();
+    Affine page_to_units;
 };
 
 /// What a reader accepts: which layer's circles are obstacles ("" none).

@@ -41,6 +41,12 @@ struct ImportResult {
     double deviation = 0.0;  ///< the worst found, metres
     double travel = 0.0;     ///< pen-up distance between strokes, metres
     double metres_per_unit = 0.0;
+    /// Drawing units to task metres, as the placement gave it.
+    Affine placement;
+    /// The file's page (Drawing::page_size; 0 without one) and the map from
+    /// it to task metres: placement after Drawing::page_to_units.
+    Vec2 page_size = Vec2::Zero();
+    Affine page_to_task;
 };
 
 /// Throws task::InputError naming the offending element or option.
