@@ -274,6 +274,14 @@ void SolveJobs::end_explain(Job& job) {
         job.state.explanation_note = "no suggestions: looking for them took longer than " +
                                      number(limits_.explain_limit) + " s";
     } else if (doc.is_object()) {
+        // An explain that ran out of time before finding a change says so
+        // in its own note: the page shows that as the reason for none.
+        const auto suggestions = doc.find("suggestions");
+        const auto note = doc.find("note");
+        if ((suggestions == doc.end() || suggestions->empty()) && note != doc.end() &&
+            note->is_string() && !note->get<std::string>().empty()) {
+            job.state.explanation_note = "no suggestions: " + note->get<std::string>();
+        }
         job.state.explanation = std::move(doc);
     } else {
         job.state.explanation_note = "no suggestions: `modsynth explain` ended with exit code " +
