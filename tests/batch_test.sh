@@ -40,6 +40,11 @@ assert rose["status"] == "solved" and rose["exit_code"] == 0, rose
 assert rose["dof"] == 2 and 0.1 < rose["total_link_length"] < 3.0, rose
 assert rose["clearance_margin"] is not None and rose["clearance_margin"] >= 0, rose
 assert os.path.isfile(rose["solution"]), rose
+# Stage seconds come from the run's summary line: each one a share of the run.
+stages = [rose[k] for k in ("front_seconds", "refine_seconds", "verify_seconds")]
+assert all(s >= 0 for s in stages) and stages[0] > 0, rose
+assert sum(stages) <= rose["seconds"] + 0.01, rose
+assert "front_seconds" not in bad, bad
 for l in lines:
     if "/infeasible/" in l["task"]:
         assert l["status"] == "infeasible" and l["exit_code"] == 3 and l["core"], l

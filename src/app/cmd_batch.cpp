@@ -71,14 +71,48 @@ nlohmann::json optional_json(const std::optional<double>& v, int decimals) {
     return v ? nlohmann::json(round_to(*v, decimals)) : nlohmann::json(nullptr);
 }
 
+/// Seconds a run spent in each stage, as its summary line on stdout says
+/// them (the solution file does not record them).
+struct StageSeconds {
+    double front = 0.0, refine = 0.0, verify = 0.0;
+};
+
+std::optional<StageSeconds> stage_seconds(const std::string& log_path, const SolveOutcome& o) {
+    std::ifstream in(log_path);
+    std::string line;
+    std::optional<StageSeconds> found;
+    while (std::getline(in, line)) {
+        // Searched from the end: the task name in front may hold anything.
+        const std::size_t at = line.rfind(" s (front stage ");
+        if (at == std::string::npos) continue;
+        StageSeconds s;
+        if (std::sscanf(line.c_str() + at,
+                        " s (front stage %lf s, refinement %lf s, verification %lf s)", &s.front,
+                        &s.refine, &s.verify) == 3)
+            found = s;
+    }
+    // A time-limit answer comes from the watchdog thread, which has no stage
+    // figures and prints zeros; those would claim the run spent no time in any.
+    if (found && o.status == synth::Status::Unknown && found->front == 0.0 &&
+        found->refine == 0.0 && found->verify == 0.0)
+        return std::nullopt;
+    return found;
+}
+
 nlohmann::ordered_json result_line(const std::string& path, const SolveOutcome& o,
-                                   const std::string& kept_solution) {
+                                   const std::string& kept_solution,
+                                   const std::optional<StageSeconds>& stages) {
     nlohmann::ordered_json line;
     line["task"] = path;
     line["name"] = o.name;
     line["status"] = to_string(o.status);
     line["exit_code"] = o.exit_code;
     line["seconds"] = round_to(o.seconds, 3);
+    if (stages) {
+        line["front_seconds"] = round_to(stages->front, 3);
+        line["refine_seconds"] = round_to(stages->refine, 3);
+        line["verify_seconds"] = round_to(stages->verify, 3);
+    }
     line["dof"] = o.dof ? nlohmann::json(*o.dof) : nlohmann::json(nullptr);
     line["total_link_length"] = optional_json(o.total_link_length, 9);
     line["clearance_margin"] = optional_json(o.clearance_margin, 9);
@@ -219,8 +253,9 @@ int run_batch(const BatchArgs& a) {
             jobs, a.run,
             [&](std::size_t i, const SolveOutcome& o) {
                 outcomes[i] = o;
-                writer.put(i,
-                           result_line(paths[i], o, scratch ? "" : jobs[i].solution_path).dump());
+                writer.put(i, result_line(paths[i], o, scratch ? "" : jobs[i].solution_path,
+                                          stage_seconds(jobs[i].log_path, o))
+                                  .dump());
                 progress.finished(o);
             },
             [&] { progress.tick(); });
