@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <limits>
@@ -51,10 +52,14 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
     const auto& r = solution.robot;
     std::printf("  robot: %s\n", robot_summary(r).c_str());
     const auto& c = solution.certificate;
+    // Without obstacles there is no clearance to report, only its absence.
+    const std::string clearance = std::isfinite(c.min_clearance)
+                                      ? text::format("clearance margin %.4f m", c.min_clearance)
+                                      : std::string("no obstacles");
     std::printf(
-        "  certified over the whole motion: clearance margin %.4f m, self-collision margin "
-        "%.4f m, EE deviation <= %.2e m\n",
-        c.min_clearance, c.min_self_clearance, c.max_deviation);
+        "  certified over the whole motion: %s, self-collision margin %.4f m, EE deviation <= "
+        "%.2e m\n",
+        clearance.c_str(), c.min_self_clearance, c.max_deviation);
     std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
                 solution.samples.back().t, output.c_str());
     if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
