@@ -3,6 +3,8 @@
 // verification of a task of several strokes.
 #include <catch2/catch.hpp>
 
+#include "../support/fixtures.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -20,15 +22,6 @@
 using namespace modsynth;
 
 namespace {
-
-kinematics::Robot two_link() {
-    kinematics::Robot r;
-    r.base = {0.0, 0.0};
-    r.link_lengths = {0.30, 0.25};
-    r.link_diameter = 0.03175;
-    r.elbow = 1;
-    return r;
-}
 
 double largest_change(const std::vector<double>& a, const std::vector<double>& b) {
     double m = 0.0;
@@ -62,7 +55,7 @@ task::Task two_strokes() {
 
 TEST_CASE("travel: a clear straight line is taken as it is", "[control][travel]") {
     task::Task t;
-    const auto robot = two_link();
+    const auto robot = testing::line_robot();
     const std::vector<double> from{0.1, 0.5}, to{0.6, 0.2};
     const auto plan = control::plan_travel(t, robot, from, to, {});
     REQUIRE(plan);
@@ -77,7 +70,7 @@ TEST_CASE("travel: the other way round when the short way is blocked", "[control
     task::Task t;
     // Above the base, in the way of the stretched arm turning ccw.
     t.obstacles.push_back({{0.0, 0.45}, 0.05});
-    const auto robot = two_link();
+    const auto robot = testing::line_robot();
     const std::vector<double> from{0.2, 0.3}, to{2.9, 0.3};
     const auto plan = control::plan_travel(t, robot, from, to, {});
     REQUIRE(plan);
@@ -95,7 +88,7 @@ TEST_CASE("travel: planned round obstacles when every straight line collides",
     // way, a folded one passes.
     t.obstacles.push_back({{0.0, 0.45}, 0.05});
     t.obstacles.push_back({{0.0, -0.45}, 0.05});
-    kinematics::Robot robot = two_link();
+    kinematics::Robot robot = testing::line_robot();
     robot.link_lengths = {0.25, 0.25};
     const std::vector<double> from{0.1, 0.3}, to{3.0, 0.3};
     const auto plan = control::plan_travel(t, robot, from, to, {});
@@ -114,13 +107,13 @@ TEST_CASE("travel: none when the goal pose itself collides", "[control][travel]"
     t.obstacles.push_back({{0.55, 0.0}, 0.05});
     control::TravelOptions o;
     o.plan_seconds = 0.2;
-    CHECK_FALSE(control::plan_travel(t, two_link(), {1.5, 0.2}, {0.0, 0.0}, o));
+    CHECK_FALSE(control::plan_travel(t, testing::line_robot(), {1.5, 0.2}, {0.0, 0.0}, o));
 }
 
 TEST_CASE("strokes: each stroke traced, travel between, certified", "[control][travel]") {
     task::Task t = two_strokes();
     t.obstacles.push_back({{0.0, 0.5}, 0.05});
-    const auto robot = two_link();
+    const auto robot = testing::line_robot();
     control::MotionFailure failure;
     auto motion = control::plan_motion(t, robot, {}, &failure);
     INFO(failure.message);
@@ -198,11 +191,11 @@ TEST_CASE("strokes: a one-stroke solution is written without stroke", "[control]
     task::Task t = two_strokes();
     t.trajectory.pop_back();
     t.stroke_starts.clear();
-    auto motion = control::plan_motion(t, two_link(), {});
+    auto motion = control::plan_motion(t, testing::line_robot(), {});
     REQUIRE(motion);
     synth::Solution s;
     s.status = synth::Status::Solved;
-    s.robot = two_link();
+    s.robot = testing::line_robot();
     s.samples = *motion;
     const auto doc = io::to_json(s);
     for (const auto& x : doc["samples"]) CHECK_FALSE(x.contains("stroke"));

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/kinematics/robot.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::testing {
@@ -21,6 +22,17 @@ inline task::Task line_task() {
     t.base_regions.push_back({{-0.05, -0.05}, {0.05, 0.05}});
     t.robot.dof = {2};
     return t;
+}
+
+/// A 2-joint arm at the origin (0.30 m and 0.25 m links, elbow +1) that
+/// reaches line_task's path.
+inline kinematics::Robot line_robot() {
+    kinematics::Robot r;
+    r.base = {0.0, 0.0};
+    r.link_lengths = {0.30, 0.25};
+    r.link_diameter = 0.03175;
+    r.elbow = 1;
+    return r;
 }
 
 nlohmann::json read_json(const std::string& path);

@@ -15,15 +15,6 @@ using verify::Violation;
 
 namespace {
 
-kinematics::Robot line_robot() {
-    kinematics::Robot r;
-    r.base = {0.0, 0.0};
-    r.link_lengths = {0.30, 0.25};
-    r.link_diameter = 0.03175;
-    r.elbow = 1;
-    return r;
-}
-
 bool has(const verify::Certificate& c, Violation::Kind kind) {
     return std::any_of(c.violations.begin(), c.violations.end(),
                        [&](const Violation& v) { return v.kind == kind; });
@@ -40,7 +31,7 @@ std::vector<control::Sample> motion_for(const task::Task& t, const kinematics::R
 TEST_CASE("a clear motion is certified, with margins that match the geometry", "[verify]") {
     task::Task t = testing::line_task();
     t.obstacles.push_back({{0.0, 0.45}, 0.05});
-    const auto robot = line_robot();
+    const auto robot = testing::line_robot();
     const auto samples = motion_for(t, robot);
     const auto cert = verify::certify(t, robot, samples);
     INFO((cert.violations.empty() ? "" : cert.violations.front().message));
@@ -59,7 +50,7 @@ TEST_CASE("the certified clearance never exceeds the clearance of the replayed m
     task::Task t = testing::line_task();
     t.obstacles.push_back({{0.12, 0.30}, 0.04});
     t.obstacles.push_back({{0.30, 0.36}, 0.02});
-    const auto robot = line_robot();
+    const auto robot = testing::line_robot();
     const auto samples = motion_for(t, robot);
     const auto cert = verify::certify(t, robot, samples);
     double replayed = 1e9, replayed_self = 1e9;
@@ -87,7 +78,7 @@ TEST_CASE("the certified clearance never exceeds the clearance of the replayed m
 
 TEST_CASE("an obstacle on the arm is a clearance violation located on the path", "[verify]") {
     task::Task t = testing::line_task();
-    const auto robot = line_robot();
+    const auto robot = testing::line_robot();
     const auto samples = motion_for(t, robot);
     // Put an obstacle on link 1 of the pose half-way along the line.
     const auto& mid = samples[samples.size() / 2];
@@ -107,11 +98,11 @@ TEST_CASE("an obstacle on the arm is a clearance violation located on the path",
 
 TEST_CASE("structural violations: base outside the regions, link too long, wrong dof", "[verify]") {
     task::Task t = testing::line_task();
-    auto robot = line_robot();
+    auto robot = testing::line_robot();
     const auto samples = motion_for(t, robot);
     robot.base = {0.2, 0.2};
     CHECK(has(verify::certify(t, robot, samples), Violation::Kind::Structure));
-    robot = line_robot();
+    robot = testing::line_robot();
     t.robot.max_link_length = 0.28;
     CHECK(has(verify::certify(t, robot, samples), Violation::Kind::Structure));
     t = testing::line_task();
@@ -121,7 +112,7 @@ TEST_CASE("structural violations: base outside the regions, link too long, wrong
 
 TEST_CASE("sparse samples are flagged: large joint steps and skipped progress", "[verify]") {
     const task::Task t = testing::line_task();
-    const auto robot = line_robot();
+    const auto robot = testing::line_robot();
     auto samples = motion_for(t, robot);
     std::vector<control::Sample> sparse;
     for (std::size_t i = 0; i < samples.size(); i += 20) sparse.push_back(samples[i]);
@@ -133,7 +124,7 @@ TEST_CASE("sparse samples are flagged: large joint steps and skipped progress", 
 
 TEST_CASE("a motion that stops short of a primitive's end is not accepted", "[verify]") {
     const task::Task t = testing::line_task();
-    const auto robot = line_robot();
+    const auto robot = testing::line_robot();
     auto samples = motion_for(t, robot);
     samples.resize(samples.size() - 3);
     CHECK(has(verify::certify(t, robot, samples), Violation::Kind::Order));
@@ -145,7 +136,7 @@ TEST_CASE("the EE too close to link 1 is a self-collision", "[verify]") {
     task::Task t;
     t.trajectory.push_back(geometry::make_line({0.055, -0.02}, {0.055, 0.02}));
     t.robot.dof = {2};
-    const auto robot = line_robot();
+    const auto robot = testing::line_robot();
     const auto samples = motion_for(t, robot);
     const auto cert = verify::certify(t, robot, samples);
     CHECK(has(cert, Violation::Kind::SelfCollision));
@@ -153,7 +144,7 @@ TEST_CASE("the EE too close to link 1 is a self-collision", "[verify]") {
 
 TEST_CASE("refining coarse pairs keeps the motion on the path", "[verify]") {
     const task::Task t = testing::line_task();
-    const auto robot = line_robot();
+    const auto robot = testing::line_robot();
     auto samples = motion_for(t, robot);
     const std::size_t before = samples.size();
     REQUIRE(control::refine_motion(t, robot, samples, {0, 5, 10}));
