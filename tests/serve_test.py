@@ -124,6 +124,15 @@ class Server:
         except OSError:
             return False
 
+    @staticmethod
+    def execed_solve(pid):
+        """Whether the child has exec'd the solve (before that it runs the server's image)."""
+        try:
+            with open("/proc/%d/cmdline" % pid, "rb") as f:
+                return b"\0solve\0" in f.read()
+        except OSError:
+            return False
+
     def children(self):
         """Process ids whose parent is the server (its running solves)."""
         kids = []
@@ -502,6 +511,12 @@ def test_solves_hold_no_sockets():
                 time.sleep(0.05)
                 kids = s.children()
             check(len(kids) == 1, "the solve runs as a child (%d)" % len(kids))
+            # Between fork and exec the child is still a copy of the server and
+            # holds its descriptors; what matters is the solve the exec starts.
+            deadline = time.monotonic() + 5
+            while kids and not all(s.execed_solve(k) for k in kids) and time.monotonic() < deadline:
+                time.sleep(0.02)
+            check(all(s.execed_solve(k) for k in kids), "the child has become a solve")
             sockets = []
             for kid in kids:
                 try:
