@@ -68,6 +68,38 @@ struct Node {
     std::vector<char> used;                     ///< obstacles (by position) that refuted
 };
 
+// Whether every segment from a point of box a to a point of box b (each
+// given as its x and y ranges) passes within `need` of c: when the line
+// through c across the way from a to b has all of a on one side, all of b
+// on the other, and every segment between their corners crosses it within
+// `need` of c, so does every segment between the boxes (their union's
+// convex hull meets the line in the hull of those crossings).
+bool every_segment_hits(const IntervalPoint& a, const IntervalPoint& b, const Vec2& c,
+                        double need) {
+    const Vec2 ac(a.x.mid(), a.y.mid());
+    const Vec2 bc(b.x.mid(), b.y.mid());
+    const Vec2 way = bc - ac;
+    const double n = way.norm();
+    if (n <= 0.0) return false;
+    const Vec2 d = way / n;
+    const Vec2 across = geometry::perp(d);
+    const Vec2 ca[] = {{a.x.lo, a.y.lo}, {a.x.hi, a.y.lo}, {a.x.lo, a.y.hi}, {a.x.hi, a.y.hi}};
+    const Vec2 cb[] = {{b.x.lo, b.y.lo}, {b.x.hi, b.y.lo}, {b.x.lo, b.y.hi}, {b.x.hi, b.y.hi}};
+    for (const auto& v : ca)
+        if (d.dot(v - c) >= 0.0) return false;
+    for (const auto& v : cb)
+        if (d.dot(v - c) <= 0.0) return false;
+    for (const auto& u : ca)
+        for (const auto& v : cb) {
+            const double su = d.dot(u - c);
+            const double sv = d.dot(v - c);
+            const double t = su / (su - sv);
+            const Vec2 x = u + t * (v - u);
+            if (std::abs(across.dot(x - c)) >= need) return false;
+        }
+    return true;
+}
+
 double half_diagonal(const Interval& x, const Interval& y) {
     return std::hypot(x.radius(), y.radius());
 }
@@ -153,6 +185,14 @@ int Search::contract(const Design& d, const Vec2& p, const Interval& theta, Desi
         const double need = disc.radius - kNoGoSlack;
         if (geometry::point_segment(disc.center, bc, ec) + std::max(rb, re) < need) return i;
         if (geometry::point_segment(disc.center, ec, p) + re < need) return i;
+    }
+    // Rounding in the crossings is far below kNoGoSlack.
+    const IntervalPoint target{Interval(p.x()), Interval(p.y())};
+    for (int i : near) {
+        const auto& disc = discs_[i];
+        const double need = disc.radius - kNoGoSlack;
+        if (every_segment_hits(b, e, disc.center, need)) return i;
+        if (every_segment_hits(e, target, disc.center, need)) return i;
     }
     out = {b.x, b.y, r1, r2};
     return -2;

@@ -63,7 +63,7 @@ TEST_CASE("branch and bound proves a corridor with two bends closed to two joint
     // Neither a wall nor a detour proves it.
     REQUIRE_FALSE(synth::prove_obstacle_infeasible(t).has_value());
     const auto r = synth::branch_and_bound(t, synth::all_obstacles(t), generous());
-    INFO("boxes " << r.boxes << ", " << r.seconds << " s");
+    WARN("boxes " << r.boxes << ", " << r.seconds << " s");
     REQUIRE(r.outcome == Outcome::Infeasible);
     CHECK(!r.obstacles.empty());
     CHECK(r.primitives == std::vector<int>{0});
@@ -77,6 +77,7 @@ TEST_CASE("branch and bound finds a box when the corridor needs one bend", "[bnb
     post_row(open, 0.3, -1.5, 0.25);
     post_row(open, 0.55, -1.5, 0.25);
     const auto r = synth::branch_and_bound(open, synth::all_obstacles(open), generous());
+    WARN("boxes " << r.boxes << ", " << r.seconds << " s, violation " << r.violation);
     REQUIRE(r.outcome == Outcome::Box);
     REQUIRE(r.box.has_value());
     CHECK(r.violation < 4 * generous().delta);
@@ -96,7 +97,7 @@ TEST_CASE("branch and bound never refutes a planted 2-joint task", "[bnb][slow]"
             synth::BranchAndBoundOptions o;
             o.time_limit = 3.0;
             const auto r = synth::branch_and_bound(t, synth::all_obstacles(t), o);
-            INFO(name << ": boxes " << r.boxes);
+            WARN(name << ": boxes " << r.boxes << " " << r.seconds << " s " << int(r.outcome));
             CHECK(r.outcome != Outcome::Infeasible);
             ++tried;
         }
