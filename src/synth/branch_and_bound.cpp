@@ -29,9 +29,7 @@ struct Point {
 // The design variables of a box.
 struct Design {
     Interval bx, by, r1, r2;
-    double width() const {
-        return std::max({bx.width(), by.width(), r1.width(), r2.width()});
-    }
+    double width() const { return std::max({bx.width(), by.width(), r1.width(), r2.width()}); }
     bool is_empty() const {
         return bx.is_empty() || by.is_empty() || r1.is_empty() || r2.is_empty();
     }
@@ -39,10 +37,14 @@ struct Design {
 
 Interval& var(Design& d, int v) {
     switch (v) {
-        case 0: return d.bx;
-        case 1: return d.by;
-        case 2: return d.r1;
-        default: return d.r2;
+        case 0:
+            return d.bx;
+        case 1:
+            return d.by;
+        case 2:
+            return d.r1;
+        default:
+            return d.r2;
     }
 }
 
@@ -128,7 +130,10 @@ class Search {
 public:
     Search(const task::Task& task, const std::vector<int>& obstacles,
            const BranchAndBoundOptions& o, Clock::time_point deadline)
-        : task_(task), o_(o), deadline_(deadline), discs_(no_go_discs(task, obstacles)),
+        : task_(task),
+          o_(o),
+          deadline_(deadline),
+          discs_(no_go_discs(task, obstacles)),
           points_(points_of(task, o)) {}
 
     BranchAndBoundResult run();
@@ -299,8 +304,7 @@ BranchAndBoundResult Search::run() {
     for (int region = 0; region < static_cast<int>(task_.base_regions.size()); ++region) {
         const auto& r = task_.base_regions[region];
         Node root;
-        root.d = {Interval(r.min.x(), r.max.x()), Interval(r.min.y(), r.max.y()), lengths,
-                  lengths};
+        root.d = {Interval(r.min.x(), r.max.x()), Interval(r.min.y(), r.max.y()), lengths, lengths};
         root.ranges.assign(points_.size(), {Interval(-geometry::kPi, geometry::kPi)});
         root.used.assign(discs_.size(), 0);
         std::vector<Node> stack{std::move(root)};

@@ -74,6 +74,9 @@ std::string joint_counts(const task::Task& task) {
 // when all are unsat or undecided.
 bool conflict_free(const task::Task& task, double time_limit, Clock::time_point deadline) {
     if (prove_obstacle_infeasible(task)) return false;
+    BranchAndBoundOptions bnb;
+    bnb.time_limit = std::min(bnb.time_limit, time_limit);
+    if (prove_two_joint_infeasible(task, bnb, deadline)) return false;
     for (int dof : task.robot.dof) {
         smt::FrontStageOptions o;
         o.time_limit = time_limit;
@@ -159,6 +162,12 @@ InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
         return proof;
     }
     const Clock::time_point deadline = after(time_limit);
+    if (auto bnb = prove_two_joint_infeasible(task, BranchAndBoundOptions{}, deadline)) {
+        proof.proved = true;
+        proof.core = std::move(bnb->core);
+        proof.message = std::move(bnb->message);
+        return proof;
+    }
     std::vector<std::vector<std::string>> cores;
     for (int dof : task.robot.dof) {
         smt::FrontStageOptions o;

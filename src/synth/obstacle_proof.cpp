@@ -195,6 +195,33 @@ std::string index_ranges(std::vector<int> indices) {
     return s;
 }
 
+std::optional<ObstacleProof> prove_two_joint_infeasible(
+    const task::Task& task, const BranchAndBoundOptions& options,
+    std::chrono::steady_clock::time_point deadline) {
+    if (task.robot.dof != std::vector<int>{2} || task.base_regions.empty() ||
+        task.obstacles.empty() || task.obstacles.size() > kMaxDetourObstacles)
+        return std::nullopt;
+    const auto r = branch_and_bound(task, all_obstacles(task), options, deadline);
+    if (r.outcome != BranchAndBoundResult::Outcome::Infeasible || r.obstacles.empty())
+        return std::nullopt;  // without obstacles the front stage has the better proof
+    ObstacleProof proof;
+    proof.core = core_of(
+        task, r.obstacles, {r.primitives.begin(), r.primitives.end()},
+        {"robot.dof", "robot.min_link_length", "robot.max_link_length", "robot.link_diameter"});
+    std::set<int> primitives(r.primitives.begin(), r.primitives.end());
+    std::string paths;
+    for (int j : primitives) paths += (paths.empty() ? "" : ", ") + task::part_name(task, j);
+    proof.message = text::format(
+        "no 2-joint arm with links of %.2f-%.2f m and its base in %s reaches %s with both links "
+        "clear of obstacles %s: a branch and bound over the base position, both link lengths "
+        "and the first joint's angle at %d points of the path refuted every one of %ld boxes, "
+        "for either elbow at every point.",
+        task.robot.min_link_length, task.robot.max_link_length,
+        task.base_regions.size() > 1 ? "any base region" : "the base region", paths.c_str(),
+        index_ranges(r.obstacles).c_str(), r.points, r.boxes);
+    return proof;
+}
+
 std::optional<ObstacleProof> prove_obstacle_infeasible(const task::Task& task) {
     if (task.base_regions.empty() || task.obstacles.empty() || task.robot.dof.empty() ||
         task.base_regions.size() > kMaxProofRegions)

@@ -169,6 +169,20 @@ Solution Search::run() {
         out.explanation.geodesic = std::move(walls->geodesic);
         return out;
     }
+    // Two joints only: a branch and bound over the designs settles what the
+    // walls and detours leave open, within a small share of the run.
+    BranchAndBoundOptions bnb = opt_.branch_and_bound;
+    bnb.time_limit = std::min(bnb.time_limit, opt_.branch_and_bound_share * opt_.time_limit);
+    auto proof = bnb.time_limit > 0.0 ? prove_two_joint_infeasible(task_, bnb, deadline_)
+                                      : std::optional<ObstacleProof>{};
+    if (proof) {
+        stats_.front_seconds += seconds_since(t_walls);
+        say("obstacles: proved infeasible, " + proof->message);
+        out.status = Status::Infeasible;
+        out.explanation.message = "Proved infeasible: " + proof->message;
+        out.explanation.core = std::move(proof->core);
+        return out;
+    }
     stats_.front_seconds += seconds_since(t_walls);
     std::vector<std::vector<std::string>> cores;
     bool all_unsat = true;
@@ -449,6 +463,8 @@ bool SynthesisOptions::IsValid(std::string* error) const {
         .nested("front", front)
         .nested("verify", verify)
         .nested("guesses", guesses)
+        .nested("branch_and_bound", branch_and_bound)
+        .within("branch_and_bound_share", branch_and_bound_share, 0.0, 1.0)
         .greater("point_spacing", point_spacing, 0.0)
         .at_least("min_points_per_primitive", min_points_per_primitive, 1)
         .at_least("max_points_per_primitive", max_points_per_primitive, min_points_per_primitive)

@@ -57,8 +57,7 @@ TEST_CASE("branch and bound options are validated", "[bnb]") {
                     std::invalid_argument);
 }
 
-TEST_CASE("branch and bound proves a corridor with two bends closed to two joints",
-          "[bnb][slow]") {
+TEST_CASE("branch and bound proves a corridor with two bends closed to two joints", "[bnb][slow]") {
     const task::Task t = zigzag();
     // Neither a wall nor a detour proves it.
     REQUIRE_FALSE(synth::prove_obstacle_infeasible(t).has_value());
@@ -90,8 +89,7 @@ TEST_CASE("branch and bound never refutes a planted 2-joint task", "[bnb][slow]"
     for (const char* folder : {"tests/fixtures/planted", "tests/fixtures/planted-obstacles"}) {
         for (const auto& f : fs::directory_iterator(testing::source_path(folder))) {
             const std::string name = f.path().filename().string();
-            if (name.rfind("p2-", 0) != 0 || name.find(".task.json") == std::string::npos)
-                continue;
+            if (name.rfind("p2-", 0) != 0 || name.find(".task.json") == std::string::npos) continue;
             task::Task t = io::load_task(f.path().string());
             t.robot.dof = {2};
             synth::BranchAndBoundOptions o;

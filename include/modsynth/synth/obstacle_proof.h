@@ -3,9 +3,11 @@
 // closed wall between the base regions and the path (separation.h), or a
 // detour around the obstacles longer than any arm (geodesic_reach.h). Both
 // hold for every allowed joint count and every link length.
+#include <modsynth/synth/branch_and_bound.h>
 #include <modsynth/synth/wall_witness.h>
 #include <modsynth/task/task.h>
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,6 +28,17 @@ struct ObstacleProof {
 /// everywhere, or when the path is out of reach without any obstacle: the
 /// front stage proves those).
 std::optional<ObstacleProof> prove_obstacle_infeasible(const task::Task& task);
+
+/// Tasks whose only allowed joint count is 2 (and that have base regions
+/// and obstacles): a proof by branch and bound (branch_and_bound.h) that no
+/// 2-joint design reaches the path's points with its links clear; nullopt
+/// when the search finds a box or runs out of its budget. The core lists the
+/// obstacles whose clearance refuted some box (not minimised: each deletion
+/// would cost a whole search), the primitives of the refuting points,
+/// base_regions, robot.dof and the link bounds.
+std::optional<ObstacleProof> prove_two_joint_infeasible(
+    const task::Task& task, const BranchAndBoundOptions& options,
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
 
 /// "0-8", "2, 5, 7-9": obstacle indices in words.
 std::string index_ranges(std::vector<int> indices);

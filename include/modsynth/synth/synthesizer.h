@@ -7,6 +7,7 @@
 #include <modsynth/control/motion.h>
 #include <modsynth/control/retime.h>
 #include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/branch_and_bound.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/task/task.h>
@@ -32,6 +33,11 @@ struct SynthesisOptions {
     verify::VerifyOptions verify;
     /// How the initial guesses of the refinement are searched for.
     InitialGuessOptions guesses;
+    /// The branch and bound tried on tasks that allow 2 joints only, when
+    /// neither a wall nor a detour proves them infeasible. Its time_limit
+    /// is further capped at branch_and_bound_share of the run's.
+    BranchAndBoundOptions branch_and_bound;
+    double branch_and_bound_share = 0.05;
 
     /// m between the points where the refinement constrains the arm along
     /// each primitive: 25 mm keeps a circle of the shipped tasks well
