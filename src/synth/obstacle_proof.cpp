@@ -199,7 +199,7 @@ std::optional<ObstacleProof> prove_two_joint_infeasible(
     const task::Task& task, const BranchAndBoundOptions& options,
     std::chrono::steady_clock::time_point deadline) {
     if (task.robot.dof != std::vector<int>{2} || task.base_regions.empty() ||
-        task.obstacles.empty() || task.obstacles.size() > kMaxDetourObstacles)
+        task.obstacles.empty() || task.obstacles.size() > kMaxBranchObstacles)
         return std::nullopt;
     const auto r = branch_and_bound(task, all_obstacles(task), options, deadline);
     if (r.outcome != BranchAndBoundResult::Outcome::Infeasible || r.obstacles.empty())

@@ -2,9 +2,11 @@
 #include <modsynth/synth/branch_and_bound.h>
 #include <modsynth/synth/no_go.h>
 #include <modsynth/synth/obstacle_proof.h>
+#include <modsynth/synth/synthesizer.h>
 
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <random>
 
 #include "../support/fixtures.h"
 
@@ -62,7 +64,7 @@ TEST_CASE("branch and bound proves a corridor with two bends closed to two joint
     // Neither a wall nor a detour proves it.
     REQUIRE_FALSE(synth::prove_obstacle_infeasible(t).has_value());
     const auto r = synth::branch_and_bound(t, synth::all_obstacles(t), generous());
-    WARN("boxes " << r.boxes << ", " << r.seconds << " s");
+    INFO("boxes " << r.boxes << ", " << r.seconds << " s");
     REQUIRE(r.outcome == Outcome::Infeasible);
     CHECK(!r.obstacles.empty());
     CHECK(r.primitives == std::vector<int>{0});
@@ -76,7 +78,6 @@ TEST_CASE("branch and bound finds a box when the corridor needs one bend", "[bnb
     post_row(open, 0.3, -1.5, 0.25);
     post_row(open, 0.55, -1.5, 0.25);
     const auto r = synth::branch_and_bound(open, synth::all_obstacles(open), generous());
-    WARN("boxes " << r.boxes << ", " << r.seconds << " s, violation " << r.violation);
     REQUIRE(r.outcome == Outcome::Box);
     REQUIRE(r.box.has_value());
     CHECK(r.violation < 4 * generous().delta);
@@ -95,10 +96,84 @@ TEST_CASE("branch and bound never refutes a planted 2-joint task", "[bnb][slow]"
             synth::BranchAndBoundOptions o;
             o.time_limit = 3.0;
             const auto r = synth::branch_and_bound(t, synth::all_obstacles(t), o);
-            WARN(name << ": boxes " << r.boxes << " " << r.seconds << " s " << int(r.outcome));
+            INFO(name << ": boxes " << r.boxes);
             CHECK(r.outcome != Outcome::Infeasible);
             ++tried;
         }
     }
     CHECK(tried >= 10);
+}
+
+namespace {
+
+// A zig-zag corridor of random size, turned and moved at random: walls of
+// posts at x = a and x = a + g, the first open above `top`, the second
+// below -`bottom` (or, with `one_bend`, above `top` too: then an elbow above
+// both walls sees base and stroke, and a 2-joint arm fits).
+task::Task random_zigzag(unsigned seed, bool one_bend) {
+    std::mt19937 rng(seed);
+    auto u = [&](double lo, double hi) {
+        return std::uniform_real_distribution<double>(lo, hi)(rng);
+    };
+    const double rho = u(0.02, 0.04), a = u(0.2, 0.35), g = u(0.15, 0.3);
+    const double top = u(0.1, 0.35), bottom = u(0.1, 0.35), px = a + g + u(0.15, 0.3);
+    const double phi = u(0.0, geometry::kTau);
+    const Vec2 shift(u(-1, 1), u(-1, 1));
+    const auto at = [&](double x, double y) {
+        return Vec2(shift + x * geometry::unit(phi) + y * geometry::perp(geometry::unit(phi)));
+    };
+    task::Task t;
+    t.name = "random-zigzag";
+    const auto row = [&](double x0, double y0, double y1) {
+        const int n = static_cast<int>(std::ceil((y1 - y0) / (1.6 * rho)));
+        for (int k = 0; k <= n; ++k) t.obstacles.push_back({at(x0, y0 + (y1 - y0) * k / n), rho});
+    };
+    row(a, -1.5, top);
+    if (one_bend)
+        row(a + g, -1.5, top);
+    else
+        row(a + g, -bottom, 1.5);
+    const double half = u(0.02, 0.08);
+    t.trajectory.push_back(geometry::make_line(at(px, -half), at(px, half)));
+    const Vec2 size(u(0.02, 0.12), u(0.02, 0.12));
+    t.base_regions.push_back({at(0, 0) - size / 2, at(0, 0) + size / 2});
+    t.robot.dof = {2};
+    return t;
+}
+
+}  // namespace
+
+TEST_CASE("branch and bound proves random two-bend corridors and never one-bend ones",
+          "[bnb][slow]") {
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+        INFO("seed " << seed);
+        const task::Task closed = random_zigzag(seed, false);
+        const auto r = synth::branch_and_bound(closed, synth::all_obstacles(closed), generous());
+        CHECK(r.outcome == Outcome::Infeasible);
+        // Moving the second wall's opening to the first one's side opens a
+        // way with one bend: the proof must go.
+        const task::Task open = random_zigzag(seed, true);
+        const auto q = synth::branch_and_bound(open, synth::all_obstacles(open), generous());
+        CHECK(q.outcome == Outcome::Box);
+    }
+}
+
+TEST_CASE("a 2-joint search answers infeasible from the branch and bound, naming its parts",
+          "[bnb][slow]") {
+    const task::Task t = zigzag();
+    synth::SynthesisOptions o;
+    o.time_limit = 60.0;  // the branch and bound gets 5 %: 2 s at most
+    const auto s = synth::synthesize(t, o);
+    REQUIRE(s.status == synth::Status::Infeasible);
+    const auto& core = s.explanation.core;
+    CHECK(std::find(core.begin(), core.end(), "robot.dof") != core.end());
+    CHECK(std::find(core.begin(), core.end(), "trajectory[0]") != core.end());
+    CHECK(std::find(core.begin(), core.end(), "base_regions") != core.end());
+    CHECK(std::count_if(core.begin(), core.end(),
+                        [](const std::string& p) { return p.rfind("obstacles[", 0) == 0; }) > 10);
+    CHECK(s.explanation.message.find("branch and bound") != std::string::npos);
+    // With 3 joints allowed the 2-joint proof says nothing.
+    task::Task more = t;
+    more.robot.dof = {2, 3};
+    CHECK_FALSE(synth::prove_two_joint_infeasible(more, {}).has_value());
 }

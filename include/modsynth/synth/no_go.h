@@ -26,6 +26,9 @@ constexpr std::size_t kMaxPathPoints = 24;
 constexpr std::size_t kMaxWallObstacles = 400;
 constexpr std::size_t kMaxDetourObstacles = 120;
 constexpr std::size_t kMaxProofRegions = 10;
+/// The 2-joint branch and bound only looks at the discs near each design
+/// box, so it copes with more (src/synth/branch_and_bound.cpp).
+constexpr std::size_t kMaxBranchObstacles = 200;
 
 /// The no-go discs of the listed obstacles.
 std::vector<NoGoDisc> no_go_discs(const task::Task& task, const std::vector<int>& obstacles);
