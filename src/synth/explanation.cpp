@@ -391,6 +391,13 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
                   "extend base_regions[" + std::to_string(nearest) + "]" +
                       text::format(" by %.2f m towards (%.2f, %.2f)", gap, b.x(), b.y()),
                   e);
+        } else if (part == "robot.dof" && task.robot.dof.back() < task::kMaxDof) {
+            // Only the 2-joint branch and bound names the joint count: one
+            // more joint is a second bend.
+            for (int k = task.robot.dof.back() + 1; k <= task::kMaxDof; ++k)
+                t.robot.dof.push_back(k);
+            if (!conflict_free(t, kCheck)) continue;
+            offer(part, "allow " + joint_counts(t) + " joints", t);
         } else if (part.rfind("obstacles[", 0) == 0) {
             const int o = index_of(part);
             t.obstacles.erase(t.obstacles.begin() + o);
