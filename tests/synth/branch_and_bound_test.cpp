@@ -162,7 +162,10 @@ TEST_CASE("a 2-joint search answers infeasible from the branch and bound, naming
           "[bnb][slow]") {
     const task::Task t = zigzag();
     synth::SynthesisOptions o;
-    o.time_limit = 60.0;  // the branch and bound gets 5 %: 2 s at most
+    // A budget that a loaded machine cannot exhaust (alone it takes ~1 s).
+    o.time_limit = 60.0;
+    o.branch_and_bound.time_limit = 30.0;
+    o.branch_and_bound_share = 0.5;
     const auto s = synth::synthesize(t, o);
     REQUIRE(s.status == synth::Status::Infeasible);
     const auto& core = s.explanation.core;
