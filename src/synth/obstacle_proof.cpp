@@ -215,10 +215,11 @@ std::optional<ObstacleProof> prove_two_joint_infeasible(
         "no 2-joint arm with links of %.2f-%.2f m and its base in %s reaches %s with both links "
         "clear of obstacles %s: a branch and bound over the base position, both link lengths "
         "and the first joint's angle at %d points of the path refuted every one of %ld boxes, "
-        "for either elbow at every point.",
+        "for either elbow at every point. The proof is exact; delta = %.3f m only sizes the "
+        "boxes at which the search would have stopped with a near-design instead.",
         task.robot.min_link_length, task.robot.max_link_length,
         task.base_regions.size() > 1 ? "any base region" : "the base region", paths.c_str(),
-        index_ranges(r.obstacles).c_str(), r.points, r.boxes);
+        index_ranges(r.obstacles).c_str(), r.points, r.boxes, options.delta);
     return proof;
 }
 
