@@ -9,6 +9,7 @@
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/solution.h>
+#include <modsynth/synth/swept_choice.h>
 #include <modsynth/task/task.h>
 #include <modsynth/verify/verifier.h>
 
@@ -32,6 +33,9 @@ struct SynthesisOptions {
     verify::VerifyOptions verify;
     /// How the initial guesses of the refinement are searched for.
     InitialGuessOptions guesses;
+    /// The model of the swept area the refinement starts each guess from,
+    /// and so the order models are tried in (swept_choice.h).
+    SweptChoice swept = SweptChoice::Auto;
 
     /// m between the points where the refinement constrains the arm along
     /// each primitive: 25 mm keeps a circle of the shipped tasks well
@@ -97,6 +101,15 @@ struct SynthesisStats {
     int skeletons = 0;
     int nlp_solves = 0;
     int counterexamples = 0;
+    /// The model (swept_choice.h, name_of) of the refinement round whose
+    /// robot was certified and returned; empty when none was.
+    std::string certified_by;
+    /// The model of the first certified robot (the one the search for a
+    /// shorter robot starts from).
+    std::string first_certified_by;
+    /// Attempts that ended without a certified robot before the model
+    /// of the first attempt gave way to the next.
+    int fallbacks = 0;
 };
 
 /// The motion options a run plans `task` with: options.motion, with its EE
