@@ -353,6 +353,7 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
             return std::nullopt;  // nothing left to learn
         stats_.counterexamples += static_cast<int>(next.points.size() - problem.points.size());
         next.start = robot;
+        if (next.swept != nlp::SweptVolume::Sampled) ++stats_.fallbacks;
         if (next.swept_only)  // lines take over, at the sampled points too
             for (const auto& p : spaced_points(task_, opt_))
                 add_point(next.points, p.primitive, p.s);

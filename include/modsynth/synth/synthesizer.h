@@ -107,8 +107,9 @@ struct SynthesisStats {
     /// The model of the first certified robot (the one the search for a
     /// shorter robot starts from).
     std::string first_certified_by;
-    /// Attempts that ended without a certified robot before the model
-    /// of the first attempt gave way to the next.
+    /// Times a swept-volume model gave way to the next: its refinement did
+    /// not converge, or its candidate failed verification and the rounds
+    /// went on with lines.
     int fallbacks = 0;
 };
 
