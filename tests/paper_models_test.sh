@@ -62,4 +62,15 @@ PY
     done
 fi
 
+# batch passes --swept to every solve.
+if [ -d "$tmp/p2" ]; then
+    "$bin" batch "$tmp/p2" --out "$tmp/batch.jsonl" --jobs 2 --swept app --time-limit 120 \
+        --solutions "$tmp/batch" >"$tmp/batch.out" 2>&1 ||
+        fail "batch --swept app: $(tail -3 "$tmp/batch.out")"
+    solved=$(grep -c '"status":"solved"' "$tmp/batch.jsonl")
+    [ "$solved" -eq 3 ] || fail "batch --swept app: $solved of 3 solved"
+    grep -q "SV-app" "$tmp"/batch/*.log ||
+        fail "batch --swept app: no solve started from SV-app (logs: $(ls "$tmp/batch"))"
+fi
+
 finish paper_models
