@@ -33,9 +33,6 @@ struct SynthesisOptions {
     verify::VerifyOptions verify;
     /// How the initial guesses of the refinement are searched for.
     InitialGuessOptions guesses;
-    /// The model of the swept area the refinement starts each guess from,
-    /// and so the order models are tried in (swept_choice.h).
-    SweptChoice swept = SweptChoice::Auto;
 
     /// m between the points where the refinement constrains the arm along
     /// each primitive: 25 mm keeps a circle of the shipped tasks well
@@ -85,6 +82,9 @@ struct SynthesisOptions {
     /// Seconds for finding the core common to every joint count once all
     /// are proved infeasible, at most.
     double explanation_seconds = 5.0;
+    /// The model of the swept area the refinement starts each guess from,
+    /// and so the order models are tried in (swept_choice.h).
+    SweptChoice swept = SweptChoice::Auto;
     /// Called with one line per stage event (may be empty).
     std::function<void(const std::string&)> progress;
 
