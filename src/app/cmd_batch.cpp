@@ -301,6 +301,8 @@ Command add_batch(CLI::App& parent) {
         "is the task's path below the suite folder (or the listed tasks' common folder) "
         "without .task.json or .json");
     sub->add_option("--seed", a->run.seed, "passed to every solve (default 0)");
+    sub->add_option("--swept", a->run.swept, "passed to every solve (default auto)")
+        ->check(CLI::IsMember({"auto", "app", "over", "lines"}));
     return {sub, [a] { return run_batch(*a); }};
 }
 

@@ -31,6 +31,7 @@ struct SolveArgs {
     double ee_speed = std::numeric_limits<double>::infinity();
     double joint_speed = std::numeric_limits<double>::infinity();
     bool quiet = false;
+    std::string swept = "auto";
     output::ExportPaths exports;
 };
 
@@ -60,6 +61,11 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
         "  certified over the whole motion: %s, self-collision margin %.4f m, EE deviation <= "
         "%.2e m\n",
         clearance.c_str(), c.min_self_clearance, c.max_deviation);
+    if (!stats.certified_by.empty())
+        std::printf(
+            "  refinement: certified by the %s model (first certified robot: %s; %d "
+            "fallback(s))\n",
+            stats.certified_by.c_str(), stats.first_certified_by.c_str(), stats.fallbacks);
     std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
                 solution.samples.back().t, output.c_str());
     if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
@@ -95,6 +101,7 @@ int run_solve(const SolveArgs& a) {
     synth::SynthesisOptions options;
     options.time_limit = std::max(0.0, a.time_limit - elapsed());
     options.seed = a.seed;
+    options.swept = *synth::swept_choice_from(a.swept);
     options.retime.ee_speed = a.ee_speed;
     options.retime.joint_speed = std::min(a.joint_speed, module_speed_cap(task, catalog));
     options.progress = [&](const std::string& line) {
@@ -150,6 +157,12 @@ Command add_solve(CLI::App& parent) {
     sub->add_option("--joint-speed", a->joint_speed,
                     "cap on every joint's speed below its limit, rad/s (default: none)")
         ->check(positive());
+    sub->add_option("--swept", a->swept,
+                    "model of the swept area the refinement starts from: auto (SV-over for two "
+                    "joints where it can hold, then lines), app (paper III-D), over (paper "
+                    "III-B), lines (separating lines at sampled points); a model whose robot "
+                    "is not certified gives way to lines (default auto)")
+        ->check(CLI::IsMember({"auto", "app", "over", "lines"}));
     sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");
     add_export_options(*sub, a->exports);
     return {sub, [a] { return run_solve(*a); }};

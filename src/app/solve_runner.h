@@ -23,6 +23,7 @@ struct SolveRunOptions {
     double time_limit = 60.0;  ///< passed to each solve
     double grace = 10.0;       ///< seconds past time_limit before the watchdog kills
     unsigned seed = 0;
+    std::string swept = "auto";  ///< passed to each solve (solve --swept)
     int jobs = 1;
 };
 

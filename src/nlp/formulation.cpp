@@ -56,8 +56,8 @@ public:
             for (int j = 0; j + 1 < static_cast<int>(t_.trajectory.size()); ++j)
                 if (task::has_transition_after(t_, j)) add_transition(j);
         }
-        if (p_.swept == SweptVolume::Over && !kinematics::has_proximal_link(f_.dof))
-            add_swept_over();
+        if (p_.swept == SweptVolume::Over) add_swept_over();
+        if (p_.swept == SweptVolume::App) add_swept_app();
         qp_.finalize();
     }
 
@@ -96,8 +96,10 @@ private:
     }
 
     // The distal pair from `o` with its EE at p: elbow variable, both link
-    // lengths, the elbow side, and clearance of both distal links.
-    void distal_pair(const Point& o, const Vec2& p, const std::string& where) {
+    // lengths, the elbow side, and (unless a swept volume stands for them)
+    // clearance of both distal links. Returns the elbow.
+    Point distal_pair(const Point& o, const Vec2& p, const std::string& where,
+                      bool clear_links = true) {
         const int r_a = f_.r[f_.dof - 2], r_b = f_.r[f_.dof - 1];
         const double a0 = p_.start.link_lengths[f_.dof - 2], b0 = p_.start.link_lengths[f_.dof - 1];
         const Point e =
@@ -113,19 +115,26 @@ private:
         Quadratic side = scaled(cross(o, e, target), f_.elbow);
         side.add(r_a, -(rule_.self_distance() + p_.margins.self));
         qp_.add_constraint(side, 0.0, kInfinity, "elbow side " + where);
-        keep_links_from_obstacles(o, e, f_.dof - 1, where);
-        keep_links_from_obstacles(e, target, f_.dof, where);
+        if (clear_links) {
+            keep_links_from_obstacles(o, e, f_.dof - 1, where);
+            keep_links_from_obstacles(e, target, f_.dof, where);
+        }
         if (kinematics::has_proximal_link(f_.dof)) {
             // eq. (9): the EE keeps a diameter away from the proximal link.
             keep_apart(base_, o, target, rule_.self_distance() + p_.margins.self,
                        "EE to link 1, " + where);
         }
+        return e;
     }
 
     void add_trace_point(const PathPoint& pt) {
         const Vec2 p = geometry::point_at(t_.trajectory[pt.primitive], pt.s);
-        distal_pair(origin(pt.primitive), p,
-                    task::part_name(t_, pt.primitive) + text::format(" at %.6f m", pt.s));
+        const bool swept = p_.swept != SweptVolume::Sampled && p_.swept_only;
+        const Point e = distal_pair(
+            origin(pt.primitive), p,
+            task::part_name(t_, pt.primitive) + text::format(" at %.6f m", pt.s), !swept);
+        if (elbows_.size() < t_.trajectory.size()) elbows_.resize(t_.trajectory.size());
+        elbows_[pt.primitive].push_back(e);
     }
 
     void add_proximal_poses() {
@@ -179,17 +188,20 @@ private:
         bisect(t, mid, c, angle_c, depth - 1, p, r1, j);
     }
 
-    // SV^over: conv(disc(b, r1) and primitive j) holds the whole 2-link arm
-    // during j.
+    // SV^over: conv(disc(o_j, r_a) and primitive j) holds the distal pair
+    // during j (with three joints the proximal link is static during j, and
+    // its pose keeps its own separating lines).
     void add_swept_over() {
+        const int r_a = f_.r[f_.dof - 2];
         for (int j = 0; j < static_cast<int>(t_.trajectory.size()); ++j) {
             const geometry::Primitive& prim = t_.trajectory[j];
+            const Point& origin_j = origin(j);
             for (int o = 0; o < static_cast<int>(t_.obstacles.size()); ++o) {
                 const task::Obstacle& ob = t_.obstacles[o];
                 const double need = need_for(ob);
                 const std::string tag = part("obstacles", o) + " on " + task::part_name(t_, j);
                 const Vec2 mid = geometry::point_at(prim, geometry::length(prim) / 2);
-                const Vec2 n0 = away_from(ob.center, p_.start.base, mid);
+                const Vec2 n0 = away_from(ob.center, origin_j.value, mid);
                 const int nx = qp_.add_variable(-1.0, 1.0, n0.x(), "sv normal.x " + tag);
                 const int ny = qp_.add_variable(-1.0, 1.0, n0.y(), "sv normal.y " + tag);
                 const Point n = variable(nx, ny, n0);
@@ -200,7 +212,7 @@ private:
                     add_product(q, n.y, v.y - c.y);
                     return q;
                 };
-                qp_.add_constraint(support(base_).add(f_.r[0], -1.0), need, kInfinity,
+                qp_.add_constraint(support(origin_j).add(r_a, -1.0), need, kInfinity,
                                    "SV disc " + tag);
                 if (prim.kind == geometry::PrimitiveKind::Line) {
                     for (const Vec2& v : {prim.start, prim.end})
@@ -217,6 +229,122 @@ private:
         }
     }
 
+    // eqs. (3) and (4) for one convex polygon: a unit n with
+    // n . (v - c) >= need at every vertex v, and for an arc or circle of the
+    // path its whole disc beyond the line (no obstacle lies inside it, II-A).
+    void separate(const std::vector<Point>& vertices, const geometry::Primitive* prim,
+                  const task::Obstacle& ob, const std::string& tag) {
+        const double need = need_for(ob);
+        Vec2 centroid = Vec2::Zero();
+        for (const Point& v : vertices) centroid += v.value;
+        centroid /= static_cast<double>(vertices.size());
+        Vec2 n0 = centroid - ob.center;
+        n0 = n0.norm() > 1e-9 ? Vec2(n0 / n0.norm()) : Vec2(1.0, 0.0);
+        const int nx = qp_.add_variable(-1.0, 1.0, n0.x(), "sv normal.x " + tag);
+        const int ny = qp_.add_variable(-1.0, 1.0, n0.y(), "sv normal.y " + tag);
+        const Point n = variable(nx, ny, n0);
+        const Point c = constant(ob.center);
+        auto support = [&](const Point& v) {
+            Quadratic q;
+            add_product(q, n.x, v.x - c.x);
+            add_product(q, n.y, v.y - c.y);
+            return q;
+        };
+        for (const Point& v : vertices)
+            qp_.add_constraint(support(v), need, kInfinity, "SV vertex " + tag);
+        if (prim != nullptr) {
+            if (prim->kind == geometry::PrimitiveKind::Line) {
+                for (const Vec2& v : {prim->start, prim->end})
+                    qp_.add_constraint(support(constant(v)), need, kInfinity,
+                                       "SV primitive " + tag);
+            } else {
+                qp_.add_constraint(support(constant(prim->center)).add(-prim->radius), need,
+                                   kInfinity, "SV primitive " + tag);
+            }
+        }
+        qp_.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0,
+                           "SV unit " + tag);
+    }
+
+    // (a - b) . (c - d)
+    static Quadratic dot(const Point& a, const Point& b, const Point& c, const Point& d) {
+        Quadratic q;
+        add_product(q, a.x - b.x, c.x - d.x);
+        add_product(q, a.y - b.y, c.y - d.y);
+        return q;
+    }
+
+    // SV^app (III-D). The elbow's arc e_j runs counter-clockwise about o_j
+    // from p1 to p2, the elbows at the chosen points of j that bound the
+    // largest angular gap between them in the initial guess. M is the arc's
+    // midpoint (on the circle, equidistant from p1 and p2, on the arc's
+    // side), A and B the corners where the tangents at p1, M and p2 meet:
+    // o, p1, A, B, p2 is the pentagon over the sector (Fig. 4(B)) and
+    // p1, A, B, p2 the quadrilateral over the arc. Every relation is
+    // bilinear: |M - o| = r_a, |M - p1|^2 = |M - p2|^2,
+    // (A - p1) . (p1 - o) = 0, (A - M) . (M - o) = 0, and so for B.
+    void add_swept_app() {
+        const int r_a = f_.r[f_.dof - 2];
+        for (int j = 0; j < static_cast<int>(elbows_.size()); ++j) {
+            const std::vector<Point>& es = elbows_[j];
+            if (es.empty()) continue;
+            const Point& o = origin(j);
+            const std::string name = task::part_name(t_, j);
+            std::vector<std::pair<double, int>> angle;
+            for (int i = 0; i < static_cast<int>(es.size()); ++i) {
+                const Vec2 d = es[i].value - o.value;
+                angle.push_back({std::atan2(d.y(), d.x()), i});
+            }
+            std::sort(angle.begin(), angle.end());
+            // The arc is the circle less its largest gap between elbows.
+            int after_gap = 0;
+            double gap = angle.front().first + geometry::kTau - angle.back().first;
+            for (int i = 1; i < static_cast<int>(angle.size()); ++i)
+                if (angle[i].first - angle[i - 1].first > gap) {
+                    gap = angle[i].first - angle[i - 1].first;
+                    after_gap = i;
+                }
+            const int n = static_cast<int>(angle.size());
+            const Point& p1 = es[angle[after_gap].second];
+            const Point& p2 = es[angle[(after_gap + n - 1) % n].second];
+            const double span = geometry::kTau - gap;
+            std::vector<Point> sector{o, p1}, quad{p1};
+            if (span > 1e-3) {
+                const double a1 = angle[after_gap].first;
+                const double r0 = p_.start.link_lengths[f_.dof - 2];
+                const double far = r0 / std::cos(span / 4);
+                const Point m = new_point("SV arc middle " + name,
+                                          o.value + r0 * geometry::unit(a1 + span / 2));
+                const Point a = new_point("SV arc corner 1 " + name,
+                                          o.value + far * geometry::unit(a1 + span / 4));
+                const Point b = new_point("SV arc corner 2 " + name,
+                                          o.value + far * geometry::unit(a1 + 3 * span / 4));
+                link(o, m, r_a, "SV arc middle " + name);
+                Quadratic bisector = squared_distance(m, p1);
+                add_scaled(bisector, squared_distance(m, p2), -1.0);
+                qp_.add_constraint(bisector, 0.0, 0.0, "SV arc middle " + name);
+                qp_.add_constraint(cross(o, p1, m), 0.0, kInfinity, "SV arc side " + name);
+                qp_.add_constraint(dot(a, p1, p1, o), 0.0, 0.0, "SV tangent 1 " + name);
+                qp_.add_constraint(dot(a, m, m, o), 0.0, 0.0, "SV tangent 2 " + name);
+                qp_.add_constraint(dot(b, m, m, o), 0.0, 0.0, "SV tangent 3 " + name);
+                qp_.add_constraint(dot(b, p2, p2, o), 0.0, 0.0, "SV tangent 4 " + name);
+                for (const Point* v : {&a, &b}) {
+                    sector.push_back(*v);
+                    quad.push_back(*v);
+                }
+            }
+            sector.push_back(p2);
+            quad.push_back(p2);
+            for (int k = 0; k < static_cast<int>(t_.obstacles.size()); ++k) {
+                const std::string tag = part("obstacles", k) + " on " + name;
+                separate(sector, nullptr, t_.obstacles[k],
+                         "link " + std::to_string(f_.dof - 1) + " " + tag);
+                separate(quad, &t_.trajectory[j], t_.obstacles[k],
+                         "link " + std::to_string(f_.dof) + " " + tag);
+            }
+        }
+    }
+
     const ArmProblem& p_;
     const task::Task& t_;
     Formulation& f_;
@@ -224,6 +352,7 @@ private:
     const kinematics::ClearanceRule rule_;
     Point base_;
     std::vector<Point> proximal_;
+    std::vector<std::vector<Point>> elbows_;  ///< per primitive, at its chosen points
 };
 
 }  // namespace

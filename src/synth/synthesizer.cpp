@@ -60,22 +60,15 @@ std::vector<nlp::PathPoint> spaced_points(const task::Task& task, const Synthesi
     return pts;
 }
 
-// Whether SV^over could hold near this robot: no obstacle centre inside
-// conv(disc(base, r1) and primitive) for any primitive. When one is, the
-// over-approximation cannot be met nearby and the attempt would only cost time.
-bool swept_over_plausible(const task::Task& task, const kinematics::Robot& robot) {
-    for (const auto& prim : task.trajectory) {
-        std::vector<geometry::Vec2> pts;
-        const double len = geometry::length(prim);
-        for (int i = 0; i <= 16; ++i) pts.push_back(geometry::point_at(prim, len * i / 16));
-        for (int i = 0; i < 32; ++i)
-            pts.push_back(robot.base +
-                          robot.link_lengths[0] * geometry::unit(geometry::kTau * i / 32));
-        const auto hull = geometry::convex_hull(pts);
-        for (const auto& ob : task.obstacles)
-            if (geometry::point_in_convex_polygon(ob.center, hull)) return false;
+// The paper's points (eq. 1): the ends of every primitive; the critical
+// points are added for the robot at hand.
+std::vector<nlp::PathPoint> end_points(const task::Task& task) {
+    std::vector<nlp::PathPoint> pts;
+    for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
+        pts.push_back({j, 0.0});
+        pts.push_back({j, geometry::length(task.trajectory[j])});
     }
-    return true;
+    return pts;
 }
 
 void add_point(std::vector<nlp::PathPoint>& pts, int j, double s) {
@@ -138,7 +131,7 @@ private:
     std::optional<Solution> try_skeleton(const smt::Skeleton& skeleton, int guesses);
     Solution shorten(const smt::Skeleton& found, Solution best);
     std::optional<Solution> refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
-                                   nlp::SweptVolume swept);
+                                   SweptAttempt attempt);
     Verdict judge(const kinematics::Robot& robot);
     nlp::ArmProblem learn(nlp::ArmProblem problem, const Verdict& verdict,
                           const kinematics::Robot& robot) const;
@@ -286,6 +279,7 @@ Solution Search::timed(Solution solution) {
 // against 0.97 m). Each other elbow sign and base region gets one initial
 // guess; a fixed amount of work, so that solutions stay repeatable.
 Solution Search::shorten(const smt::Skeleton& found, Solution best) {
+    std::string best_by = stats_.certified_by;
     for (int region : task::base_region_choices(task_)) {
         for (int elbow : {1, -1}) {
             if ((region == found.base_region && elbow == found.elbow) || remaining() <= 0.0)
@@ -300,9 +294,11 @@ Solution Search::shorten(const smt::Skeleton& found, Solution best) {
                 say(text::format("    shorter: total length %.4f m",
                                  candidate->robot.total_length()));
                 best = std::move(*candidate);
+                best_by = stats_.certified_by;
             }
         }
     }
+    stats_.certified_by = best_by;
     return best;
 }
 
@@ -314,25 +310,26 @@ std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int 
         say(text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(),
                          g.robot.base.y(), g.robot.total_length()) +
             text::format(", margin %.4f m", g.margin));
-        // SV^over bounds a 2-link arm; with three joints the proximal link
-        // moves between primitives and the sampled model is used directly.
-        if (!kinematics::has_proximal_link(skeleton.dof) && !task_.obstacles.empty() &&
-            swept_over_plausible(task_, g.robot))
-            if (auto s = refine(skeleton, g.robot, nlp::SweptVolume::Over)) return s;
-        if (auto s = refine(skeleton, g.robot, nlp::SweptVolume::Sampled)) return s;
+        const auto attempts = swept_attempts(opt_.swept, task_, skeleton, g.robot);
+        for (std::size_t i = 0; i < attempts.size(); ++i) {
+            if (auto s = refine(skeleton, g.robot, attempts[i])) return s;
+            if (i + 1 < attempts.size()) ++stats_.fallbacks;
+        }
     }
     return std::nullopt;
 }
 
 std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
-                                       const kinematics::Robot& start, nlp::SweptVolume swept) {
-    const char* name = swept == nlp::SweptVolume::Over ? "SV-over" : "sampled";
+                                       const kinematics::Robot& start, SweptAttempt attempt) {
+    const char* name = name_of(attempt);
+    const nlp::SweptVolume swept = attempt.swept;
     nlp::ArmProblem problem;
     problem.task = &task_;
     problem.skeleton = skeleton;
     problem.start = start;
     problem.swept = swept;
-    problem.points = spaced_points(task_, opt_);
+    problem.swept_only = attempt.paper;
+    problem.points = attempt.paper ? end_points(task_) : spaced_points(task_, opt_);
     add_critical_points(task_, start, problem.points);
     for (int round = 0; round < opt_.refinement_rounds && remaining() > 0.0; ++round) {
         const auto t0 = Clock::now();
@@ -358,7 +355,11 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
             text::format(" m with %zu points, %d variables", problem.points.size(),
                          f.program.num_variables()));
         Verdict verdict = judge(robot);
-        if (verdict.solution) return std::move(verdict.solution);
+        if (verdict.solution) {
+            stats_.certified_by = name;
+            if (stats_.first_certified_by.empty()) stats_.first_certified_by = name;
+            return std::move(verdict.solution);
+        }
         if (verdict.gave_up) return std::nullopt;
         nlp::ArmProblem next = learn(problem, verdict, robot);
         if (next.points.size() == problem.points.size() &&
@@ -366,7 +367,12 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
             return std::nullopt;  // nothing left to learn
         stats_.counterexamples += static_cast<int>(next.points.size() - problem.points.size());
         next.start = robot;
-        if (swept == nlp::SweptVolume::Over) next.swept = nlp::SweptVolume::Sampled;
+        if (next.swept != nlp::SweptVolume::Sampled) ++stats_.fallbacks;
+        if (next.swept_only)  // lines take over, at the sampled points too
+            for (const auto& p : spaced_points(task_, opt_))
+                add_point(next.points, p.primitive, p.s);
+        next.swept = nlp::SweptVolume::Sampled;
+        next.swept_only = false;
         name = "sampled";
         problem = std::move(next);
     }

@@ -16,15 +16,26 @@ namespace modsynth::nlp {
 
 /// How obstacles enter the problem.
 enum class SweptVolume {
-    /// SV^over (paper III-B), two joints: during primitive j the whole arm
-    /// stays inside conv(disc(base, r_1) and primitive j); one separating
-    /// line per obstacle and primitive keeps every obstacle out. Sound
-    /// without any sampling, but conservative.
+    /// SV^over (paper III-B): during primitive j the distal pair stays
+    /// inside conv(disc(o_j, r_a) and primitive j), o_j the point it turns
+    /// about (the base, or with three joints the end of the proximal link,
+    /// which is static during j) and r_a its first link; one separating line
+    /// per obstacle and primitive keeps every obstacle out. Sound without
+    /// any sampling, but conservative.
     Over,
     /// The arm itself at each chosen point: one separating line per link,
     /// point and nearby obstacle. Exact at those points; the certified
     /// verification covers the gaps and feeds violations back as new points.
     Sampled,
+    /// SV^app (paper III-D): the elbow's arc e_j during primitive j is
+    /// taken from the elbows at the chosen points of j (the angularly
+    /// extreme two are its ends); link a sweeps the pentagon o_j, e_j.p1,
+    /// two tangent corners, e_j.p2 (a sector's over-approximation), link b
+    /// the hull of the arc's quadrilateral and primitive j. One separating
+    /// line per obstacle, primitive and polygon (eqs. 3 and 4). Not sound:
+    /// the elbow may leave e_j between the points, so the certified
+    /// verification decides.
+    App,
 };
 
 struct PathPoint {
@@ -43,6 +54,10 @@ struct ArmProblem {
     kinematics::Robot start;  ///< initial guess (with proximal angles for 3 joints)
     std::vector<PathPoint> points;
     SweptVolume swept = SweptVolume::Sampled;
+    /// With Over or App: the swept volume alone keeps obstacles off the
+    /// links while primitives are traced (the paper's eq. 1), no separating
+    /// line per link and point. Proximal poses and transitions keep theirs.
+    bool swept_only = false;
     Margins margins;
     /// Clearance constraints whose parts are farther apart than this in the
     /// initial guess are left out (the verification adds them back if needed).

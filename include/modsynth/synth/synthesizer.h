@@ -10,6 +10,7 @@
 #include <modsynth/synth/branch_and_bound.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/solution.h>
+#include <modsynth/synth/swept_choice.h>
 #include <modsynth/task/task.h>
 #include <modsynth/verify/verifier.h>
 
@@ -87,6 +88,9 @@ struct SynthesisOptions {
     /// Seconds for finding the core common to every joint count once all
     /// are proved infeasible, at most.
     double explanation_seconds = 5.0;
+    /// The model of the swept area the refinement starts each guess from,
+    /// and so the order models are tried in (swept_choice.h).
+    SweptChoice swept = SweptChoice::Auto;
     /// Called with one line per stage event (may be empty).
     std::function<void(const std::string&)> progress;
 
@@ -103,6 +107,16 @@ struct SynthesisStats {
     int skeletons = 0;
     int nlp_solves = 0;
     int counterexamples = 0;
+    /// The model (swept_choice.h, name_of) of the refinement round whose
+    /// robot was certified and returned; empty when none was.
+    std::string certified_by;
+    /// The model of the first certified robot (the one the search for a
+    /// shorter robot starts from).
+    std::string first_certified_by;
+    /// Times a swept-volume model gave way to the next: its refinement did
+    /// not converge, or its candidate failed verification and the rounds
+    /// went on with lines.
+    int fallbacks = 0;
 };
 
 /// The motion options a run plans `task` with: options.motion, with its EE
