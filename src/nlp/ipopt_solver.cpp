@@ -7,6 +7,7 @@
 #include <IpTNLP.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 
 #include <modsynth/text/format.h>
@@ -20,9 +21,33 @@ using Ipopt::Number;
 
 class Adapter : public Ipopt::TNLP {
 public:
-    explicit Adapter(const QuadraticProgram& program) : p_(program) {}
+    Adapter(const QuadraticProgram& program, const SolverOptions& options)
+        : p_(program),
+          watch_(options.watch),
+          deadline_(std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(options.time_limit))) {}
 
     SolverResult result;
+    /// Why the watch or the wall clock stopped the solve ("" if neither did).
+    std::string stopped;
+
+    // Ipopt looks at its CPU-time limit only between iterations and a
+    // diverging solve makes each iteration slower: the wall clock and the
+    // progress watch stop it here instead.
+    bool intermediate_callback(Ipopt::AlgorithmMode mode, Index iter, Number, Number inf_pr,
+                               Number inf_du, Number, Number, Number, Number, Number, Index,
+                               const Ipopt::IpoptData*,
+                               Ipopt::IpoptCalculatedQuantities*) override {
+        if (std::chrono::steady_clock::now() > deadline_) {
+            stopped = "time limit";
+            return false;
+        }
+        if (mode != Ipopt::RegularMode) return true;
+        watch_.observe(iter, inf_pr, inf_du);
+        stopped = watch_.doomed();
+        return stopped.empty();
+    }
 
     bool get_nlp_info(Index& n, Index& m, Index& nnz_jac, Index& nnz_hess,
                       IndexStyleEnum& style) override {
@@ -142,6 +167,8 @@ private:
     // Ipopt reads |bound| >= 1e19 as "no bound".
     static Number clip(double v) { return std::clamp(v, -1e19, 1e19); }
     const QuadraticProgram& p_;
+    ProgressWatch watch_;
+    std::chrono::steady_clock::time_point deadline_;
 };
 
 // Which constraints keep the last iterate from being feasible, by label
@@ -175,13 +202,14 @@ bool SolverOptions::IsValid(std::string* error) const {
         .at_least("acceptable_constraint_tolerance", acceptable_constraint_tolerance,
                   constraint_tolerance)
         .within("print_level", print_level, 0, 12)
+        .nested("watch", watch)
         .at_least("reported_violations", reported_violations, 0)
         .ok();
 }
 
 SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options) {
     text::require_valid(options);
-    Ipopt::SmartPtr<Adapter> nlp = new Adapter(program);
+    Ipopt::SmartPtr<Adapter> nlp = new Adapter(program, options);
     Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
     auto& o = *app->Options();
     o.SetStringValue("sb", "yes");
@@ -202,6 +230,10 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
     }
     const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(nlp);
     SolverResult result = nlp->result;
+    if (!nlp->stopped.empty()) {
+        result.status = SolverResult::Status::Failed;
+        result.message = "stopped early (" + nlp->stopped + ")";
+    }
     if (result.x.empty())
         result.message = "Ipopt returned " + std::to_string(static_cast<int>(status));
     if (!result.usable()) result.message += worst_violations(program, result.x, options);

@@ -4,14 +4,19 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/nlp/progress_watch.h>
 #include <modsynth/nlp/quadratic_program.h>
 
 namespace modsynth::nlp {
 
 struct SolverOptions {
-    /// Seconds of CPU time (Ipopt's max_cpu_time); callers shorten it to
-    /// what is left of their own budget.
+    /// Seconds of CPU time (Ipopt's max_cpu_time), and of wall-clock time
+    /// checked after each iteration; callers shorten it to what is left of
+    /// their own budget.
     double time_limit = 10.0;
+    /// When a solve is doomed (diverging duals, a stalled primal
+    /// infeasibility) and is stopped before its limits.
+    ProgressWatchOptions watch;
     /// Ipopt iterations; the refinement converges in tens on every task
     /// shipped, so 500 only stops a run that is going nowhere.
     int max_iterations = 500;
