@@ -19,22 +19,26 @@ namespace {
 using Ipopt::Index;
 using Ipopt::Number;
 
+// Now plus `seconds`; no deadline for an infinite or very long limit.
+std::chrono::steady_clock::time_point deadline_after(double seconds) {
+    if (!(seconds < 1e9)) return std::chrono::steady_clock::time_point::max();
+    return std::chrono::steady_clock::now() +
+           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+               std::chrono::duration<double>(seconds));
+}
+
 class Adapter : public Ipopt::TNLP {
 public:
     Adapter(const QuadraticProgram& program, const SolverOptions& options)
-        : p_(program),
-          watch_(options.watch),
-          deadline_(std::chrono::steady_clock::now() +
-                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                        std::chrono::duration<double>(options.time_limit))) {}
+        : p_(program), watch_(options.watch), deadline_(deadline_after(options.wall_limit)) {}
 
     SolverResult result;
     /// Why the watch or the wall clock stopped the solve ("" if neither did).
     std::string stopped;
 
     // Ipopt looks at its CPU-time limit only between iterations and a
-    // diverging solve makes each iteration slower: the wall clock and the
-    // progress watch stop it here instead.
+    // diverging solve makes each iteration slower: the progress watch stops
+    // it here instead, and the wall clock at the caller's deadline.
     bool intermediate_callback(Ipopt::AlgorithmMode mode, Index iter, Number, Number inf_pr,
                                Number inf_du, Number, Number, Number, Number, Number, Index,
                                const Ipopt::IpoptData*,
@@ -195,6 +199,7 @@ std::string worst_violations(const QuadraticProgram& program, const std::vector<
 bool SolverOptions::IsValid(std::string* error) const {
     return text::OptionCheck("SolverOptions", error)
         .greater("time_limit", time_limit, 0.0)
+        .holds("wall_limit", wall_limit > 0.0, "a number of seconds > 0, or infinity")
         .at_least("max_iterations", max_iterations, 0)
         .greater("tolerance", tolerance, 0.0)
         .greater("constraint_tolerance", constraint_tolerance, 0.0)

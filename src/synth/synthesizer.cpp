@@ -399,6 +399,7 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
         so.time_limit = std::min(round == 0 ? opt_.first_solve_seconds : opt_.later_solve_seconds,
                                  std::max(0.05, remaining()));
         so.max_iterations = round == 0 ? opt_.first_solve_iterations : opt_.later_solve_iterations;
+        so.wall_limit = std::max(0.05, remaining());
         const nlp::SolverResult res = nlp::minimize(f.program, so);
         stats_.refine_seconds += seconds_since(t0);
         ++stats_.nlp_solves;

@@ -10,10 +10,12 @@
 namespace modsynth::nlp {
 
 struct SolverOptions {
-    /// Seconds of CPU time (Ipopt's max_cpu_time), and of wall-clock time
-    /// checked after each iteration; callers shorten it to what is left of
-    /// their own budget.
+    /// Seconds of CPU time (Ipopt's max_cpu_time); callers shorten it to
+    /// what is left of their own budget.
     double time_limit = 10.0;
+    /// Seconds of wall-clock time, checked after each iteration: a caller's
+    /// deadline (the CPU-time limit above is Ipopt's own measure).
+    double wall_limit = kInfinity;
     /// When a solve is doomed (diverging duals, a stalled primal
     /// infeasibility) and is stopped before its limits.
     ProgressWatchOptions watch;
