@@ -30,7 +30,10 @@ std::chrono::steady_clock::time_point deadline_after(double seconds) {
 class Adapter : public Ipopt::TNLP {
 public:
     Adapter(const QuadraticProgram& program, const SolverOptions& options)
-        : p_(program), watch_(options.watch), deadline_(deadline_after(options.wall_limit)) {}
+        : p_(program),
+          watch_(options.watch),
+          deadline_(deadline_after(options.wall_limit)),
+          min_variables_(options.watch.min_variables) {}
 
     SolverResult result;
     /// Why the watch or the wall clock stopped the solve ("" if neither did).
@@ -49,6 +52,9 @@ public:
         }
         if (mode != Ipopt::RegularMode) return true;
         watch_.observe(iter, inf_pr, inf_du);
+        // Signs of doom are sometimes wrong (Ipopt can recover from huge
+        // duals): a small program, whose iterations stay cheap, finishes.
+        if (p_.num_variables() < min_variables_) return true;
         stopped = watch_.doomed();
         return stopped.empty();
     }
@@ -173,6 +179,7 @@ private:
     const QuadraticProgram& p_;
     ProgressWatch watch_;
     std::chrono::steady_clock::time_point deadline_;
+    int min_variables_;
 };
 
 // Which constraints keep the last iterate from being feasible, by label

@@ -14,6 +14,7 @@ bool ProgressWatchOptions::IsValid(std::string* error) const {
         .at_least("stall_window", stall_window, 1)
         .greater("flat_ratio", flat_ratio, 1.0)
         .at_least("diverging_window", diverging_window, 1)
+        .at_least("min_variables", min_variables, 0)
         .ok();
 }
 

@@ -26,6 +26,11 @@ struct ProgressWatchOptions {
     double flat_ratio = 1.25;
     /// A diverging solve gets this many iterations to show primal progress.
     int diverging_window = 5;
+    /// Programs with fewer variables are left to finish whatever the
+    /// watch says: their iterations stay cheap, and the signs are sometimes
+    /// wrong (Ipopt can recover from huge duals), so stopping them saves
+    /// little and may lose a robot.
+    int min_variables = 500;
 
     bool IsValid(std::string* error) const;
 };
