@@ -7,6 +7,7 @@
 #include <IpTNLP.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 
 #include <modsynth/text/format.h>
@@ -18,11 +19,45 @@ namespace {
 using Ipopt::Index;
 using Ipopt::Number;
 
+// Now plus `seconds`; no deadline for an infinite or very long limit.
+std::chrono::steady_clock::time_point deadline_after(double seconds) {
+    if (!(seconds < 1e9)) return std::chrono::steady_clock::time_point::max();
+    return std::chrono::steady_clock::now() +
+           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+               std::chrono::duration<double>(seconds));
+}
+
 class Adapter : public Ipopt::TNLP {
 public:
-    explicit Adapter(const QuadraticProgram& program) : p_(program) {}
+    Adapter(const QuadraticProgram& program, const SolverOptions& options)
+        : p_(program),
+          watch_(options.watch),
+          deadline_(deadline_after(options.wall_limit)),
+          min_variables_(options.watch.min_variables) {}
 
     SolverResult result;
+    /// Why the watch or the wall clock stopped the solve ("" if neither did).
+    std::string stopped;
+
+    // Ipopt looks at its CPU-time limit only between iterations and a
+    // diverging solve makes each iteration slower: the progress watch stops
+    // it here instead, and the wall clock at the caller's deadline.
+    bool intermediate_callback(Ipopt::AlgorithmMode mode, Index iter, Number, Number inf_pr,
+                               Number inf_du, Number, Number, Number, Number, Number, Index,
+                               const Ipopt::IpoptData*,
+                               Ipopt::IpoptCalculatedQuantities*) override {
+        if (std::chrono::steady_clock::now() > deadline_) {
+            stopped = "time limit";
+            return false;
+        }
+        if (mode != Ipopt::RegularMode) return true;
+        watch_.observe(iter, inf_pr, inf_du);
+        // Signs of doom are sometimes wrong (Ipopt can recover from huge
+        // duals): a small program, whose iterations stay cheap, finishes.
+        if (p_.num_variables() < min_variables_) return true;
+        stopped = watch_.doomed();
+        return stopped.empty();
+    }
 
     bool get_nlp_info(Index& n, Index& m, Index& nnz_jac, Index& nnz_hess,
                       IndexStyleEnum& style) override {
@@ -142,6 +177,9 @@ private:
     // Ipopt reads |bound| >= 1e19 as "no bound".
     static Number clip(double v) { return std::clamp(v, -1e19, 1e19); }
     const QuadraticProgram& p_;
+    ProgressWatch watch_;
+    std::chrono::steady_clock::time_point deadline_;
+    int min_variables_;
 };
 
 // Which constraints keep the last iterate from being feasible, by label
@@ -168,6 +206,7 @@ std::string worst_violations(const QuadraticProgram& program, const std::vector<
 bool SolverOptions::IsValid(std::string* error) const {
     return text::OptionCheck("SolverOptions", error)
         .greater("time_limit", time_limit, 0.0)
+        .holds("wall_limit", wall_limit > 0.0, "a number of seconds > 0, or infinity")
         .at_least("max_iterations", max_iterations, 0)
         .greater("tolerance", tolerance, 0.0)
         .greater("constraint_tolerance", constraint_tolerance, 0.0)
@@ -175,13 +214,14 @@ bool SolverOptions::IsValid(std::string* error) const {
         .at_least("acceptable_constraint_tolerance", acceptable_constraint_tolerance,
                   constraint_tolerance)
         .within("print_level", print_level, 0, 12)
+        .nested("watch", watch)
         .at_least("reported_violations", reported_violations, 0)
         .ok();
 }
 
 SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options) {
     text::require_valid(options);
-    Ipopt::SmartPtr<Adapter> nlp = new Adapter(program);
+    Ipopt::SmartPtr<Adapter> nlp = new Adapter(program, options);
     Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
     auto& o = *app->Options();
     o.SetStringValue("sb", "yes");
@@ -202,6 +242,10 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
     }
     const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(nlp);
     SolverResult result = nlp->result;
+    if (!nlp->stopped.empty()) {
+        result.status = SolverResult::Status::Failed;
+        result.message = "stopped early (" + nlp->stopped + ")";
+    }
     if (result.x.empty())
         result.message = "Ipopt returned " + std::to_string(static_cast<int>(status));
     if (!result.usable()) result.message += worst_violations(program, result.x, options);

@@ -1,8 +1,10 @@
 #include <modsynth/synth/swept_choice.h>
 
+#include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/chain_layout.h>
+#include <modsynth/kinematics/clearance_rule.h>
 
 namespace modsynth::synth {
 
@@ -40,6 +42,20 @@ const char* name_of(const SweptAttempt& attempt) {
 }
 
 bool swept_over_plausible(const task::Task& task, const kinematics::Robot& robot) {
+    // Nor can it be met at all when an obstacle's clearance circle meets the
+    // primitive's own part of the bound (the segment; for an arc, the disc of
+    // its circle): that part has no variables, so no robot separates them.
+    const kinematics::ClearanceRule rule{task.robot.link_diameter};
+    const nlp::Margins margins;
+    for (const auto& prim : task.trajectory) {
+        for (const auto& ob : task.obstacles) {
+            const double need = rule.obstacle_distance(ob) + margins.clearance;
+            const double gap = prim.kind == geometry::PrimitiveKind::Line
+                                   ? geometry::point_segment(ob.center, prim.start, prim.end)
+                                   : (ob.center - prim.center).norm() - prim.radius;
+            if (gap < need) return false;
+        }
+    }
     const int dof = robot.dof();
     for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
         const auto& prim = task.trajectory[j];

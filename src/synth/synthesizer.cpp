@@ -10,9 +10,11 @@
 #include <modsynth/control/joint_limits.h>
 #include <modsynth/control/motion.h>
 #include <modsynth/control/retime.h>
+#include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/chain_layout.h>
+#include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/smt/front_stage.h>
@@ -128,7 +130,8 @@ private:
     }
     // Each step takes values and gives values: skeleton -> refined robot ->
     // verdict on its motion -> (certified solution | the next problem).
-    std::optional<Solution> try_skeleton(const smt::Skeleton& skeleton, int guesses);
+    std::optional<Solution> try_skeleton(const smt::Skeleton& skeleton, int guesses, unsigned seed);
+    std::optional<Solution> retry(const std::vector<smt::Skeleton>& skeletons);
     Solution shorten(const smt::Skeleton& found, Solution best);
     std::optional<Solution> refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
                                    SweptAttempt attempt);
@@ -143,6 +146,10 @@ private:
     Clock::time_point deadline_;
     control::MotionOptions motion_;
     std::vector<std::string> tried_;
+    /// Refinements that failed, by skeleton, swept-volume model and start
+    /// robot: a refinement is a function of these, so it is never repeated
+    /// (the shortening pass and the retries would otherwise redo them).
+    std::set<std::vector<double>> failed_;
     std::string stage_ = "before the front stage";  ///< the last stage said, for an unknown answer
 };
 
@@ -178,6 +185,7 @@ Solution Search::run() {
     }
     stats_.front_seconds += seconds_since(t_walls);
     std::vector<std::vector<std::string>> cores;
+    std::vector<smt::Skeleton> searched;  ///< every skeleton tried, for the retries
     bool all_unsat = true;
     for (int dof : task_.robot.dof) {
         if (remaining() <= 0.0) {
@@ -223,7 +231,8 @@ Solution Search::run() {
             ++stats_.skeletons;
             say(text::format("%d joints: skeleton %d (elbow %+d, base region %d)", dof, skeletons,
                              sk.elbow, sk.base_region));
-            if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton))
+            searched.push_back(sk);
+            if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton, opt_.seed))
                 return timed(shorten(sk, std::move(*found)));
             front.block(sk);
             const auto t1 = Clock::now();
@@ -235,6 +244,10 @@ Solution Search::run() {
                          (exhausted ? " (all of them) without a certified motion" : ""));
         if (exhausted) say(std::to_string(dof) + " joints: search exhausted");
     }
+    // Blocking skeletons proves nothing: while time is left, their other
+    // initial guesses are tried.
+    if (!searched.empty())
+        if (auto found = retry(searched)) return timed(std::move(*found));
     if (all_unsat && !cores.empty()) {
         const auto t0 = Clock::now();
         out.status = Status::Infeasible;
@@ -273,6 +286,25 @@ Solution Search::timed(Solution solution) {
     return solution;
 }
 
+// Every skeleton the front stage offered, again and again with initial
+// guesses of other seeds, until one is certified or the time runs out: a
+// skeleton exhausted by blocking is no proof that the task is infeasible.
+// The seeds follow from the pass, so solutions stay repeatable.
+std::optional<Solution> Search::retry(const std::vector<smt::Skeleton>& skeletons) {
+    for (unsigned pass = 1; remaining() > 0.0; ++pass) {
+        const unsigned seed = opt_.seed + 1000003u * pass;
+        for (const smt::Skeleton& sk : skeletons) {
+            if (remaining() <= 0.0) break;
+            say(text::format("%d joints: retry %u, elbow %+d, base region %d", sk.dof, pass,
+                             sk.elbow, sk.base_region));
+            if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton, seed))
+                return shorten(sk, std::move(*found));
+        }
+        tried_.push_back(text::format("retry %u of every skeleton", pass));
+    }
+    return std::nullopt;
+}
+
 // The first certified robot ends the search, but it is often not the
 // shortest: the refinement only sees its own elbow sign and base region, and
 // the other branch can need much shorter links (on tasks/rose.json, 0.54 m
@@ -289,7 +321,7 @@ Solution Search::shorten(const smt::Skeleton& found, Solution best) {
             variant.elbow = elbow;
             say(text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof,
                              elbow, region));
-            auto candidate = try_skeleton(variant, opt_.guesses_per_variant);
+            auto candidate = try_skeleton(variant, opt_.guesses_per_variant, opt_.seed);
             if (candidate && candidate->robot.total_length() < best.robot.total_length() - 1e-6) {
                 say(text::format("    shorter: total length %.4f m",
                                  candidate->robot.total_length()));
@@ -302,17 +334,38 @@ Solution Search::shorten(const smt::Skeleton& found, Solution best) {
     return best;
 }
 
-std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int count) {
-    const auto guesses =
-        initial_guesses(task_, skeleton, count, opt_.seed, deadline_, opt_.guesses);
+// What a refinement is a function of (the time left aside): the skeleton's
+// discrete choices, the swept-volume model and the start robot.
+std::vector<double> refinement_key(const smt::Skeleton& skeleton, const kinematics::Robot& start,
+                                   const SweptAttempt& attempt) {
+    std::vector<double> key{static_cast<double>(skeleton.dof),
+                            static_cast<double>(skeleton.elbow),
+                            static_cast<double>(skeleton.base_region),
+                            static_cast<double>(attempt.swept),
+                            attempt.paper ? 1.0 : 0.0,
+                            start.base.x(),
+                            start.base.y()};
+    key.insert(key.end(), start.link_lengths.begin(), start.link_lengths.end());
+    key.insert(key.end(), start.proximal_angles.begin(), start.proximal_angles.end());
+    return key;
+}
+
+std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int count,
+                                             unsigned seed) {
+    const auto guesses = initial_guesses(task_, skeleton, count, seed, deadline_, opt_.guesses);
     for (const auto& g : guesses) {
         if (remaining() <= 0.0) return std::nullopt;
+        auto attempts = swept_attempts(opt_.swept, task_, skeleton, g.robot);
+        std::erase_if(attempts, [&](const SweptAttempt& a) {
+            return failed_.count(refinement_key(skeleton, g.robot, a)) > 0;
+        });
+        if (attempts.empty()) continue;  // failed before from this very start
         say(text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(),
                          g.robot.base.y(), g.robot.total_length()) +
             text::format(", margin %.4f m", g.margin));
-        const auto attempts = swept_attempts(opt_.swept, task_, skeleton, g.robot);
         for (std::size_t i = 0; i < attempts.size(); ++i) {
             if (auto s = refine(skeleton, g.robot, attempts[i])) return s;
+            failed_.insert(refinement_key(skeleton, g.robot, attempts[i]));
             if (i + 1 < attempts.size()) ++stats_.fallbacks;
         }
     }
@@ -340,6 +393,7 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
         so.time_limit = std::min(round == 0 ? opt_.first_solve_seconds : opt_.later_solve_seconds,
                                  std::max(0.05, remaining()));
         so.max_iterations = round == 0 ? opt_.first_solve_iterations : opt_.later_solve_iterations;
+        so.wall_limit = std::max(0.05, remaining());
         const nlp::SolverResult res = nlp::minimize(f.program, so);
         stats_.refine_seconds += seconds_since(t0);
         ++stats_.nlp_solves;

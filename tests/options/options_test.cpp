@@ -104,6 +104,8 @@ TEST_CASE("solver options: defaults valid, each bad field named", "[options][nlp
          [](O& o) { o.acceptable_constraint_tolerance = 1e-10; }},
         {"SolverOptions::print_level", [](O& o) { o.print_level = 13; }},
         {"SolverOptions::reported_violations", [](O& o) { o.reported_violations = -1; }},
+        {"SolverOptions::wall_limit", [](O& o) { o.wall_limit = kNaN; }},
+        {"ProgressWatchOptions::stall_window", [](O& o) { o.watch.stall_window = 0; }},
     });
     nlp::QuadraticProgram qp;
     qp.add_variable(-1.0, 1.0, 0.0, "x");

@@ -158,3 +158,39 @@ TEST_CASE("wipe-table and clean-table: 2 joints exhausted, then solved with 3", 
                    .size() > 1));
     }
 }
+
+TEST_CASE("a search that finds nothing goes on to its time limit and never repeats a refinement",
+          "[synth][slow]") {
+    // No refinement can converge in one Ipopt iteration: every skeleton of
+    // rose.json fails, which used to end the run at once as unknown.
+    const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
+    synth::SynthesisOptions options;
+    options.time_limit = 2.0;
+    options.first_solve_iterations = 1;
+    std::vector<std::string> lines;
+    options.progress = [&](const std::string& l) { lines.push_back(l); };
+    const synth::Solution s = synth::synthesize(t, options);
+    REQUIRE(s.status == synth::Status::Unknown);
+    CHECK(s.status.reason == "time limit");
+    CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
+        return l.find("retry 1,") != std::string::npos;
+    }));
+    // Each start is refined once per skeleton: a line "start: ..." never
+    // comes twice after the same skeleton (elbow sign and base region).
+    std::set<std::pair<std::string, std::string>> starts;
+    std::string skeleton;
+    int count = 0;
+    for (const std::string& l : lines) {
+        const auto elbow = l.find("elbow ");
+        if (elbow != std::string::npos) {
+            const auto end = l.find_first_of("?)", elbow);
+            skeleton = l.substr(elbow, end == std::string::npos ? end : end - elbow);
+        }
+        const auto start = l.find("start: ");
+        if (start == std::string::npos) continue;
+        ++count;
+        INFO(skeleton << " " << l);
+        CHECK(starts.insert({skeleton, l.substr(start)}).second);
+    }
+    CHECK(count > 4);
+}

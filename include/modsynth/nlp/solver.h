@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/nlp/progress_watch.h>
 #include <modsynth/nlp/quadratic_program.h>
 
 namespace modsynth::nlp {
@@ -12,6 +13,12 @@ struct SolverOptions {
     /// Seconds of CPU time (Ipopt's max_cpu_time); callers shorten it to
     /// what is left of their own budget.
     double time_limit = 10.0;
+    /// Seconds of wall-clock time, checked after each iteration: a caller's
+    /// deadline (the CPU-time limit above is Ipopt's own measure).
+    double wall_limit = kInfinity;
+    /// When a solve is doomed (diverging duals, a stalled primal
+    /// infeasibility) and is stopped before its limits.
+    ProgressWatchOptions watch;
     /// Ipopt iterations; the refinement converges in tens on every task
     /// shipped, so 500 only stops a run that is going nowhere.
     int max_iterations = 500;
