@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <modsynth/geometry/distance.h>
@@ -198,33 +199,10 @@ private:
             const Point& origin_j = origin(j);
             for (int o = 0; o < static_cast<int>(t_.obstacles.size()); ++o) {
                 const task::Obstacle& ob = t_.obstacles[o];
-                const double need = need_for(ob);
                 const std::string tag = part("obstacles", o) + " on " + task::part_name(t_, j);
                 const Vec2 mid = geometry::point_at(prim, geometry::length(prim) / 2);
                 const Vec2 n0 = away_from(ob.center, origin_j.value, mid);
-                const int nx = qp_.add_variable(-1.0, 1.0, n0.x(), "sv normal.x " + tag);
-                const int ny = qp_.add_variable(-1.0, 1.0, n0.y(), "sv normal.y " + tag);
-                const Point n = variable(nx, ny, n0);
-                const Point c = constant(ob.center);
-                auto support = [&](const Point& v) {
-                    Quadratic q;
-                    add_product(q, n.x, v.x - c.x);
-                    add_product(q, n.y, v.y - c.y);
-                    return q;
-                };
-                qp_.add_constraint(support(origin_j).add(r_a, -1.0), need, kInfinity,
-                                   "SV disc " + tag);
-                if (prim.kind == geometry::PrimitiveKind::Line) {
-                    for (const Vec2& v : {prim.start, prim.end})
-                        qp_.add_constraint(support(constant(v)), need, kInfinity,
-                                           "SV primitive " + tag);
-                } else {
-                    // The arc lies in its circle's disc: a sound, simpler bound.
-                    qp_.add_constraint(support(constant(prim.center)).add(-prim.radius), need,
-                                       kInfinity, "SV primitive " + tag);
-                }
-                qp_.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0,
-                                   "SV unit " + tag);
+                separate({}, Disc{origin_j, r_a}, &prim, ob, tag, n0);
             }
         }
     }
@@ -232,14 +210,27 @@ private:
     // eqs. (3) and (4) for one convex polygon: a unit n with
     // n . (v - c) >= need at every vertex v, and for an arc or circle of the
     // path its whole disc beyond the line (no obstacle lies inside it, II-A).
-    void separate(const std::vector<Point>& vertices, const geometry::Primitive* prim,
-                  const task::Obstacle& ob, const std::string& tag) {
+    // SV^over's polygon is a disc of variable radius about a point, which
+    // stands in for the vertices.
+    struct Disc {
+        Point center;
+        int radius;  ///< the variable
+    };
+
+    void separate(const std::vector<Point>& vertices, std::optional<Disc> disc,
+                  const geometry::Primitive* prim, const task::Obstacle& ob, const std::string& tag,
+                  std::optional<Vec2> start = std::nullopt) {
         const double need = need_for(ob);
-        Vec2 centroid = Vec2::Zero();
-        for (const Point& v : vertices) centroid += v.value;
-        centroid /= static_cast<double>(vertices.size());
-        Vec2 n0 = centroid - ob.center;
-        n0 = n0.norm() > 1e-9 ? Vec2(n0 / n0.norm()) : Vec2(1.0, 0.0);
+        Vec2 n0 = Vec2(1.0, 0.0);
+        if (start) {
+            n0 = *start;
+        } else {
+            Vec2 centroid = Vec2::Zero();
+            for (const Point& v : vertices) centroid += v.value;
+            centroid /= static_cast<double>(vertices.size());
+            const Vec2 away = centroid - ob.center;
+            if (away.norm() > 1e-9) n0 = away / away.norm();
+        }
         const int nx = qp_.add_variable(-1.0, 1.0, n0.x(), "sv normal.x " + tag);
         const int ny = qp_.add_variable(-1.0, 1.0, n0.y(), "sv normal.y " + tag);
         const Point n = variable(nx, ny, n0);
@@ -250,6 +241,9 @@ private:
             add_product(q, n.y, v.y - c.y);
             return q;
         };
+        if (disc)
+            qp_.add_constraint(support(disc->center).add(disc->radius, -1.0), need, kInfinity,
+                               "SV disc " + tag);
         for (const Point& v : vertices)
             qp_.add_constraint(support(v), need, kInfinity, "SV vertex " + tag);
         if (prim != nullptr) {
@@ -258,6 +252,7 @@ private:
                     qp_.add_constraint(support(constant(v)), need, kInfinity,
                                        "SV primitive " + tag);
             } else {
+                // The arc lies in its circle's disc: a sound, simpler bound.
                 qp_.add_constraint(support(constant(prim->center)).add(-prim->radius), need,
                                    kInfinity, "SV primitive " + tag);
             }
@@ -337,9 +332,9 @@ private:
             quad.push_back(p2);
             for (int k = 0; k < static_cast<int>(t_.obstacles.size()); ++k) {
                 const std::string tag = part("obstacles", k) + " on " + name;
-                separate(sector, nullptr, t_.obstacles[k],
+                separate(sector, std::nullopt, nullptr, t_.obstacles[k],
                          "link " + std::to_string(f_.dof - 1) + " " + tag);
-                separate(quad, &t_.trajectory[j], t_.obstacles[k],
+                separate(quad, std::nullopt, &t_.trajectory[j], t_.obstacles[k],
                          "link " + std::to_string(f_.dof) + " " + tag);
             }
         }
