@@ -57,7 +57,6 @@
 (declare-fun |obstacles[45]| () Bool)
 (declare-fun reach () Real)
 (declare-fun |trajectory[0]| () Bool)
-(declare-fun closest_interior_0 () Bool)
 (assert
  (> r1 0.0))
 (assert
@@ -456,22 +455,20 @@
  (let (($x445 (and |trajectory[0]| robot.link_diameter)))
  (=> $x445 (>= ?x526 (/ 80637.0 80000000.0))))))))
 (assert
- (let ((?x539 (+ (* (- base_x 1.0) 0.0) (* (- base_y (- (/ 1.0 10.0))) (/ 1.0 5.0)))))
- (=> closest_interior_0 (and (>= ?x539 0.0) (<= ?x539 (/ 1.0 25.0))))))
-(assert
- (let ((?x539 (+ (* (- base_x 1.0) 0.0) (* (- base_y (- (/ 1.0 10.0))) (/ 1.0 5.0)))))
- (=> (not closest_interior_0) (or (<= ?x539 0.0) (>= ?x539 (/ 1.0 25.0))))))
-(assert
  (let ((?x542 (- (* 0.0 (- base_y (- (/ 1.0 10.0)))) (* (/ 1.0 5.0) (- base_x 1.0)))))
- (let ((?x555 (* ?x542 ?x542)))
- (let (($x558 (=> closest_interior_0 (>= (+ ?x555 (/ 1.0 10000000.0)) (* (* (- r1 r2) (- r1 r2)) (/ 1.0 25.0))))))
+ (let ((?x548 (* ?x542 ?x542)))
+ (let ((?x539 (+ (* (- base_x 1.0) 0.0) (* (- base_y (- (/ 1.0 10.0))) (/ 1.0 5.0)))))
+ (let (($x546 (or (<= ?x539 0.0) (>= ?x539 (/ 1.0 25.0)))))
+ (let (($x551 (or $x546 (>= (+ ?x548 (/ 1.0 10000000.0)) (* (* (- r1 r2) (- r1 r2)) (/ 1.0 25.0))))))
  (let (($x436 (and |trajectory[0]|)))
- (=> (and $x436 closest_interior_0) (>= (+ ?x555 (/ 1.0 10000000.0)) (* (* (- r1 r2) (- r1 r2)) (/ 1.0 25.0)))))))))
+ (=> $x436 $x551))))))))
 (assert
  (let ((?x542 (- (* 0.0 (- base_y (- (/ 1.0 10.0)))) (* (/ 1.0 5.0) (- base_x 1.0)))))
- (let ((?x555 (* ?x542 ?x542)))
+ (let ((?x548 (* ?x542 ?x542)))
+ (let ((?x539 (+ (* (- base_x 1.0) 0.0) (* (- base_y (- (/ 1.0 10.0))) (/ 1.0 5.0)))))
+ (let (($x546 (or (<= ?x539 0.0) (>= ?x539 (/ 1.0 25.0)))))
  (let (($x445 (and |trajectory[0]| robot.link_diameter)))
- (=> (and $x445 closest_interior_0) (>= ?x555 (/ 80637.0 2000000000.0)))))))
+ (=> $x445 (or $x546 (>= ?x548 (/ 80637.0 2000000000.0))))))))))
 (assert
  (let (($x436 (and |trajectory[0]|)))
  (=> $x436 (>= (* 2.0 reach) (/ 1999999.0 10000000.0)))))
