@@ -360,6 +360,8 @@ bool BranchAndBoundOptions::IsValid(std::string* error) const {
         .greater("point_spacing", point_spacing, 0.0)
         .at_least("max_points", max_points, 2)
         .at_least("max_angle_ranges", max_angle_ranges, 2)
+        .at_least("core_time_limit", core_time_limit, 0.0)
+        .greater("core_run_time_limit", core_run_time_limit, 0.0)
         .ok();
 }
 

@@ -162,7 +162,10 @@ InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
         return proof;
     }
     const Clock::time_point deadline = after(time_limit);
-    if (auto bnb = prove_two_joint_infeasible(task, BranchAndBoundOptions{}, deadline)) {
+    // explain has the time to shrink the proof's obstacles to a minimal core.
+    BranchAndBoundOptions options;
+    options.core_time_limit = time_limit;
+    if (auto bnb = prove_two_joint_infeasible(task, options, deadline)) {
         proof.proved = true;
         proof.core = std::move(bnb->core);
         proof.message = std::move(bnb->message);

@@ -8,6 +8,7 @@
 #include <modsynth/text/format.h>
 
 #include <algorithm>
+#include <iterator>
 #include <set>
 
 namespace modsynth::synth {
@@ -195,16 +196,126 @@ std::string index_ranges(std::vector<int> indices) {
     return s;
 }
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool proves(const BranchAndBoundResult& r) {
+    return r.outcome == BranchAndBoundResult::Outcome::Infeasible && !r.obstacles.empty();
+}
+
+std::vector<int> sorted(std::vector<int> v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+}
+
+std::vector<int> minus(const std::vector<int>& a, const std::vector<int>& b) {
+    std::vector<int> out;
+    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+    return out;
+}
+
+struct Shrunk {
+    std::vector<int> keep;       ///< proved: the search refutes every box among these alone
+    BranchAndBoundResult proof;  ///< the search that proved it
+    bool finished = false;       ///< every obstacle left was found needed
+};
+
+// A deletion filter over the obstacles of a proof, QuickXplain-style: a
+// block of obstacles is dropped when the search, re-run with the same
+// options on the rest, still refutes every box (fewer obstacles are fewer
+// constraints, so a proof among a subset is a proof for the task); a block
+// that cannot go is halved, down to single obstacles. Each obstacle kept
+// failed alone against a superset of what remains. A proof also names the
+// obstacles it used, and only those are kept on. Blocks first: a corridor
+// wall holds posts beyond the arm's reach that go together, where one at a
+// time would cost a search each.
+Shrunk shrink(const task::Task& task, const BranchAndBoundResult& first,
+              const std::vector<int>& proved_among, const BranchAndBoundOptions& options,
+              Clock::time_point deadline) {
+    Shrunk s{sorted(first.obstacles), first, false};
+    std::vector<int> proved_set = sorted(proved_among);
+    BranchAndBoundOptions run = options;
+    run.time_limit = options.core_run_time_limit;
+    // An obstacle is needed when the search without it stops at a box (the
+    // search is deterministic: more time would find the same box); when it
+    // stops at its per-run budget instead, the obstacle stays, unsettled.
+    bool settled = true;
+    std::vector<std::vector<int>> blocks;  // a stack: the back is tried next
+    {
+        const std::size_t n = s.keep.size(), size = std::max<std::size_t>(1, (n + 3) / 4);
+        for (std::size_t k = 0; k < n; k += size)
+            blocks.emplace_back(s.keep.begin() + static_cast<long>(k),
+                                s.keep.begin() + static_cast<long>(std::min(n, k + size)));
+        std::reverse(blocks.begin(), blocks.end());
+    }
+    while (!blocks.empty()) {
+        std::vector<int> block = sorted(blocks.back());
+        blocks.pop_back();
+        block.erase(std::remove_if(block.begin(), block.end(),
+                                   [&](int i) {
+                                       return !std::binary_search(s.keep.begin(), s.keep.end(), i);
+                                   }),
+                    block.end());
+        if (block.empty()) continue;
+        const std::vector<int> rest = minus(s.keep, block);
+        if (Clock::now() >= deadline) return s;
+        const auto r =
+            rest.empty() ? BranchAndBoundResult{} : branch_and_bound(task, rest, run, deadline);
+        if (proves(r)) {
+            s.keep = sorted(r.obstacles);  // a subset of rest
+            s.proof = r;
+            proved_set = rest;
+            continue;
+        }
+        if (r.outcome == BranchAndBoundResult::Outcome::Unknown && Clock::now() >= deadline)
+            return s;  // the overall budget, not the obstacles, stopped it
+        if (block.size() == 1 && r.outcome != BranchAndBoundResult::Outcome::Box) settled = false;
+        if (block.size() > 1) {
+            const auto mid = block.begin() + static_cast<long>(block.size() / 2);
+            blocks.emplace_back(mid, block.end());
+            blocks.emplace_back(block.begin(), mid);
+        }
+    }
+    // The last proof ran among proved_set; what it used is kept, so check
+    // that exactly those suffice (the filter's answer must be a proof).
+    if (s.keep != proved_set) {
+        const auto r = branch_and_bound(task, s.keep, run, deadline);
+        if (!proves(r)) {
+            s.keep = proved_set;
+            return s;
+        }
+        s.proof = r;
+    }
+    s.finished = settled;
+    return s;
+}
+
+}  // namespace
+
 std::optional<ObstacleProof> prove_two_joint_infeasible(
     const task::Task& task, const BranchAndBoundOptions& options,
     std::chrono::steady_clock::time_point deadline) {
     if (task.robot.dof != std::vector<int>{2} || task.base_regions.empty() ||
         task.obstacles.empty() || task.obstacles.size() > kMaxBranchObstacles)
         return std::nullopt;
-    const auto r = branch_and_bound(task, all_obstacles(task), options, deadline);
-    if (r.outcome != BranchAndBoundResult::Outcome::Infeasible || r.obstacles.empty())
-        return std::nullopt;  // without obstacles the front stage has the better proof
+    const auto start = Clock::now();
+    BranchAndBoundResult r = branch_and_bound(task, all_obstacles(task), options, deadline);
+    if (!proves(r)) return std::nullopt;  // without obstacles the front stage has the better proof
+    // Shrinking, within what the proof left of core_time_limit.
+    const auto core_deadline =
+        std::min(deadline, start + std::chrono::duration_cast<Clock::duration>(
+                                       std::chrono::duration<double>(options.core_time_limit)));
+    bool minimal = false;
+    if (Clock::now() < core_deadline) {
+        Shrunk s = shrink(task, r, all_obstacles(task), options, core_deadline);
+        minimal = s.finished;
+        r = std::move(s.proof);
+        r.obstacles = std::move(s.keep);
+    }
     ObstacleProof proof;
+    proof.minimal = minimal;
     proof.core = core_of(
         task, r.obstacles, {r.primitives.begin(), r.primitives.end()},
         {"robot.dof", "robot.min_link_length", "robot.max_link_length", "robot.link_diameter"});
@@ -220,6 +331,9 @@ std::optional<ObstacleProof> prove_two_joint_infeasible(
         task.robot.min_link_length, task.robot.max_link_length,
         task.base_regions.size() > 1 ? "any base region" : "the base region", paths.c_str(),
         index_ranges(r.obstacles).c_str(), r.points, r.boxes, options.delta);
+    proof.message += minimal ? " Without any one of these obstacles the search finds no proof."
+                             : " (core not minimised within the time limit: some of these "
+                               "obstacles may not be needed.)";
     return proof;
 }
 

@@ -173,6 +173,8 @@ Solution Search::run() {
     // walls and detours leave open, within a small share of the run.
     BranchAndBoundOptions bnb = opt_.branch_and_bound;
     bnb.time_limit = std::min(bnb.time_limit, opt_.branch_and_bound_share * opt_.time_limit);
+    // The core is shrunk only within what the proof leaves of its share.
+    bnb.core_time_limit = std::min(bnb.core_time_limit, bnb.time_limit);
     auto proof = bnb.time_limit > 0.0 ? prove_two_joint_infeasible(task_, bnb, deadline_)
                                       : std::optional<ObstacleProof>{};
     if (proof) {

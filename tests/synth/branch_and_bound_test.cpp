@@ -4,6 +4,7 @@
 #include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/synth/synthesizer.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <random>
@@ -179,4 +180,89 @@ TEST_CASE("a 2-joint search answers infeasible from the branch and bound, naming
     task::Task more = t;
     more.robot.dof = {2, 3};
     CHECK_FALSE(synth::prove_two_joint_infeasible(more, {}).has_value());
+}
+
+namespace {
+
+std::vector<int> core_obstacles(const std::vector<std::string>& core) {
+    std::vector<int> out;
+    for (const auto& p : core)
+        if (p.rfind("obstacles[", 0) == 0) out.push_back(std::stoi(p.substr(10)));
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// Checks that `keep` is a minimal proof for `t`: the search proves the task
+// among `keep` alone, and without any one of them it does not (under a
+// budget no loaded machine exhausts, so that "no proof" is the obstacles'
+// doing, not the clock's).
+void check_minimal(const task::Task& t, const std::vector<int>& keep) {
+    const auto all = synth::branch_and_bound(t, keep, generous());
+    CHECK(all.outcome == Outcome::Infeasible);
+    for (std::size_t k = 0; k < keep.size(); ++k) {
+        std::vector<int> fewer = keep;
+        fewer.erase(fewer.begin() + static_cast<long>(k));
+        const auto r = synth::branch_and_bound(t, fewer, generous());
+        INFO("without obstacle " << keep[k] << ": boxes " << r.boxes << ", " << r.seconds << " s");
+        CHECK(r.outcome != Outcome::Infeasible);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("the 2-joint proof's core is minimal: without any obstacle listed the proof breaks",
+          "[bnb][slow]") {
+    for (const task::Task& t : {zigzag(), random_zigzag(1, false)}) {
+        INFO(t.name);
+        synth::BranchAndBoundOptions unshrunk = generous();
+        unshrunk.core_time_limit = 0.0;
+        const auto before = synth::prove_two_joint_infeasible(t, unshrunk);
+        REQUIRE(before.has_value());
+        CHECK_FALSE(before->minimal);
+        CHECK(before->message.find("core not minimised within the time limit") !=
+              std::string::npos);
+
+        synth::BranchAndBoundOptions shrinking = generous();
+        shrinking.core_time_limit = 300.0;
+        shrinking.core_run_time_limit = 30.0;
+        const auto after = synth::prove_two_joint_infeasible(t, shrinking);
+        REQUIRE(after.has_value());
+        REQUIRE(after->minimal);
+        CHECK(after->message.find("not minimised") == std::string::npos);
+        const auto was = core_obstacles(before->core), is = core_obstacles(after->core);
+        INFO("core " << was.size() << " -> " << is.size() << " obstacles");
+        CHECK(!is.empty());
+        CHECK(is.size() <= was.size());
+        CHECK(std::includes(was.begin(), was.end(), is.begin(), is.end()));
+        check_minimal(t, is);
+    }
+}
+
+TEST_CASE("a 2-joint proof out of time to shrink keeps a sound core and says so", "[bnb][slow]") {
+    const task::Task t = zigzag();
+    synth::BranchAndBoundOptions o = generous();
+    // Far less than the proof itself takes: no time is left to shrink.
+    o.core_time_limit = 1e-6;
+    const auto p = synth::prove_two_joint_infeasible(t, o);
+    REQUIRE(p.has_value());
+    CHECK_FALSE(p->minimal);
+    CHECK(p->message.find("core not minimised within the time limit") != std::string::npos);
+    // What it lists still proves the task.
+    const auto r = synth::branch_and_bound(t, core_obstacles(p->core), generous());
+    CHECK(r.outcome == Outcome::Infeasible);
+}
+
+TEST_CASE("branch and bound core options are validated", "[bnb]") {
+    synth::BranchAndBoundOptions o;
+    std::string error;
+    o.core_time_limit = -1.0;
+    CHECK_FALSE(o.IsValid(&error));
+    CHECK(error.find("core_time_limit") != std::string::npos);
+    o.core_time_limit = 0.0;
+    o.core_run_time_limit = 0.0;
+    CHECK_FALSE(o.IsValid(&error));
+    CHECK(error.find("core_run_time_limit") != std::string::npos);
+    synth::SynthesisOptions s;
+    CHECK(s.IsValid(&error));
+    CHECK(s.branch_and_bound.core_time_limit > 0.0);
 }

@@ -50,6 +50,16 @@ struct BranchAndBoundOptions {
     /// Theta ranges kept per path point and design box, at most: past this a
     /// range is kept whole instead of bisected (sound, only less sharp).
     int max_angle_ranges = 256;
+    /// Seconds for a proof and the shrinking of its obstacles to a minimal
+    /// core, in all, counted from the proof's start: the shrinking gets what
+    /// the proof leaves (prove_two_joint_infeasible; 0 or less than the proof
+    /// took: the core lists every obstacle that refuted some box, unshrunk).
+    double core_time_limit = 0.0;
+    /// Seconds, at most, for each re-run of the search on fewer obstacles
+    /// while shrinking. Without a needed obstacle the search must reach a
+    /// box to show it needed; a re-run that stops at this budget instead
+    /// leaves the core marked not minimised.
+    double core_run_time_limit = 2.0;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;

@@ -19,6 +19,10 @@ struct ObstacleProof {
     /// the same kind of proof no longer holds.
     std::vector<std::string> core;
     std::string message;  ///< the proof in words (no "Proved infeasible: ")
+    /// False when the shrinking of the core ran out of time (or was not
+    /// given any): the core is then sound but may list obstacles the proof
+    /// does not need. Wall and detour proofs are always minimal.
+    bool minimal = true;
     std::optional<SeparationWitness> separation;
     std::optional<GeodesicWitness> geodesic;
 };
@@ -33,9 +37,13 @@ std::optional<ObstacleProof> prove_obstacle_infeasible(const task::Task& task);
 /// and obstacles): a proof by branch and bound (branch_and_bound.h) that no
 /// 2-joint design reaches the path's points with its links clear; nullopt
 /// when the search finds a box or runs out of its budget. The core lists the
-/// obstacles whose clearance refuted some box (not minimised: each deletion
-/// would cost a whole search), the primitives of the refuting points,
-/// base_regions, robot.dof and the link bounds.
+/// obstacles of the proof, the primitives of the refuting points,
+/// base_regions, robot.dof and the link bounds. The obstacles are shrunk by
+/// a deletion filter (each deletion a re-run of the search on fewer
+/// obstacles, at most options.core_run_time_limit each) until without any
+/// one of them the search finds no proof, within what the first proof left
+/// of options.core_time_limit; past it (`minimal` false) the core keeps
+/// the obstacles proved so far, and the message says it is not minimised.
 std::optional<ObstacleProof> prove_two_joint_infeasible(
     const task::Task& task, const BranchAndBoundOptions& options,
     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());

@@ -36,8 +36,14 @@ struct SynthesisOptions {
     InitialGuessOptions guesses;
     /// The branch and bound tried on tasks that allow 2 joints only, when
     /// neither a wall nor a detour proves them infeasible. Its time_limit
-    /// is further capped at branch_and_bound_share of the run's.
-    BranchAndBoundOptions branch_and_bound;
+    /// is further capped at branch_and_bound_share of the run's, and so is
+    /// its core_time_limit: the core of a proof is shrunk within what the
+    /// proof leaves of that share.
+    BranchAndBoundOptions branch_and_bound = [] {
+        BranchAndBoundOptions o;
+        o.core_time_limit = o.time_limit;
+        return o;
+    }();
     double branch_and_bound_share = 0.05;
 
     /// m between the points where the refinement constrains the arm along
