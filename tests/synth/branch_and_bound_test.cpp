@@ -212,7 +212,9 @@ void check_minimal(const task::Task& t, const std::vector<int>& keep) {
 
 TEST_CASE("the 2-joint proof's core is minimal: without any obstacle listed the proof breaks",
           "[bnb][slow]") {
-    for (const task::Task& t : {zigzag(), random_zigzag(1, false)}) {
+    // One corridor whose boxes are found fast: each needed obstacle costs a
+    // search that ends in a box, and on zigzag() those take minutes in all.
+    for (const task::Task& t : {random_zigzag(1, false)}) {
         INFO(t.name);
         synth::BranchAndBoundOptions unshrunk = generous();
         unshrunk.core_time_limit = 0.0;
