@@ -153,22 +153,20 @@ std::vector<std::string> common_core(const task::Task& task,
 
 InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
     InfeasibilityProof proof;
-    if (auto walls = prove_obstacle_infeasible(task)) {
-        proof.proved = true;
-        proof.core = std::move(walls->core);
-        proof.message = std::move(walls->message);
-        proof.separation = std::move(walls->separation);
-        proof.geodesic = std::move(walls->geodesic);
-        return proof;
-    }
     const Clock::time_point deadline = after(time_limit);
-    // explain has the time to shrink the proof's obstacles to a minimal core.
-    BranchAndBoundOptions options;
-    options.core_time_limit = time_limit;
-    if (auto bnb = prove_two_joint_infeasible(task, options, deadline)) {
+    std::optional<ObstacleProof> obstacles = prove_obstacle_infeasible(task);
+    if (!obstacles) {
+        // explain has the time to shrink the proof's obstacles to a minimal core.
+        BranchAndBoundOptions options;
+        options.core_time_limit = time_limit;
+        obstacles = prove_two_joint_infeasible(task, options, deadline);
+    }
+    if (obstacles) {
         proof.proved = true;
-        proof.core = std::move(bnb->core);
-        proof.message = std::move(bnb->message);
+        proof.core = std::move(obstacles->core);
+        proof.message = std::move(obstacles->message);
+        proof.separation = std::move(obstacles->separation);
+        proof.geodesic = std::move(obstacles->geodesic);
         return proof;
     }
     std::vector<std::vector<std::string>> cores;

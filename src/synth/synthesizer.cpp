@@ -159,33 +159,26 @@ Solution Search::run() {
     // Walls and detours first: exact geometry in milliseconds, where the
     // front stage could only search.
     const auto t_walls = Clock::now();
-    if (auto walls = prove_obstacle_infeasible(task_)) {
-        stats_.front_seconds += seconds_since(t_walls);
-        say("obstacles: proved infeasible, " + walls->message);
-        out.status = Status::Infeasible;
-        out.explanation.message = "Proved infeasible: " + walls->message;
-        out.explanation.core = std::move(walls->core);
-        out.explanation.separation = std::move(walls->separation);
-        out.explanation.geodesic = std::move(walls->geodesic);
-        return out;
+    std::optional<ObstacleProof> proof = prove_obstacle_infeasible(task_);
+    if (!proof) {
+        // Two joints only: a branch and bound over the designs settles what
+        // the walls and detours leave open, within a small share of the run.
+        BranchAndBoundOptions bnb = opt_.branch_and_bound;
+        bnb.time_limit = std::min(bnb.time_limit, opt_.branch_and_bound_share * opt_.time_limit);
+        // The core is shrunk only within what the proof leaves of its share.
+        bnb.core_time_limit = std::min(bnb.core_time_limit, bnb.time_limit);
+        if (bnb.time_limit > 0.0) proof = prove_two_joint_infeasible(task_, bnb, deadline_);
     }
-    // Two joints only: a branch and bound over the designs settles what the
-    // walls and detours leave open, within a small share of the run.
-    BranchAndBoundOptions bnb = opt_.branch_and_bound;
-    bnb.time_limit = std::min(bnb.time_limit, opt_.branch_and_bound_share * opt_.time_limit);
-    // The core is shrunk only within what the proof leaves of its share.
-    bnb.core_time_limit = std::min(bnb.core_time_limit, bnb.time_limit);
-    auto proof = bnb.time_limit > 0.0 ? prove_two_joint_infeasible(task_, bnb, deadline_)
-                                      : std::optional<ObstacleProof>{};
+    stats_.front_seconds += seconds_since(t_walls);
     if (proof) {
-        stats_.front_seconds += seconds_since(t_walls);
         say("obstacles: proved infeasible, " + proof->message);
         out.status = Status::Infeasible;
         out.explanation.message = "Proved infeasible: " + proof->message;
         out.explanation.core = std::move(proof->core);
+        out.explanation.separation = std::move(proof->separation);
+        out.explanation.geodesic = std::move(proof->geodesic);
         return out;
     }
-    stats_.front_seconds += seconds_since(t_walls);
     std::vector<std::vector<std::string>> cores;
     std::vector<smt::Skeleton> searched;  ///< every skeleton tried, for the retries
     bool all_unsat = true;
