@@ -213,6 +213,7 @@ bool SolverOptions::IsValid(std::string* error) const {
         .at_least("acceptable_tolerance", acceptable_tolerance, tolerance)
         .at_least("acceptable_constraint_tolerance", acceptable_constraint_tolerance,
                   constraint_tolerance)
+        .at_least("acceptable_iterations", acceptable_iterations, 0)
         .within("print_level", print_level, 0, 12)
         .nested("watch", watch)
         .at_least("reported_violations", reported_violations, 0)
@@ -230,6 +231,7 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
     o.SetNumericValue("constr_viol_tol", options.constraint_tolerance);
     o.SetNumericValue("acceptable_tol", options.acceptable_tolerance);
     o.SetNumericValue("acceptable_constr_viol_tol", options.acceptable_constraint_tolerance);
+    o.SetIntegerValue("acceptable_iter", options.acceptable_iterations);
     o.SetIntegerValue("max_iter", options.max_iterations);
     o.SetNumericValue("max_cpu_time", std::max(0.01, options.time_limit));
     o.SetStringValue("mu_strategy", "adaptive");

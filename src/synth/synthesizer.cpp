@@ -219,7 +219,11 @@ Solution Search::run() {
             tried_.push_back(std::to_string(dof) + " joints: front stage undecided");
             continue;
         }
+        // Breadth first: every skeleton gets its best initial guess before
+        // any gets its others. A wrong elbow sign fails on each of its
+        // guesses, and each failure costs a full refinement.
         int skeletons = 0;
+        const std::size_t first_of_dof = searched.size();
         while (result == smt::FrontStage::Result::Sat && remaining() > 0.0) {
             const smt::Skeleton sk = front.skeleton();
             ++skeletons;
@@ -227,12 +231,19 @@ Solution Search::run() {
             say(text::format("%d joints: skeleton %d (elbow %+d, base region %d)", dof, skeletons,
                              sk.elbow, sk.base_region));
             searched.push_back(sk);
-            if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton, opt_.seed))
+            if (auto found = try_skeleton(sk, 1, opt_.seed))
                 return timed(shorten(sk, std::move(*found)));
             front.block(sk);
             const auto t1 = Clock::now();
             result = front.check();
             stats_.front_seconds += seconds_since(t1);
+        }
+        for (std::size_t k = first_of_dof; k < searched.size() && remaining() > 0.0; ++k) {
+            const smt::Skeleton& sk = searched[k];
+            say(text::format("%d joints: more initial guesses for elbow %+d, base region %d", dof,
+                             sk.elbow, sk.base_region));
+            if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton, opt_.seed))
+                return timed(shorten(sk, std::move(*found)));
         }
         const bool exhausted = result != smt::FrontStage::Result::Sat;
         tried_.push_back(text::format("%d joints: %d skeleton(s) searched", dof, skeletons) +
@@ -393,7 +404,10 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
         stats_.refine_seconds += seconds_since(t0);
         ++stats_.nlp_solves;
         if (!res.usable()) {
-            say(std::string("    ") + name + ": refinement did not converge (" + res.message + ")");
+            say(std::string("    ") + name +
+                text::format(": refinement did not converge in %d iterations, %.3f s (",
+                             res.iterations, seconds_since(t0)) +
+                res.message + ")");
             return std::nullopt;
         }
         const kinematics::Robot robot = nlp::robot_from(f, res.x);
@@ -401,8 +415,9 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
         for (double r : robot.link_lengths)
             links += text::format(links.empty() ? "%.4f" : " + %.4f", r);
         say(std::string("    ") + name + ": candidate links " + links +
-            text::format(" m with %zu points, %d variables", problem.points.size(),
-                         f.program.num_variables()));
+            text::format(" m with %zu points, %d variables, in %d iterations, %.3f s",
+                         problem.points.size(), f.program.num_variables(), res.iterations,
+                         seconds_since(t0)));
         Verdict verdict = judge(robot);
         if (verdict.solution) {
             stats_.certified_by = name;

@@ -102,6 +102,7 @@ TEST_CASE("solver options: defaults valid, each bad field named", "[options][nlp
         {"SolverOptions::acceptable_tolerance", [](O& o) { o.acceptable_tolerance = 1e-9; }},
         {"SolverOptions::acceptable_constraint_tolerance",
          [](O& o) { o.acceptable_constraint_tolerance = 1e-10; }},
+        {"SolverOptions::acceptable_iterations", [](O& o) { o.acceptable_iterations = -1; }},
         {"SolverOptions::print_level", [](O& o) { o.print_level = 13; }},
         {"SolverOptions::reported_violations", [](O& o) { o.reported_violations = -1; }},
         {"SolverOptions::wall_limit", [](O& o) { o.wall_limit = kNaN; }},
