@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <random>
 
@@ -61,12 +62,17 @@ double pose_margin(const task::Task& task, const Vec2& base, const Vec2& origin,
     return worst;
 }
 
+// The worst margin over pts; or, once it falls below stop_below, some
+// margin below stop_below (the scoring of that robot stops there).
 double margin_at(const task::Task& task, const kinematics::Robot& robot,
-                 const std::vector<Vec2>& pts) {
+                 const std::vector<Vec2>& pts,
+                 double stop_below = -std::numeric_limits<double>::infinity()) {
     double worst = std::numeric_limits<double>::infinity();
-    for (const Vec2& p : pts)
+    for (const Vec2& p : pts) {
         worst = std::min(worst, pose_margin(task, robot.base, robot.base, robot.link_lengths[0],
                                             robot.link_lengths[1], robot.elbow, false, p));
+        if (worst < stop_below) break;
+    }
     return worst;
 }
 
@@ -277,7 +283,9 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
         robot.link_lengths = {r1, r2};
         robot.link_diameter = task.robot.link_diameter;
         robot.elbow = skeleton.elbow;
-        all.push_back({robot, margin_at(task, robot, pts)});
+        // Clear candidates rank by length alone, so an unclear one is
+        // scored to its end only if too few are clear (below).
+        all.push_back({robot, margin_at(task, robot, pts, 0.0)});
     };
     if (skeleton.link_lengths.size() == 2)
         consider(skeleton.base, skeleton.link_lengths[0], skeleton.link_lengths[1]);
@@ -298,6 +306,14 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
         const double diff = (2.0 * u(rng) - 1.0) * std::max(0.0, near - 0.01);
         consider(base, 0.5 * (sum + diff), 0.5 * (sum - diff));
     }
+    std::vector<ScoredRobot> clear;
+    std::copy_if(all.begin(), all.end(), std::back_inserter(clear),
+                 [](const ScoredRobot& c) { return c.margin >= 0.0; });
+    sort_and_keep_distinct(clear, count, options.distinct_distance);
+    if (static_cast<int>(clear.size()) >= count) return clear;
+    // Unclear candidates are ranked by their worst margin: score them whole.
+    for (auto& c : all)
+        if (c.margin < 0.0) c.margin = margin_at(task, c.robot, pts);
     sort_and_keep_distinct(all, count, options.distinct_distance);
     return all;
 }
