@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <limits>
+#include <numeric>
 #include <random>
 
 #include <modsynth/geometry/distance.h>
@@ -184,6 +184,19 @@ void search_region(const task::Task& task, const smt::Skeleton& skeleton,
     hi += Vec2::Constant(reach);
 }
 
+// Whether robot is within distinct_distance of one of `kept` in its base and
+// every link length.
+bool near_any(const std::vector<ScoredRobot>& kept, const kinematics::Robot& robot,
+              double distinct_distance) {
+    return std::any_of(kept.begin(), kept.end(), [&](const ScoredRobot& o) {
+        if ((o.robot.base - robot.base).norm() >= distinct_distance) return false;
+        for (std::size_t k = 0; k < robot.link_lengths.size(); ++k)
+            if (std::abs(o.robot.link_lengths[k] - robot.link_lengths[k]) >= distinct_distance)
+                return false;
+        return true;
+    });
+}
+
 bool sort_and_keep_distinct(std::vector<ScoredRobot>& all, int count, double distinct_distance) {
     std::stable_sort(all.begin(), all.end(), [](const ScoredRobot& a, const ScoredRobot& b) {
         const bool ca = a.margin >= 0.0, cb = b.margin >= 0.0;
@@ -194,15 +207,7 @@ bool sort_and_keep_distinct(std::vector<ScoredRobot>& all, int count, double dis
     // A second start near the first adds little.
     std::vector<ScoredRobot> out;
     for (const auto& c : all) {
-        const bool distinct = std::none_of(out.begin(), out.end(), [&](const ScoredRobot& o) {
-            if ((o.robot.base - c.robot.base).norm() >= distinct_distance) return false;
-            for (std::size_t k = 0; k < c.robot.link_lengths.size(); ++k)
-                if (std::abs(o.robot.link_lengths[k] - c.robot.link_lengths[k]) >=
-                    distinct_distance)
-                    return false;
-            return true;
-        });
-        if (distinct) out.push_back(c);
+        if (!near_any(out, c.robot, distinct_distance)) out.push_back(c);
         if (static_cast<int>(out.size()) >= count) break;
     }
     all = std::move(out);
@@ -283,9 +288,7 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
         robot.link_lengths = {r1, r2};
         robot.link_diameter = task.robot.link_diameter;
         robot.elbow = skeleton.elbow;
-        // Clear candidates rank by length alone, so an unclear one is
-        // scored to its end only if too few are clear (below).
-        all.push_back({robot, margin_at(task, robot, pts, 0.0)});
+        all.push_back({robot, std::numeric_limits<double>::quiet_NaN()});
     };
     if (skeleton.link_lengths.size() == 2)
         consider(skeleton.base, skeleton.link_lengths[0], skeleton.link_lengths[1]);
@@ -306,14 +309,26 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
         const double diff = (2.0 * u(rng) - 1.0) * std::max(0.0, near - 0.01);
         consider(base, 0.5 * (sum + diff), 0.5 * (sum - diff));
     }
+    // Clear candidates rank by length alone (sort_and_keep_distinct): so
+    // walk them shortest first, score each only up to its first unclear
+    // point, and stop at `count` distinct clear ones. On long paths most
+    // of the scoring is saved; the choice is the same.
+    std::vector<std::size_t> order(all.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return all[a].robot.total_length() < all[b].robot.total_length();
+    });
     std::vector<ScoredRobot> clear;
-    std::copy_if(all.begin(), all.end(), std::back_inserter(clear),
-                 [](const ScoredRobot& c) { return c.margin >= 0.0; });
-    sort_and_keep_distinct(clear, count, options.distinct_distance);
-    if (static_cast<int>(clear.size()) >= count) return clear;
-    // Unclear candidates are ranked by their worst margin: score them whole.
+    for (std::size_t i : order) {
+        if (near_any(clear, all[i].robot, options.distinct_distance)) continue;
+        all[i].margin = margin_at(task, all[i].robot, pts, 0.0);
+        if (all[i].margin < 0.0) continue;
+        clear.push_back(all[i]);
+        if (static_cast<int>(clear.size()) >= count) return clear;
+    }
+    // Too few are clear: the others rank by their worst margin, scored whole.
     for (auto& c : all)
-        if (c.margin < 0.0) c.margin = margin_at(task, c.robot, pts);
+        if (!(c.margin >= 0.0)) c.margin = margin_at(task, c.robot, pts);
     sort_and_keep_distinct(all, count, options.distinct_distance);
     return all;
 }
