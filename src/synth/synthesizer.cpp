@@ -396,8 +396,10 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
         nlp::SolverOptions so;
         // A refinement that needs more than this is better restarted from
         // another initial guess than waited for.
-        so.time_limit = std::min(round == 0 ? opt_.first_solve_seconds : opt_.later_solve_seconds,
-                                 std::max(0.05, remaining()));
+        const double budget =
+            std::max(round == 0 ? opt_.first_solve_seconds : opt_.later_solve_seconds,
+                     opt_.solve_seconds_per_kvariable * 1e-3 * f.program.num_variables());
+        so.time_limit = std::min(budget, std::max(0.05, remaining()));
         so.max_iterations = round == 0 ? opt_.first_solve_iterations : opt_.later_solve_iterations;
         so.wall_limit = std::max(0.05, remaining());
         const nlp::SolverResult res = nlp::minimize(f.program, so);
@@ -545,6 +547,7 @@ bool SynthesisOptions::IsValid(std::string* error) const {
         .at_least("refinement_rounds", refinement_rounds, 1)
         .greater("first_solve_seconds", first_solve_seconds, 0.0)
         .greater("later_solve_seconds", later_solve_seconds, 0.0)
+        .at_least("solve_seconds_per_kvariable", solve_seconds_per_kvariable, 0.0)
         .at_least("first_solve_iterations", first_solve_iterations, 1)
         .at_least("later_solve_iterations", later_solve_iterations, 1)
         .within("max_transition_depth", max_transition_depth, 0, 10)

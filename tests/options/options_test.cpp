@@ -191,6 +191,8 @@ TEST_CASE("synthesis options: defaults valid, each bad field named", "[options][
         {"SynthesisOptions::refinement_rounds", [](O& o) { o.refinement_rounds = 0; }},
         {"SynthesisOptions::first_solve_seconds", [](O& o) { o.first_solve_seconds = 0.0; }},
         {"SynthesisOptions::later_solve_seconds", [](O& o) { o.later_solve_seconds = kNaN; }},
+        {"SynthesisOptions::solve_seconds_per_kvariable",
+         [](O& o) { o.solve_seconds_per_kvariable = -1.0; }},
         {"SynthesisOptions::first_solve_iterations", [](O& o) { o.first_solve_iterations = 0; }},
         {"SynthesisOptions::later_solve_iterations", [](O& o) { o.later_solve_iterations = 0; }},
         {"SynthesisOptions::max_transition_depth", [](O& o) { o.max_transition_depth = 11; }},

@@ -74,6 +74,11 @@ struct SynthesisOptions {
     /// better restarted from another guess than waited for.
     double first_solve_seconds = 3.0;
     double later_solve_seconds = 1.5;
+    /// Each budget grows by this per 1000 variables of the program: an
+    /// iteration's cost grows with its size (about 80 ms at 13000 variables,
+    /// a 640-primitive path), and a fixed budget stopped large refinements
+    /// that were converging.
+    double solve_seconds_per_kvariable = 0.25;
     int first_solve_iterations = 200;
     int later_solve_iterations = 100;
     /// Three joints: proximal poses per transition in the refinement are
