@@ -147,6 +147,7 @@ bool InitialGuessOptions::IsValid(std::string* error) const {
         .at_least("max_points", max_points, 1)
         .at_least("candidates_two", candidates_two, 0)
         .at_least("candidates_three", candidates_three, 0)
+        .at_least("candidates_three_detour", candidates_three_detour, 0)
         .at_least("proximal_angles", proximal_angles, 1)
         .greater("sweep_step", sweep_step, 0.0)
         .greater("proximal_spacing", proximal_spacing, 0.0)
@@ -240,24 +241,41 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
                      static_cast<unsigned>(skeleton.base_region + 1));
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<ScoredRobot> all;
-    for (int i = 0; i < options.candidates_three && std::chrono::steady_clock::now() < deadline;
-         ++i) {
+    auto consider = [&](std::mt19937& gen, auto&& links) {
         kinematics::Robot robot;
-        robot.base = uniform_in(rng, lo, hi);
+        robot.base = uniform_in(gen, lo, hi);
         robot.link_diameter = task.robot.link_diameter;
         robot.elbow = skeleton.elbow;
         double far = 0.0;
         for (const Vec2& p : pts) far = std::max(far, (p - robot.base).norm());
-        // The distal pair must cover each primitive from one point; the whole
-        // arm must reach the farthest point.
-        const double distal =
-            std::max(span / 2.0 * (1.1 + 0.6 * u(rng)), 0.6 * far * u(rng)) + 0.02;
-        const double a = std::clamp(distal * (0.35 + 0.3 * u(rng)), lmin, lmax);
-        const double c = std::clamp(distal - a, lmin, lmax);
-        const double r1 = std::clamp((far - (a + c) * (0.5 + 0.4 * u(rng))), lmin, lmax);
-        robot.link_lengths = {r1, a, c};
+        robot.link_lengths = links(far);
         const double margin = choose_proximal_angles(task, robot, per_primitive, options);
         all.push_back({robot, margin});
+    };
+    for (int i = 0; i < options.candidates_three && std::chrono::steady_clock::now() < deadline;
+         ++i) {
+        consider(rng, [&](double far) {
+            // The distal pair must cover each primitive from one point; the
+            // whole arm must reach the farthest point.
+            const double distal =
+                std::max(span / 2.0 * (1.1 + 0.6 * u(rng)), 0.6 * far * u(rng)) + 0.02;
+            const double a = std::clamp(distal * (0.35 + 0.3 * u(rng)), lmin, lmax);
+            const double c = std::clamp(distal - a, lmin, lmax);
+            const double r1 = std::clamp((far - (a + c) * (0.5 + 0.4 * u(rng))), lmin, lmax);
+            return std::vector<double>{r1, a, c};
+        });
+    }
+    // A stream of its own, so that the compact candidates stay as they were.
+    std::mt19937 detour(seed * 104729u + static_cast<unsigned>(skeleton.elbow + 2) * 17u +
+                        static_cast<unsigned>(skeleton.base_region + 1));
+    for (int i = 0;
+         i < options.candidates_three_detour && std::chrono::steady_clock::now() < deadline; ++i) {
+        consider(detour, [&](double far) {
+            const double r1 = std::clamp(far * (0.2 + u(detour)), lmin, lmax);
+            const double a = std::clamp(far * (0.3 + 2.0 * u(detour)), lmin, lmax);
+            const double c = std::clamp(far * (0.3 + 2.0 * u(detour)), lmin, lmax);
+            return std::vector<double>{r1, a, c};
+        });
     }
     sort_and_keep_distinct(all, count, options.distinct_distance);
     return all;

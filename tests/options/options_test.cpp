@@ -219,6 +219,8 @@ TEST_CASE("initial guess options: defaults valid, each bad field named", "[optio
         {"InitialGuessOptions::max_points", [](O& o) { o.max_points = 0; }},
         {"InitialGuessOptions::candidates_two", [](O& o) { o.candidates_two = -1; }},
         {"InitialGuessOptions::candidates_three", [](O& o) { o.candidates_three = -1; }},
+        {"InitialGuessOptions::candidates_three_detour",
+         [](O& o) { o.candidates_three_detour = -1; }},
         {"InitialGuessOptions::proximal_angles", [](O& o) { o.proximal_angles = 0; }},
         {"InitialGuessOptions::sweep_step", [](O& o) { o.sweep_step = kNaN; }},
         {"InitialGuessOptions::proximal_spacing", [](O& o) { o.proximal_spacing = -0.03; }},

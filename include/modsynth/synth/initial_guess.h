@@ -34,6 +34,15 @@ struct InitialGuessOptions {
     /// choose a proximal angle per primitive, which costs far more each.
     int candidates_two = 600;
     int candidates_three = 120;
+    /// Three joints: further candidates whose links are drawn long, each up
+    /// to about twice the distance to the path. They let the arm go round
+    /// obstacles: a base ringed by posts with one opening (scripts/
+    /// keyhole-tasks) needs link 1 through the opening and a distal pair
+    /// that wraps round the ring, several times longer than the straight
+    /// reach the compact candidates are drawn from. Clear candidates rank
+    /// shortest first, so these are chosen only where no compact one is
+    /// clear.
+    int candidates_three_detour = 120;
     /// Three joints: first-joint angles tried per primitive (16: every
     /// 22.5 degrees), and the rad between poses checked in a sweep from one
     /// to the next.
