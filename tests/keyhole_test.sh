@@ -2,10 +2,12 @@
 # scripts/keyhole-tasks: the same seeds give the same bytes; every planted
 # 3-joint answer keeps its links clear of the posts and its tip on the path,
 # checked here with plain forward kinematics, by the generator's --check
-# (which must also catch a spoiled answer) and by the shared grader; and
-# modsynth never calls a planted task infeasible (a solution it finds has 3
-# joints and passes the shared grader). Arguments: modsynth, source root,
-# shared folder (default: MODSYNTH_SHARED_DIR, else beside the source root).
+# (which must also catch a spoiled answer), by the shared grader and by
+# modsynth's verifier (export). modsynth never calls a planted task
+# infeasible (a solution it finds has 3 joints and passes the shared grader)
+# and, with 2 joints, proves it infeasible as the generator's test says.
+# Arguments: modsynth, source root, shared folder (default:
+# MODSYNTH_SHARED_DIR, else beside the source root).
 set -u
 source "$(dirname "$0")/shell_test_lib.sh"
 shared=${3:-${MODSYNTH_SHARED_DIR:-$root/../shared}}
@@ -95,6 +97,13 @@ else
     echo "note: no shared grader at $grader; its checks are skipped"
 fi
 
+# modsynth's own verifier certifies every planted answer too.
+for t in "$tmp"/a/*.task.json; do
+    "$bin" export "$t" "${t%.task.json}.planted.json" --csv "$tmp/planted.csv" >"$tmp/out" 2>&1 ||
+        fail "$(basename "$t"): export of the planted answer exit $?: $(tail -2 "$tmp/out")"
+    grep -q "not certified" "$tmp/out" && fail "$(basename "$t"): planted answer not certified: $(cat "$tmp/out")"
+done
+
 # modsynth on one task: a planted task is never infeasible; a solution has 3
 # joints (a 2-joint arm cannot reach the path) and passes the grader.
 task=$tmp/a/keyhole-0001.task.json
@@ -107,5 +116,17 @@ case $code in
            fail "grader rejects modsynth's solution: $(tail -1 "$tmp/grade")"; } ;;
     4) echo "note: modsynth gave no answer within 20 s: $(tail -2 "$tmp/out" | head -1)" ;;
     *) fail "solve exit $code (a planted task must not be infeasible): $(tail -3 "$tmp/out")" ;;
+esac
+
+# Two joints cannot do it: the generator's sampled test, and modsynth's
+# 2-joint branch and bound proves it on the same task (a 2-joint solution
+# would contradict the generator).
+python3 -c 'import json,sys; t=json.load(open(sys.argv[1])); t["robot"]["dof"]=[2]; json.dump(t,open(sys.argv[2],"w"))' \
+    "$task" "$tmp/two.task.json"
+"$bin" solve "$tmp/two.task.json" -o "$tmp/two.sol.json" --time-limit 30 >"$tmp/out" 2>&1
+code=$?
+case $code in
+    3) grep -q '"trajectory\[0\]"' "$tmp/two.sol.json" || fail "2 joints: core does not name trajectory[0]" ;;
+    *) fail "2 joints: solve exit $code, expected 3 (infeasible): $(tail -3 "$tmp/out")" ;;
 esac
 finish keyhole
