@@ -8,7 +8,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
 
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -29,8 +33,9 @@ std::chrono::steady_clock::time_point deadline_after(double seconds) {
 
 class Adapter : public Ipopt::TNLP {
 public:
-    Adapter(const QuadraticProgram& program, const SolverOptions& options)
+    Adapter(const QuadraticProgram& program, const SolverOptions& options, const WarmStart* warm)
         : p_(program),
+          warm_(warm),
           watch_(options.watch),
           deadline_(deadline_after(options.wall_limit)),
           min_variables_(options.watch.min_variables) {}
@@ -82,10 +87,19 @@ public:
         return true;
     }
 
-    bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index,
-                            bool init_lambda, Number*) override {
-        if (!init_x || init_z || init_lambda) return false;
-        std::copy(p_.start().begin(), p_.start().begin() + n, x);
+    bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number* z_l, Number* z_u,
+                            Index m, bool init_lambda, Number* lambda) override {
+        if (warm_ == nullptr) {
+            if (!init_x || init_z || init_lambda) return false;
+            std::copy(p_.start().begin(), p_.start().begin() + n, x);
+            return true;
+        }
+        if (init_x) std::copy(warm_->x.begin(), warm_->x.begin() + n, x);
+        if (init_z) {
+            std::copy(warm_->z_lower.begin(), warm_->z_lower.begin() + n, z_l);
+            std::copy(warm_->z_upper.begin(), warm_->z_upper.begin() + n, z_u);
+        }
+        if (init_lambda) std::copy(warm_->lambda.begin(), warm_->lambda.begin() + m, lambda);
         return true;
     }
 
@@ -128,10 +142,14 @@ public:
         return true;
     }
 
-    void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
-                           const Number*, Index, const Number*, const Number*, Number obj,
-                           const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number* z_l,
+                           const Number* z_u, Index m, const Number*, const Number* lambda,
+                           Number obj, const Ipopt::IpoptData*,
+                           Ipopt::IpoptCalculatedQuantities*) override {
         result.x.assign(x, x + n);
+        result.z_lower.assign(z_l, z_l + n);
+        result.z_upper.assign(z_u, z_u + n);
+        result.lambda.assign(lambda, lambda + m);
         result.objective = obj;
         switch (status) {
             case Ipopt::SUCCESS:
@@ -177,6 +195,7 @@ private:
     // Ipopt reads |bound| >= 1e19 as "no bound".
     static Number clip(double v) { return std::clamp(v, -1e19, 1e19); }
     const QuadraticProgram& p_;
+    const WarmStart* warm_;
     ProgressWatch watch_;
     std::chrono::steady_clock::time_point deadline_;
     int min_variables_;
@@ -214,15 +233,60 @@ bool SolverOptions::IsValid(std::string* error) const {
         .at_least("acceptable_constraint_tolerance", acceptable_constraint_tolerance,
                   constraint_tolerance)
         .at_least("acceptable_iterations", acceptable_iterations, 0)
+        .greater("warm_push", warm_push, 0.0)
+        .greater("warm_mu", warm_mu, 0.0)
         .within("print_level", print_level, 0, 12)
         .nested("watch", watch)
         .at_least("reported_violations", reported_violations, 0)
         .ok();
 }
 
-SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options) {
+WarmStart carry_over(const QuadraticProgram& from, const SolverResult& solved,
+                     const QuadraticProgram& to) {
+    WarmStart w;
+    w.x = to.start();
+    w.z_lower.assign(to.num_variables(), 0.0);
+    w.z_upper.assign(to.num_variables(), 0.0);
+    w.lambda.assign(to.num_constraints(), 0.0);
+    const bool primal = solved.x.size() == static_cast<std::size_t>(from.num_variables());
+    const bool dual = primal && solved.z_lower.size() == solved.x.size() &&
+                      solved.z_upper.size() == solved.x.size() &&
+                      solved.lambda.size() == static_cast<std::size_t>(from.num_constraints());
+    if (!primal) return w;
+    std::unordered_map<std::string_view, int> variable;
+    variable.reserve(from.num_variables());
+    for (int i = 0; i < from.num_variables(); ++i) variable.emplace(from.variable_name(i), i);
+    for (int i = 0; i < to.num_variables(); ++i) {
+        const auto it = variable.find(to.variable_name(i));
+        if (it == variable.end()) continue;
+        w.x[i] = solved.x[it->second];
+        if (dual)
+            w.z_lower[i] = solved.z_lower[it->second], w.z_upper[i] = solved.z_upper[it->second];
+    }
+    if (!dual) return w;
+    // Labels repeat (both ends of a link share one): the k-th of a label
+    // matches the k-th.
+    std::unordered_map<std::string_view, std::vector<int>> constraint;
+    for (int k = 0; k < from.num_constraints(); ++k)
+        constraint[from.constraint_label(k)].push_back(k);
+    std::unordered_map<std::string_view, std::size_t> used;
+    for (int k = 0; k < to.num_constraints(); ++k) {
+        const auto it = constraint.find(to.constraint_label(k));
+        if (it == constraint.end()) continue;
+        std::size_t& next = used[it->first];
+        if (next < it->second.size()) w.lambda[k] = solved.lambda[it->second[next++]];
+    }
+    return w;
+}
+
+SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options,
+                      const WarmStart* warm) {
     text::require_valid(options);
-    Ipopt::SmartPtr<Adapter> nlp = new Adapter(program, options);
+    if (warm && (warm->x.size() != static_cast<std::size_t>(program.num_variables()) ||
+                 warm->z_lower.size() != warm->x.size() || warm->z_upper.size() != warm->x.size() ||
+                 warm->lambda.size() != static_cast<std::size_t>(program.num_constraints())))
+        throw std::invalid_argument("nlp::minimize: the warm start does not fit the program");
+    Ipopt::SmartPtr<Adapter> nlp = new Adapter(program, options, warm);
     Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
     auto& o = *app->Options();
     o.SetStringValue("sb", "yes");
@@ -236,6 +300,17 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
     o.SetNumericValue("max_cpu_time", std::max(0.01, options.time_limit));
     o.SetStringValue("mu_strategy", "adaptive");
     o.SetStringValue("honor_original_bounds", "yes");
+    if (warm) {
+        // Close to a solution already: keep the point and its multipliers
+        // nearly where they are, and start the barrier small.
+        o.SetStringValue("warm_start_init_point", "yes");
+        o.SetNumericValue("warm_start_bound_push", options.warm_push);
+        o.SetNumericValue("warm_start_bound_frac", options.warm_push);
+        o.SetNumericValue("warm_start_slack_bound_push", options.warm_push);
+        o.SetNumericValue("warm_start_slack_bound_frac", options.warm_push);
+        o.SetNumericValue("warm_start_mult_bound_push", options.warm_push);
+        o.SetNumericValue("mu_init", options.warm_mu);
+    }
     // An empty name: never read ./ipopt.opt, which would override these silently.
     if (app->Initialize("") != Ipopt::Solve_Succeeded) {
         SolverResult failed;

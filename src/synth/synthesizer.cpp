@@ -390,9 +390,13 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
     problem.swept_only = attempt.paper;
     problem.points = attempt.paper ? end_points(task_) : spaced_points(task_, opt_);
     add_critical_points(task_, start, problem.points);
+    // The last round's program and solution: the next round's program is
+    // the same plus counterexample points, and starts where it ended.
+    std::optional<nlp::Formulation> last;
+    nlp::SolverResult last_result;
     for (int round = 0; round < opt_.refinement_rounds && remaining() > 0.0; ++round) {
         const auto t0 = Clock::now();
-        const nlp::Formulation f = nlp::formulate(problem);
+        nlp::Formulation f = nlp::formulate(problem);
         nlp::SolverOptions so;
         // A refinement that needs more than this is better restarted from
         // another initial guess than waited for.
@@ -402,7 +406,10 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
         so.time_limit = std::min(budget, std::max(0.05, remaining()));
         so.max_iterations = round == 0 ? opt_.first_solve_iterations : opt_.later_solve_iterations;
         so.wall_limit = std::max(0.05, remaining());
-        const nlp::SolverResult res = nlp::minimize(f.program, so);
+        std::optional<nlp::WarmStart> warm;
+        if (last && opt_.warm_start_rounds)
+            warm = nlp::carry_over(last->program, last_result, f.program);
+        const nlp::SolverResult res = nlp::minimize(f.program, so, warm ? &*warm : nullptr);
         stats_.refine_seconds += seconds_since(t0);
         ++stats_.nlp_solves;
         if (!res.usable()) {
@@ -413,13 +420,15 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
             return std::nullopt;
         }
         const kinematics::Robot robot = nlp::robot_from(f, res.x);
+        const int variables = f.program.num_variables();
+        last = std::move(f);
+        last_result = res;
         std::string links;
         for (double r : robot.link_lengths)
             links += text::format(links.empty() ? "%.4f" : " + %.4f", r);
         say(std::string("    ") + name + ": candidate links " + links +
             text::format(" m with %zu points, %d variables, in %d iterations, %.3f s",
-                         problem.points.size(), f.program.num_variables(), res.iterations,
-                         seconds_since(t0)));
+                         problem.points.size(), variables, res.iterations, seconds_since(t0)));
         Verdict verdict = judge(robot);
         if (verdict.solution) {
             stats_.certified_by = name;

@@ -103,6 +103,8 @@ TEST_CASE("solver options: defaults valid, each bad field named", "[options][nlp
         {"SolverOptions::acceptable_constraint_tolerance",
          [](O& o) { o.acceptable_constraint_tolerance = 1e-10; }},
         {"SolverOptions::acceptable_iterations", [](O& o) { o.acceptable_iterations = -1; }},
+        {"SolverOptions::warm_push", [](O& o) { o.warm_push = 0.0; }},
+        {"SolverOptions::warm_mu", [](O& o) { o.warm_mu = kNaN; }},
         {"SolverOptions::print_level", [](O& o) { o.print_level = 13; }},
         {"SolverOptions::reported_violations", [](O& o) { o.reported_violations = -1; }},
         {"SolverOptions::wall_limit", [](O& o) { o.wall_limit = kNaN; }},

@@ -40,6 +40,10 @@ struct SolverOptions {
     double acceptable_tolerance = 1e-5;
     double acceptable_constraint_tolerance = 1e-5;
     int acceptable_iterations = 1;
+    /// A warm start's pushes away from bounds (Ipopt's warm_start_*_push
+    /// and _frac) and its initial barrier parameter (mu_init).
+    double warm_push = 1e-3;
+    double warm_mu = 1e-3;
     /// Ipopt's print_level, 0 (silent) to 12.
     int print_level = 0;
     /// On failure, how many of the most violated constraints (at the last
@@ -54,15 +58,34 @@ struct SolverResult {
     enum class Status { Optimal, Acceptable, Infeasible, Failed };
     Status status = Status::Failed;
     std::vector<double> x;
+    /// Multipliers at x: of the constraints, and of the variables' lower
+    /// and upper bounds (for a warm start of a related program).
+    std::vector<double> lambda, z_lower, z_upper;
     double objective = 0.0;
     int iterations = 0;
     std::string message;
     bool usable() const { return status == Status::Optimal || status == Status::Acceptable; }
 };
 
+/// A primal-dual point to start from, aligned with the program solved.
+struct WarmStart {
+    std::vector<double> x, lambda, z_lower, z_upper;
+};
+
+/// A solution of `from` as a start of `to`, matched by variable name and by
+/// constraint label (the k-th constraint of a label to the k-th): a later
+/// refinement round adds points to the previous round's program, and its
+/// old part starts where the last solve ended, multipliers included. What
+/// `to` adds starts at its own start values with zero multipliers.
+WarmStart carry_over(const QuadraticProgram& from, const SolverResult& solved,
+                     const QuadraticProgram& to);
+
 /// Throws std::invalid_argument when the options are not valid. When no
 /// usable point is found, the message gives Ipopt's status and the
-/// constraints worst violated at its last iterate, by label.
-SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options);
+/// constraints worst violated at its last iterate, by label. With `warm`,
+/// Ipopt starts from its primal and dual point (sizes must match the
+/// program's, or std::invalid_argument).
+SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options,
+                      const WarmStart* warm = nullptr);
 
 }  // namespace modsynth::nlp

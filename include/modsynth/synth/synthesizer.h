@@ -79,6 +79,9 @@ struct SynthesisOptions {
     /// a 640-primitive path), and a fixed budget stopped large refinements
     /// that were converging.
     double solve_seconds_per_kvariable = 0.25;
+    /// Later rounds start Ipopt from the last round's solution and
+    /// multipliers (nlp::carry_over) instead of from the refined robot alone.
+    bool warm_start_rounds = true;
     int first_solve_iterations = 200;
     int later_solve_iterations = 100;
     /// Three joints: proximal poses per transition in the refinement are
