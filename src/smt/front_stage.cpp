@@ -41,6 +41,7 @@ bool FrontStageOptions::IsValid(std::string* error) const {
     return text::OptionCheck("FrontStageOptions", error)
         .greater("time_limit", time_limit, 0.0)
         .greater("refined_time_limit", refined_time_limit, 0.0)
+        .at_least("refined_max_primitives", refined_max_primitives, 0)
         .at_least("samples_per_primitive", samples_per_primitive, 1)
         .at_least("encoded_points", encoded_points, 1)
         .at_least("all_span_pairs", all_span_pairs, 0)
@@ -67,6 +68,7 @@ struct FrontStage::Impl {
     std::vector<z3::expr> regions;
     std::vector<std::string> names;  // assumption literals, in creation order
     std::map<std::string, z3::expr> literal_of;
+    bool refined_level = true;   // `fine` holds the encoding (small enough paths)
     bool unsat_refined = false;  // the last Unsat came from `fine`
     bool incomplete = false;     // encoding stopped at the deadline
     std::optional<z3::model> model;
@@ -86,6 +88,7 @@ struct FrontStage::Impl {
         set_timeout(solver, options.time_limit);
         set_timeout(fine, options.refined_time_limit);
         const int m = static_cast<int>(task.trajectory.size());
+        refined_level = m <= options.refined_max_primitives;
         samples = std::clamp(options.encoded_points / std::max(1, m), 1,
                              std::max(1, options.samples_per_primitive));
         for (int k = 0; k < dof; ++k) {
@@ -135,7 +138,7 @@ struct FrontStage::Impl {
         z3::expr_vector guards(ctx);
         for (const auto& part : parts) guards.push_back(literal(part));
         const z3::expr guarded = z3::implies(z3::mk_and(guards), e);
-        fine.add(guarded);
+        if (refined_level) fine.add(guarded);
         if (!is_refined) solver.add(guarded);
     }
 
@@ -365,8 +368,8 @@ struct FrontStage::Impl {
             return coarse == z3::unsat ? Result::Unsat : Result::Unknown;
         }
         model = solver.get_model();
-        if (kinematics::has_proximal_link(dof) || expired())
-            return Result::Sat;  // no refined families for these joint counts
+        if (kinematics::has_proximal_link(dof) || !refined_level || expired())
+            return Result::Sat;  // no refined families for these joint counts or this size
         set_timeout(fine, std::min(options.time_limit, options.refined_time_limit));
         const z3::check_result refined = fine.check(assumptions());
         if (refined == z3::unsat) {
@@ -452,7 +455,7 @@ bool FrontStage::conflicts(const std::vector<std::string>& parts) {
     if (m.incomplete || m.expired()) return false;
     m.set_timeout(m.solver, m.options.time_limit);
     if (m.solver.check(a) == z3::unsat) return true;
-    if (kinematics::has_proximal_link(m.dof)) return false;
+    if (kinematics::has_proximal_link(m.dof) || !m.refined_level) return false;
     m.set_timeout(m.fine, std::min(m.options.time_limit, m.options.refined_time_limit));
     return m.fine.check(a) == z3::unsat;
 }
@@ -460,7 +463,7 @@ bool FrontStage::conflicts(const std::vector<std::string>& parts) {
 std::string FrontStage::smtlib() const {
     // Ends with check-sat-assuming over every task part, so that running the
     // file alone (z3 FILE) answers as the front stage does.
-    std::string s = impl_->fine.to_smt2();
+    std::string s = (impl_->refined_level ? impl_->fine : impl_->solver).to_smt2();
     const auto pos = s.rfind("(check-sat)");
     if (pos != std::string::npos) s.erase(pos);
     s += "(check-sat-assuming (";

@@ -79,6 +79,7 @@ TEST_CASE("front stage options: defaults valid, each bad field named", "[options
         {"FrontStageOptions::time_limit", [](O& o) { o.time_limit = 0.0; }},
         {"FrontStageOptions::time_limit", [](O& o) { o.time_limit = kNaN; }},
         {"FrontStageOptions::refined_time_limit", [](O& o) { o.refined_time_limit = -1.0; }},
+        {"FrontStageOptions::refined_max_primitives", [](O& o) { o.refined_max_primitives = -1; }},
         {"FrontStageOptions::samples_per_primitive", [](O& o) { o.samples_per_primitive = 0; }},
         {"FrontStageOptions::encoded_points", [](O& o) { o.encoded_points = 0; }},
         {"FrontStageOptions::all_span_pairs", [](O& o) { o.all_span_pairs = -1; }},
