@@ -219,11 +219,12 @@ Solution Search::run() {
             tried_.push_back(std::to_string(dof) + " joints: front stage undecided");
             continue;
         }
-        // Breadth first: every skeleton gets its best initial guess before
-        // any gets its others. A wrong elbow sign fails on each of its
-        // guesses, and each failure costs a full refinement.
+        // Breadth first: every skeleton, of every joint count, gets its best
+        // initial guess before any gets its others. A wrong elbow sign fails
+        // on each of its guesses, and each failure costs a full refinement;
+        // where every first guess of fewer joints fails, more joints are
+        // usually needed (a base ringed by posts, scripts/keyhole-tasks).
         int skeletons = 0;
-        const std::size_t first_of_dof = searched.size();
         while (result == smt::FrontStage::Result::Sat && remaining() > 0.0) {
             const smt::Skeleton sk = front.skeleton();
             ++skeletons;
@@ -238,17 +239,17 @@ Solution Search::run() {
             result = front.check();
             stats_.front_seconds += seconds_since(t1);
         }
-        for (std::size_t k = first_of_dof; k < searched.size() && remaining() > 0.0; ++k) {
-            const smt::Skeleton& sk = searched[k];
-            say(text::format("%d joints: more initial guesses for elbow %+d, base region %d", dof,
-                             sk.elbow, sk.base_region));
-            if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton, opt_.seed))
-                return timed(shorten(sk, std::move(*found)));
-        }
         const bool exhausted = result != smt::FrontStage::Result::Sat;
         tried_.push_back(text::format("%d joints: %d skeleton(s) searched", dof, skeletons) +
                          (exhausted ? " (all of them) without a certified motion" : ""));
         if (exhausted) say(std::to_string(dof) + " joints: search exhausted");
+    }
+    for (std::size_t k = 0; k < searched.size() && remaining() > 0.0; ++k) {
+        const smt::Skeleton& sk = searched[k];
+        say(text::format("%d joints: more initial guesses for elbow %+d, base region %d", sk.dof,
+                         sk.elbow, sk.base_region));
+        if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton, opt_.seed))
+            return timed(shorten(sk, std::move(*found)));
     }
     // Blocking skeletons proves nothing: while time is left, their other
     // initial guesses are tried.
