@@ -304,11 +304,10 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
         // Close to a solution already: keep the point and its multipliers
         // nearly where they are, and start the barrier small.
         o.SetStringValue("warm_start_init_point", "yes");
-        o.SetNumericValue("warm_start_bound_push", options.warm_push);
-        o.SetNumericValue("warm_start_bound_frac", options.warm_push);
-        o.SetNumericValue("warm_start_slack_bound_push", options.warm_push);
-        o.SetNumericValue("warm_start_slack_bound_frac", options.warm_push);
-        o.SetNumericValue("warm_start_mult_bound_push", options.warm_push);
+        for (const char* push :
+             {"warm_start_bound_push", "warm_start_bound_frac", "warm_start_slack_bound_push",
+              "warm_start_slack_bound_frac", "warm_start_mult_bound_push"})
+            o.SetNumericValue(push, options.warm_push);
         o.SetNumericValue("mu_init", options.warm_mu);
     }
     // An empty name: never read ./ipopt.opt, which would override these silently.

@@ -7,6 +7,7 @@
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
 
+#include "../support/arm_problems.h"
 #include "../support/derivative_check.h"
 #include "../support/fixtures.h"
 
@@ -15,23 +16,7 @@ using testing::check_derivatives;
 
 namespace {
 
-nlp::ArmProblem rose_problem(nlp::SweptVolume swept) {
-    static const task::Task rose = io::load_task(testing::source_path("tasks/rose.json"));
-    nlp::ArmProblem p;
-    p.task = &rose;
-    p.skeleton.dof = 2;
-    p.skeleton.elbow = -1;
-    p.skeleton.base_region = 0;
-    p.start.base = {0.0, 0.05};
-    p.start.link_lengths = {0.5, 0.45};
-    p.start.link_diameter = rose.robot.link_diameter;
-    p.start.elbow = -1;
-    p.swept = swept;
-    p.horizon = 1.0;  // every obstacle at every point: all constraint kinds present
-    for (int j = 0; j < static_cast<int>(rose.trajectory.size()); ++j)
-        for (double s : {0.0, 0.03, 0.07}) p.points.push_back({j, s});
-    return p;
-}
+nlp::ArmProblem rose_problem(nlp::SweptVolume swept) { return testing::rose_arm_problem(swept); }
 
 }  // namespace
 

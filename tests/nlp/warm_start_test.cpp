@@ -8,7 +8,7 @@
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
 
-#include "../support/fixtures.h"
+#include "../support/arm_problems.h"
 
 using namespace modsynth;
 
@@ -82,17 +82,12 @@ TEST_CASE("a warm-started solve reaches the cold solve's optimum", "[nlp]") {
 // path a later round took 11 instead of 57; here, a small one, about as many.
 TEST_CASE("a later refinement round warm-started from the last one finds the same robot",
           "[nlp][slow]") {
-    static const task::Task rose = io::load_task(testing::source_path("tasks/rose.json"));
-    nlp::ArmProblem p;
-    p.task = &rose;
-    p.skeleton.dof = 2;
-    p.skeleton.elbow = -1;
-    p.skeleton.base_region = 0;
+    nlp::ArmProblem p = testing::rose_arm_problem(nlp::SweptVolume::Sampled);
+    const task::Task& rose = *p.task;
     p.start.base = {-0.02, 0.007};
     p.start.link_lengths = {0.56, 0.47};
-    p.start.link_diameter = rose.robot.link_diameter;
-    p.start.elbow = -1;
     p.horizon = 0.10;
+    p.points.clear();  // the primitives' starts only
     for (int j = 0; j < static_cast<int>(rose.trajectory.size()); ++j) p.points.push_back({j, 0.0});
     const nlp::Formulation first = nlp::formulate(p);
     const nlp::SolverResult solved = nlp::minimize(first.program, {});
