@@ -10,10 +10,9 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
-#include <string_view>
-#include <unordered_map>
 #include <vector>
 
+#include <modsynth/nlp/warm_start.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
@@ -239,44 +238,6 @@ bool SolverOptions::IsValid(std::string* error) const {
         .nested("watch", watch)
         .at_least("reported_violations", reported_violations, 0)
         .ok();
-}
-
-WarmStart carry_over(const QuadraticProgram& from, const SolverResult& solved,
-                     const QuadraticProgram& to) {
-    WarmStart w;
-    w.x = to.start();
-    w.z_lower.assign(to.num_variables(), 0.0);
-    w.z_upper.assign(to.num_variables(), 0.0);
-    w.lambda.assign(to.num_constraints(), 0.0);
-    const bool primal = solved.x.size() == static_cast<std::size_t>(from.num_variables());
-    const bool dual = primal && solved.z_lower.size() == solved.x.size() &&
-                      solved.z_upper.size() == solved.x.size() &&
-                      solved.lambda.size() == static_cast<std::size_t>(from.num_constraints());
-    if (!primal) return w;
-    std::unordered_map<std::string_view, int> variable;
-    variable.reserve(from.num_variables());
-    for (int i = 0; i < from.num_variables(); ++i) variable.emplace(from.variable_name(i), i);
-    for (int i = 0; i < to.num_variables(); ++i) {
-        const auto it = variable.find(to.variable_name(i));
-        if (it == variable.end()) continue;
-        w.x[i] = solved.x[it->second];
-        if (dual)
-            w.z_lower[i] = solved.z_lower[it->second], w.z_upper[i] = solved.z_upper[it->second];
-    }
-    if (!dual) return w;
-    // Labels repeat (both ends of a link share one): the k-th of a label
-    // matches the k-th.
-    std::unordered_map<std::string_view, std::vector<int>> constraint;
-    for (int k = 0; k < from.num_constraints(); ++k)
-        constraint[from.constraint_label(k)].push_back(k);
-    std::unordered_map<std::string_view, std::size_t> used;
-    for (int k = 0; k < to.num_constraints(); ++k) {
-        const auto it = constraint.find(to.constraint_label(k));
-        if (it == constraint.end()) continue;
-        std::size_t& next = used[it->first];
-        if (next < it->second.size()) w.lambda[k] = solved.lambda[it->second[next++]];
-    }
-    return w;
 }
 
 SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options,

@@ -17,6 +17,7 @@
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
+#include <modsynth/nlp/warm_start.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
@@ -244,13 +245,6 @@ Solution Search::run() {
                          (exhausted ? " (all of them) without a certified motion" : ""));
         if (exhausted) say(std::to_string(dof) + " joints: search exhausted");
     }
-    for (std::size_t k = 0; k < searched.size() && remaining() > 0.0; ++k) {
-        const smt::Skeleton& sk = searched[k];
-        say(text::format("%d joints: more initial guesses for elbow %+d, base region %d", sk.dof,
-                         sk.elbow, sk.base_region));
-        if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton, opt_.seed))
-            return timed(shorten(sk, std::move(*found)));
-    }
     // Blocking skeletons proves nothing: while time is left, their other
     // initial guesses are tried.
     if (!searched.empty())
@@ -296,18 +290,23 @@ Solution Search::timed(Solution solution) {
 // Every skeleton the front stage offered, again and again with initial
 // guesses of other seeds, until one is certified or the time runs out: a
 // skeleton exhausted by blocking is no proof that the task is infeasible.
-// The seeds follow from the pass, so solutions stay repeatable.
+// Pass 0 gives each skeleton the other guesses of the search's own seed
+// (its best one was tried already); later passes, further seeds. The seeds
+// follow from the pass, so solutions stay repeatable.
 std::optional<Solution> Search::retry(const std::vector<smt::Skeleton>& skeletons) {
-    for (unsigned pass = 1; remaining() > 0.0; ++pass) {
+    for (unsigned pass = 0; remaining() > 0.0; ++pass) {
         const unsigned seed = opt_.seed + 1000003u * pass;
         for (const smt::Skeleton& sk : skeletons) {
             if (remaining() <= 0.0) break;
-            say(text::format("%d joints: retry %u, elbow %+d, base region %d", sk.dof, pass,
-                             sk.elbow, sk.base_region));
+            say(pass == 0 ? text::format("%d joints: more initial guesses for elbow %+d, base "
+                                         "region %d",
+                                         sk.dof, sk.elbow, sk.base_region)
+                          : text::format("%d joints: retry %u, elbow %+d, base region %d", sk.dof,
+                                         pass, sk.elbow, sk.base_region));
             if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton, seed))
                 return shorten(sk, std::move(*found));
         }
-        tried_.push_back(text::format("retry %u of every skeleton", pass));
+        if (pass > 0) tried_.push_back(text::format("retry %u of every skeleton", pass));
     }
     return std::nullopt;
 }

@@ -7,6 +7,7 @@
 #include <modsynth/io/task_io.h>
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
+#include <modsynth/nlp/warm_start.h>
 
 #include "../support/arm_problems.h"
 

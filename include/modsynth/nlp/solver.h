@@ -67,24 +67,12 @@ struct SolverResult {
     bool usable() const { return status == Status::Optimal || status == Status::Acceptable; }
 };
 
-/// A primal-dual point to start from, aligned with the program solved.
-struct WarmStart {
-    std::vector<double> x, lambda, z_lower, z_upper;
-};
-
-/// A solution of `from` as a start of `to`, matched by variable name and by
-/// constraint label (the k-th constraint of a label to the k-th): a later
-/// refinement round adds points to the previous round's program, and its
-/// old part starts where the last solve ended, multipliers included. What
-/// `to` adds starts at its own start values with zero multipliers.
-WarmStart carry_over(const QuadraticProgram& from, const SolverResult& solved,
-                     const QuadraticProgram& to);
-
 /// Throws std::invalid_argument when the options are not valid. When no
 /// usable point is found, the message gives Ipopt's status and the
 /// constraints worst violated at its last iterate, by label. With `warm`,
 /// Ipopt starts from its primal and dual point (sizes must match the
 /// program's, or std::invalid_argument).
+struct WarmStart;  // warm_start.h
 SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options,
                       const WarmStart* warm = nullptr);
 
