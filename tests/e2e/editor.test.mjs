@@ -383,8 +383,15 @@ async function drawingImport(url) {
   const near = (p) => Math.hypot(p[0] - wave[0], p[1] - wave[1]) < 1e-6;
   check(primitives.some((p) => near(p.start) || (p.end && near(p.end))),
         `the underlay's placement puts the wave's start on the fitted path: ${wave}`);
-  const box = await image.boundingBox();
-  const pathBox = await (await page.$("#canvas #layer-trajectory")).boundingBox();
+  // Both boxes in one evaluation: a verdict arriving in between redraws the
+  // canvas and would leave a handle taken earlier pointing at a detached node.
+  const [box, pathBox] = await page.evaluate(() =>
+    ["#layer-underlay image.underlay", "#canvas #layer-trajectory"].map((selector) => {
+      const node = document.querySelector(selector);
+      if (!node) return null;
+      const r = node.getBoundingClientRect();
+      return { x: r.x, y: r.y, width: r.width, height: r.height };
+    }));
   check(box && pathBox && pathBox.x >= box.x - 1 && pathBox.y >= box.y - 1 &&
         pathBox.x + pathBox.width <= box.x + box.width + 1 && pathBox.y + pathBox.height <= box.y + box.height + 1 &&
         pathBox.width > 0.9 * box.width,
