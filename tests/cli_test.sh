@@ -57,6 +57,7 @@ PY
 expect_exit 2 "solve without -o" "$bin" solve "$root/tasks/rose.json"
 expect_exit 2 "negative time limit" "$bin" solve "$root/tasks/rose.json" -o "$tmp/x.json" --time-limit -1
 expect_exit 2 "unknown swept model" "$bin" solve "$root/tasks/rose.json" -o "$tmp/x.json" --swept sampled
+expect_exit 2 "a negative shortening gap" "$bin" solve "$root/tasks/rose.json" -o "$tmp/x.json" --shorten-gap -0.001
 expect_exit 2 "batch with an unknown swept model" "$bin" batch "$root/tasks" --out "$tmp/x.jsonl" --swept SV-app
 expect_exit 2 "missing file" "$bin" validate "$tmp/does-not-exist.json"
 expect_exit 0 "--help" "$bin" --help

@@ -32,6 +32,7 @@ struct SolveArgs {
     double joint_speed = std::numeric_limits<double>::infinity();
     bool quiet = false;
     std::string swept = "auto";
+    double shorten_gap = synth::SynthesisOptions{}.shorten_gap;
     output::ExportPaths exports;
 };
 
@@ -102,6 +103,7 @@ int run_solve(const SolveArgs& a) {
     options.time_limit = std::max(0.0, a.time_limit - elapsed());
     options.seed = a.seed;
     options.swept = *synth::swept_choice_from(a.swept);
+    options.shorten_gap = a.shorten_gap;
     options.retime.ee_speed = a.ee_speed;
     options.retime.joint_speed = std::min(a.joint_speed, module_speed_cap(task, catalog));
     options.progress = [&](const std::string& line) {
@@ -163,6 +165,11 @@ Command add_solve(CLI::App& parent) {
                     "III-B), lines (separating lines at sampled points); a model whose robot "
                     "is not certified gives way to lines (default auto)")
         ->check(CLI::IsMember({"auto", "app", "over", "lines"}));
+    sub->add_option("--shorten-gap", a->shorten_gap,
+                    "m: after the first certified robot, other elbow signs and base regions are "
+                    "tried only where a robot more than this shorter could exist (0: wherever "
+                    "any shorter one could; default 0.001)")
+        ->check(within(0.0, 10.0));
     sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");
     add_export_options(*sub, a->exports);
     return {sub, [a] { return run_solve(*a); }};

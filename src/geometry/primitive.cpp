@@ -172,6 +172,8 @@ double curvature(const Primitive& p) {
 
 NearestPoint nearest(const Primitive& p, const Vec2& q) { return locate_nearest(p, q).point; }
 
+NearestPoint farthest(const Primitive& p, const Vec2& q) { return locate_farthest(p, q).point; }
+
 CriticalPoints critical_points(const Primitive& p, const Vec2& origin) {
     const Located closest = locate_nearest(p, origin);
     const Located farthest = locate_farthest(p, origin);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -11,6 +12,7 @@
 #include <modsynth/control/motion.h>
 #include <modsynth/control/retime.h>
 #include <modsynth/geometry/distance.h>
+#include <modsynth/geometry/farthest_reach.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/chain_layout.h>
@@ -134,6 +136,7 @@ private:
     std::optional<Solution> try_skeleton(const smt::Skeleton& skeleton, int guesses, unsigned seed);
     std::optional<Solution> retry(const std::vector<smt::Skeleton>& skeletons);
     Solution shorten(const smt::Skeleton& found, Solution best);
+    double shortest_possible(int base_region, int dof);
     std::optional<Solution> refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
                                    SweptAttempt attempt);
     Verdict judge(const kinematics::Robot& robot);
@@ -152,6 +155,8 @@ private:
     /// (the shortening pass and the retries would otherwise redo them).
     std::set<std::vector<double>> failed_;
     std::string stage_ = "before the front stage";  ///< the last stage said, for an unknown answer
+    /// By base region (-1: anywhere): the least farthest reach of the path.
+    std::map<int, double> least_reach_;
 };
 
 Solution Search::run() {
@@ -319,6 +324,12 @@ std::optional<Solution> Search::retry(const std::vector<smt::Skeleton>& skeleton
 Solution Search::shorten(const smt::Skeleton& found, Solution best) {
     std::string best_by = stats_.certified_by;
     for (int region : task::base_region_choices(task_)) {
+        const double bound = shortest_possible(region, found.dof);
+        if (bound >= best.robot.total_length() - opt_.shorten_gap) {
+            say(text::format("%d joints: no robot with base region %d is shorter than %.4f m",
+                             found.dof, region, bound));
+            continue;
+        }
         for (int elbow : {1, -1}) {
             if ((region == found.base_region && elbow == found.elbow) || remaining() <= 0.0)
                 continue;
@@ -338,6 +349,24 @@ Solution Search::shorten(const smt::Skeleton& found, Solution best) {
     }
     stats_.certified_by = best_by;
     return best;
+}
+
+// A lower bound on the total link length of any robot of `dof` joints with
+// its base in the region: every link is at least the task's shortest, and
+// the arm reaches the path point farthest from its base.
+double Search::shortest_possible(int base_region, int dof) {
+    auto it = least_reach_.find(base_region);
+    if (it == least_reach_.end()) {
+        geometry::FarthestReachOptions o;
+        o.tolerance = std::max(1e-6, 0.25 * opt_.shorten_gap);
+        const geometry::FarthestReach reach =
+            base_region < 0 ? geometry::least_farthest_reach(task_.trajectory, o)
+                            : geometry::least_farthest_reach(
+                                  task_.trajectory, task_.base_regions[base_region].min,
+                                  task_.base_regions[base_region].max, o);
+        it = least_reach_.emplace(base_region, reach.lower).first;
+    }
+    return std::max(it->second, dof * task_.robot.min_link_length);
 }
 
 // What a refinement is a function of (the time left aside): the skeleton's
@@ -553,6 +582,7 @@ bool SynthesisOptions::IsValid(std::string* error) const {
         .greater("trace_samples", trace_samples, 0.0)
         .at_least("guesses_per_skeleton", guesses_per_skeleton, 1)
         .at_least("guesses_per_variant", guesses_per_variant, 0)
+        .at_least("shorten_gap", shorten_gap, 0.0)
         .at_least("refinement_rounds", refinement_rounds, 1)
         .greater("first_solve_seconds", first_solve_seconds, 0.0)
         .greater("later_solve_seconds", later_solve_seconds, 0.0)

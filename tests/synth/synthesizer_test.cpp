@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <set>
 
+#include <modsynth/geometry/farthest_reach.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/verify/verifier.h>
@@ -57,6 +58,11 @@ TEST_CASE("planted 2-joint tasks are solved and the motion re-certifies", "[synt
         // Not wildly longer than the planted robot (which need not be the shortest).
         const auto expect = testing::read_json(stem_of(path) + ".expect.json");
         CHECK(s.robot.total_length() <= 1.5 * expect["planted_sum_link_lengths"].get<double>());
+        // No arm is shorter than its farthest reach from the best base.
+        CHECK(s.robot.total_length() >= geometry::least_farthest_reach(t.trajectory,
+                                                                       t.base_regions[0].min,
+                                                                       t.base_regions[0].max)
+                                            .lower);
     }
 }
 
@@ -91,6 +97,33 @@ TEST_CASE("the rose is solved with two joints", "[synth]") {
     // shorter than the farthest path point's distance from the base region
     // (0.53 m, the top circle seen from the region's corner) can exist.
     CHECK(s.robot.total_length() < 0.56);
+}
+
+TEST_CASE("the shortening pass skips the variants that cannot be shorter", "[synth]") {
+    const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
+    const auto said = [](const std::vector<std::string>& lines, const char* what) {
+        return std::count_if(lines.begin(), lines.end(), [&](const std::string& l) {
+            return l.find(what) != std::string::npos;
+        });
+    };
+    // A gap wider than what the other elbow saves (0.97 m against 0.54 m,
+    // above): nothing is tried, and the first certified robot is returned.
+    std::vector<std::string> lines;
+    synth::SynthesisOptions options;
+    options.shorten_gap = 0.5;
+    options.progress = [&](const std::string& l) { lines.push_back(l); };
+    const synth::Solution first = synth::synthesize(t, options);
+    REQUIRE(first.status == synth::Status::Solved);
+    CHECK(said(lines, "shorter robot") == 0);
+    CHECK(said(lines, "no robot with base region 0 is shorter than") == 1);
+    CHECK(first.robot.total_length() > 0.9);
+    // The default gap: the other elbow is tried and its robot returned.
+    lines.clear();
+    options.shorten_gap = synth::SynthesisOptions{}.shorten_gap;
+    const synth::Solution best = synth::synthesize(t, options);
+    REQUIRE(best.status == synth::Status::Solved);
+    CHECK(said(lines, "shorter robot") == 1);
+    CHECK(best.robot.total_length() < 0.56);
 }
 
 TEST_CASE("same task and seed give the same solution", "[synth]") {

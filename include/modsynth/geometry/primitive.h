@@ -43,6 +43,8 @@ struct NearestPoint {
 };
 /// The point of the primitive nearest to q (the first one, by s, on ties).
 NearestPoint nearest(const Primitive& p, const Vec2& q);
+/// The point of the primitive farthest from q (the first one, by s, on ties).
+NearestPoint farthest(const Primitive& p, const Vec2& q);
 
 /// The critical points of a primitive relative to an origin (paper Table I,
 /// with the errata's fix for lines): the points nearest to and farthest from

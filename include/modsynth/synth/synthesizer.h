@@ -66,6 +66,12 @@ struct SynthesisOptions {
     /// certified robot: a fixed amount of work, so solutions stay repeatable.
     int guesses_per_skeleton = 4;
     int guesses_per_variant = 1;
+    /// m: a variant is not tried when no robot with its base region can be
+    /// shorter than the one found by more than this. Every arm is at least
+    /// as long as its farthest reach from the best base of its region
+    /// (geometry/farthest_reach.h), and a first certified 3-joint robot is
+    /// usually within a millimetre of that bound already.
+    double shorten_gap = 1e-3;
     /// Refinement rounds (solve, plan, verify, add counterexamples) per
     /// initial guess before the next guess is tried.
     int refinement_rounds = 12;
