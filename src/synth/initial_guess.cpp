@@ -215,6 +215,48 @@ bool sort_and_keep_distinct(std::vector<ScoredRobot>& all, int count, double dis
     return !all.empty();
 }
 
+// Clear candidates rank by length alone (sort_and_keep_distinct): so walk
+// them shortest first, score each only as far as telling clear from not
+// (`until_unclear` may stop at its first unclear point), and stop at `count`
+// distinct clear ones. Where clear candidates are common most of the
+// scoring is saved; the choice is the same. Scoring stops at the deadline:
+// the candidates scored by then are kept.
+template <class UntilUnclear, class Whole>
+std::vector<ScoredRobot> choose_candidates(std::vector<ScoredRobot> all, int count,
+                                           double distinct_distance,
+                                           std::chrono::steady_clock::time_point deadline,
+                                           UntilUnclear&& until_unclear, Whole&& whole) {
+    const auto in_time = [&](std::size_t k) {
+        return k % 16 != 0 || std::chrono::steady_clock::now() < deadline;
+    };
+    std::vector<std::size_t> order(all.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return all[a].robot.total_length() < all[b].robot.total_length();
+    });
+    std::vector<ScoredRobot> clear;
+    std::vector<bool> partial(all.size(), false);
+    std::size_t scored = 0;
+    for (std::size_t i : order) {
+        if (near_any(clear, all[i].robot, distinct_distance)) continue;
+        if (!in_time(scored++)) break;
+        all[i].margin = until_unclear(all[i].robot);
+        if (all[i].margin < 0.0) {
+            partial[i] = true;
+            continue;
+        }
+        clear.push_back(all[i]);
+        if (static_cast<int>(clear.size()) >= count) return clear;
+    }
+    // Too few are clear: the others rank by their worst margin, scored whole.
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if ((std::isnan(all[i].margin) || partial[i]) && in_time(scored++))
+            all[i].margin = whole(all[i].robot);
+    std::erase_if(all, [](const ScoredRobot& c) { return std::isnan(c.margin); });
+    sort_and_keep_distinct(all, count, distinct_distance);
+    return all;
+}
+
 std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::Skeleton& skeleton,
                                             int count, unsigned seed,
                                             std::chrono::steady_clock::time_point deadline,
@@ -249,11 +291,9 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
         double far = 0.0;
         for (const Vec2& p : pts) far = std::max(far, (p - robot.base).norm());
         robot.link_lengths = links(far);
-        const double margin = choose_proximal_angles(task, robot, per_primitive, options);
-        all.push_back({robot, margin});
+        all.push_back({robot, std::numeric_limits<double>::quiet_NaN()});
     };
-    for (int i = 0; i < options.candidates_three && std::chrono::steady_clock::now() < deadline;
-         ++i) {
+    for (int i = 0; i < options.candidates_three; ++i) {
         consider(rng, [&](double far) {
             // The distal pair must cover each primitive from one point; the
             // whole arm must reach the farthest point.
@@ -268,8 +308,7 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
     // A stream of its own, so that the compact candidates stay as they were.
     std::mt19937 detour(seed * 104729u + static_cast<unsigned>(skeleton.elbow + 2) * 17u +
                         static_cast<unsigned>(skeleton.base_region + 1));
-    for (int i = 0;
-         i < options.candidates_three_detour && std::chrono::steady_clock::now() < deadline; ++i) {
+    for (int i = 0; i < options.candidates_three_detour; ++i) {
         consider(detour, [&](double far) {
             const double r1 = std::clamp(far * (0.2 + u(detour)), lmin, lmax);
             const double a = std::clamp(far * (0.3 + 2.0 * u(detour)), lmin, lmax);
@@ -277,8 +316,11 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
             return std::vector<double>{r1, a, c};
         });
     }
-    sort_and_keep_distinct(all, count, options.distinct_distance);
-    return all;
+    const auto score = [&](kinematics::Robot& robot) {
+        return choose_proximal_angles(task, robot, per_primitive, options);
+    };
+    return choose_candidates(std::move(all), count, options.distinct_distance, deadline, score,
+                             score);
 }
 
 }  // namespace
@@ -327,28 +369,10 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
         const double diff = (2.0 * u(rng) - 1.0) * std::max(0.0, near - 0.01);
         consider(base, 0.5 * (sum + diff), 0.5 * (sum - diff));
     }
-    // Clear candidates rank by length alone (sort_and_keep_distinct): so
-    // walk them shortest first, score each only up to its first unclear
-    // point, and stop at `count` distinct clear ones. On long paths most
-    // of the scoring is saved; the choice is the same.
-    std::vector<std::size_t> order(all.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return all[a].robot.total_length() < all[b].robot.total_length();
-    });
-    std::vector<ScoredRobot> clear;
-    for (std::size_t i : order) {
-        if (near_any(clear, all[i].robot, options.distinct_distance)) continue;
-        all[i].margin = margin_at(task, all[i].robot, pts, 0.0);
-        if (all[i].margin < 0.0) continue;
-        clear.push_back(all[i]);
-        if (static_cast<int>(clear.size()) >= count) return clear;
-    }
-    // Too few are clear: the others rank by their worst margin, scored whole.
-    for (auto& c : all)
-        if (!(c.margin >= 0.0)) c.margin = margin_at(task, c.robot, pts);
-    sort_and_keep_distinct(all, count, options.distinct_distance);
-    return all;
+    return choose_candidates(
+        std::move(all), count, options.distinct_distance, deadline,
+        [&](const kinematics::Robot& robot) { return margin_at(task, robot, pts, 0.0); },
+        [&](const kinematics::Robot& robot) { return margin_at(task, robot, pts); });
 }
 
 }  // namespace modsynth::synth

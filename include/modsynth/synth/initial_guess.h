@@ -70,8 +70,9 @@ double path_margin(const task::Task& task, const kinematics::Robot& robot, doubl
                    const InitialGuessOptions& options = {});
 
 /// Up to `count` distinct candidates, best first: clear ones by shorter
-/// total length, the others by larger margin. Candidates stop at the
-/// deadline (those scored by then are kept). Throws std::invalid_argument
+/// total length, the others by larger margin. Candidates are scored
+/// shortest first, and no further than the `count`-th distinct clear one;
+/// scoring stops at the deadline (those scored by then are kept). Throws std::invalid_argument
 /// when the options are not valid.
 std::vector<ScoredRobot> initial_guesses(
     const task::Task& task, const smt::Skeleton& skeleton, int count, unsigned seed,
