@@ -155,6 +155,8 @@ private:
     /// (the shortening pass and the retries would otherwise redo them).
     std::set<std::vector<double>> failed_;
     std::string stage_ = "before the front stage";  ///< the last stage said, for an unknown answer
+    /// Seconds the refinement of the last certified robot took, all rounds.
+    double certified_seconds_ = 0.0;
     /// By base region (-1: anywhere): the least farthest reach of the path.
     std::map<int, double> least_reach_;
 };
@@ -331,8 +333,16 @@ Solution Search::shorten(const smt::Skeleton& found, Solution best) {
             continue;
         }
         for (int elbow : {1, -1}) {
-            if ((region == found.base_region && elbow == found.elbow) || remaining() <= 0.0)
-                continue;
+            if (region == found.base_region && elbow == found.elbow) continue;
+            // A variant costs about what the robot found did, and a single
+            // Ipopt iteration on a long path can outlast what is left: one
+            // started too late would leave no time to time and write the
+            // robot already certified.
+            if (remaining() < opt_.shorten_reserve * certified_seconds_ || remaining() <= 0.0) {
+                say(text::format("%d joints: no time left to look for a shorter robot", found.dof));
+                stats_.certified_by = best_by;
+                return best;
+            }
             smt::Skeleton variant = found;
             variant.base_region = region;
             variant.elbow = elbow;
@@ -359,6 +369,13 @@ double Search::shortest_possible(int base_region, int dof) {
     if (it == least_reach_.end()) {
         geometry::FarthestReachOptions o;
         o.tolerance = std::max(1e-6, 0.25 * opt_.shorten_gap);
+        // Each evaluation visits every primitive: on the longest paths fewer
+        // evaluations keep the bound to milliseconds (looser, never wrong).
+        constexpr double kPrimitiveVisits = 4e6;
+        o.max_evaluations = static_cast<int>(
+            std::clamp(kPrimitiveVisits /
+                           static_cast<double>(std::max<std::size_t>(1, task_.trajectory.size())),
+                       16.0, static_cast<double>(o.max_evaluations)));
         const geometry::FarthestReach reach =
             base_region < 0 ? geometry::least_farthest_reach(task_.trajectory, o)
                             : geometry::least_farthest_reach(
@@ -409,6 +426,7 @@ std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int 
 
 std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
                                        const kinematics::Robot& start, SweptAttempt attempt) {
+    const auto started = Clock::now();
     const char* name = name_of(attempt);
     const nlp::SweptVolume swept = attempt.swept;
     nlp::ArmProblem problem;
@@ -461,6 +479,7 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
         Verdict verdict = judge(robot);
         if (verdict.solution) {
             stats_.certified_by = name;
+            certified_seconds_ = seconds_since(started);
             if (stats_.first_certified_by.empty()) stats_.first_certified_by = name;
             return std::move(verdict.solution);
         }
@@ -583,6 +602,7 @@ bool SynthesisOptions::IsValid(std::string* error) const {
         .at_least("guesses_per_skeleton", guesses_per_skeleton, 1)
         .at_least("guesses_per_variant", guesses_per_variant, 0)
         .at_least("shorten_gap", shorten_gap, 0.0)
+        .at_least("shorten_reserve", shorten_reserve, 0.0)
         .at_least("refinement_rounds", refinement_rounds, 1)
         .greater("first_solve_seconds", first_solve_seconds, 0.0)
         .greater("later_solve_seconds", later_solve_seconds, 0.0)

@@ -72,6 +72,9 @@ struct SynthesisOptions {
     /// (geometry/farthest_reach.h), and a first certified 3-joint robot is
     /// usually within a millimetre of that bound already.
     double shorten_gap = 1e-3;
+    /// A variant is started only while the time left is at least this many
+    /// times what the refinement of the robot found took.
+    double shorten_reserve = 2.0;
     /// Refinement rounds (solve, plan, verify, add counterexamples) per
     /// initial guess before the next guess is tried.
     int refinement_rounds = 12;
