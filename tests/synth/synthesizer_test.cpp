@@ -117,6 +117,16 @@ TEST_CASE("the shortening pass skips the variants that cannot be shorter", "[syn
     CHECK(said(lines, "shorter robot") == 0);
     CHECK(said(lines, "no robot with base region 0 is shorter than") == 1);
     CHECK(first.robot.total_length() > 0.9);
+    // Too little time left for a variant (by the reserve): none is started.
+    lines.clear();
+    options.shorten_gap = 0.0;
+    options.shorten_reserve = 1e6;
+    const synth::Solution hurried = synth::synthesize(t, options);
+    REQUIRE(hurried.status == synth::Status::Solved);
+    CHECK(said(lines, "no time left to look for a shorter robot") == 1);
+    CHECK(said(lines, "shorter robot with") == 0);
+    CHECK(hurried.robot.total_length() == first.robot.total_length());
+    options.shorten_reserve = synth::SynthesisOptions{}.shorten_reserve;
     // The default gap: the other elbow is tried and its robot returned.
     lines.clear();
     options.shorten_gap = synth::SynthesisOptions{}.shorten_gap;
