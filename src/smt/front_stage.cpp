@@ -44,6 +44,8 @@ bool FrontStageOptions::IsValid(std::string* error) const {
         .at_least("refined_max_primitives", refined_max_primitives, 0)
         .at_least("samples_per_primitive", samples_per_primitive, 1)
         .at_least("encoded_points", encoded_points, 1)
+        .greater("core_trial_seconds", core_trial_seconds, 0.0)
+        .at_least("core_trial_factor", core_trial_factor, 1.0)
         .at_least("all_span_pairs", all_span_pairs, 0)
         .at_least("hull_probe", hull_probe, 1)
         .within("slack", slack, 0.0, 1e-3)
@@ -404,10 +406,22 @@ std::vector<std::string> FrontStage::minimal_core() {
     Impl& m = *impl_;
     z3::solver& s = m.unsat_refined ? m.fine : m.solver;
     if (m.expired()) return {};
-    m.set_timeout(s, m.unsat_refined ? m.options.refined_time_limit : m.options.time_limit);
+    const double limit = m.unsat_refined ? m.options.refined_time_limit : m.options.time_limit;
+    m.set_timeout(s, limit);
     // Other calls (conflicts) may have run checks since: re-establish the
     // conflict so the core below is this one's.
+    const auto t0 = std::chrono::steady_clock::now();
     if (s.check(m.assumptions()) != z3::unsat) return {};
+    // A trial without a needed literal is satisfiable, and nlsat can take
+    // its whole timeout to find the model (10 s on a 640-primitive path,
+    // where the conflict itself takes 0.3 s). An undecided trial keeps its
+    // literal, which leaves a conflict: so trials get a few times what the
+    // conflict took.
+    const double trial_limit = std::min(
+        limit,
+        std::max(m.options.core_trial_seconds,
+                 m.options.core_trial_factor *
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()));
     z3::expr_vector core = s.unsat_core();
     std::vector<z3::expr> kept;
     for (unsigned i = 0; i < core.size(); ++i) kept.push_back(core[i]);
@@ -416,7 +430,7 @@ std::vector<std::string> FrontStage::minimal_core() {
     // At the deadline the core found so far is returned: a conflict, if
     // not a minimal one.
     for (std::size_t i = 0; i < kept.size() && !m.expired();) {
-        m.set_timeout(s, m.unsat_refined ? m.options.refined_time_limit : m.options.time_limit);
+        m.set_timeout(s, trial_limit);
         z3::expr_vector trial(m.ctx);
         for (std::size_t k = 0; k < kept.size(); ++k)
             if (k != i) trial.push_back(kept[k]);

@@ -82,6 +82,8 @@ TEST_CASE("front stage options: defaults valid, each bad field named", "[options
         {"FrontStageOptions::refined_max_primitives", [](O& o) { o.refined_max_primitives = -1; }},
         {"FrontStageOptions::samples_per_primitive", [](O& o) { o.samples_per_primitive = 0; }},
         {"FrontStageOptions::encoded_points", [](O& o) { o.encoded_points = 0; }},
+        {"FrontStageOptions::core_trial_seconds", [](O& o) { o.core_trial_seconds = 0.0; }},
+        {"FrontStageOptions::core_trial_factor", [](O& o) { o.core_trial_factor = 0.5; }},
         {"FrontStageOptions::all_span_pairs", [](O& o) { o.all_span_pairs = -1; }},
         {"FrontStageOptions::hull_probe", [](O& o) { o.hull_probe = 0; }},
         {"FrontStageOptions::slack", [](O& o) { o.slack = -1e-7; }},

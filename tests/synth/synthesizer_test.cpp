@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -134,6 +135,34 @@ TEST_CASE("the shortening pass skips the variants that cannot be shorter", "[syn
     REQUIRE(best.status == synth::Status::Solved);
     CHECK(said(lines, "shorter robot") == 1);
     CHECK(best.robot.total_length() < 0.56);
+}
+
+TEST_CASE("a long path out of reach is proved infeasible well within a 10 s limit",
+          "[synth][slow]") {
+    // 640 segments round a ring of radius about 0.5 m about a base region at
+    // its centre, arms of at most 3 x 0.15 m. Minimising the 2-joint core
+    // tries the conflict without each of its parts; such a trial is
+    // satisfiable, and Z3 could take its whole 10 s timeout on each, leaving
+    // no time for 3 joints (the answer was unknown).
+    task::Task t;
+    t.name = "ring";
+    constexpr int n = 640;
+    const auto at = [](int k) {
+        const double a = geometry::kTau * k / n;
+        return geometry::Vec2(0.5 * std::cos(a) + 0.02 * std::sin(7.0 * a), 0.5 * std::sin(a));
+    };
+    for (int k = 0; k < n; ++k) t.trajectory.push_back(geometry::make_line(at(k), at(k + 1)));
+    t.base_regions.push_back({geometry::Vec2(-0.05, -0.05), geometry::Vec2(0.05, 0.05)});
+    t.robot.dof = {2, 3};
+    t.robot.max_link_length = 0.15;
+    synth::SynthesisOptions options;
+    options.time_limit = 10.0;
+    const synth::Solution s = synth::synthesize(t, options);
+    REQUIRE(s.status == synth::Status::Infeasible);
+    const auto& core = s.explanation.core;
+    CHECK(std::find(core.begin(), core.end(), "robot.max_link_length") != core.end());
+    CHECK(std::count_if(core.begin(), core.end(),
+                        [](const std::string& p) { return p.rfind("trajectory[", 0) == 0; }) >= 2);
 }
 
 TEST_CASE("same task and seed give the same solution", "[synth]") {

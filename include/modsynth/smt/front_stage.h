@@ -42,6 +42,11 @@ struct FrontStageOptions {
     /// the front stage takes 0.4 s instead of 0.75 s (4000), for the same
     /// skeletons on the planted tasks of `scripts/bench --scale`.
     int encoded_points = 2000;
+    /// Seconds for each check while a core is minimised: the larger of
+    /// these and this factor times what the conflict itself took (within
+    /// the time limit). An undecided check keeps its literal in the core.
+    double core_trial_seconds = 0.5;
+    double core_trial_factor = 4.0;
     /// Up to this many primitives every pair gets its span constraint;
     /// beyond, each primitive gets the span to its farthest partner only,
     /// which keeps the encoding linear in the path.
