@@ -124,6 +124,21 @@ assert missing["status"] == "invalid" and "no such file" in missing["message"], 
 assert rose["status"] == "solved", rose
 EOF
 
+# --shorten-gap reaches every solve: with 0.5 m the rose keeps its first
+# certified robot (0.97 m; the other elbow's is 0.54 m).
+mkdir -p "$tmp/gap"
+cp "$root/tasks/rose.json" "$tmp/gap/rose.json"
+batch "$tmp/gap" --out "$tmp/gap.jsonl" --time-limit 60 --shorten-gap 0.5
+code=$?
+[ "$code" -eq 0 ] || fail "batch --shorten-gap: exit $code ($(tail -3 "$tmp/err"))"
+python3 - "$tmp/gap.jsonl" <<'EOF' || fail "--shorten-gap is not passed to the solves"
+import json, sys
+(line,) = map(json.loads, open(sys.argv[1]))
+assert line["status"] == "solved" and line["total_link_length"] > 0.9, line
+EOF
+"$bin" batch "$tmp/gap" --out "$tmp/gap2.jsonl" --shorten-gap -1 >/dev/null 2>&1
+[ $? -eq 2 ] || fail "batch --shorten-gap -1 is not a usage error"
+
 # Children die with their parent, even one killed by SIGKILL.
 mkdir -p "$tmp/slow"
 for i in 1 2; do cp "$root/tasks/wipe-table.json" "$tmp/slow/wipe$i.json"; done  # ~15 s each

@@ -24,6 +24,7 @@ ProcessSpec spec_for(const SolveJob& job, const SolveRunOptions& o, const std::s
     spec.argv = {self,      "solve",        job.task_path,        "-o",     job.solution_path,
                  "--quiet", "--time-limit", number(o.time_limit), "--seed", std::to_string(o.seed)};
     if (o.swept != "auto") spec.argv.insert(spec.argv.end(), {"--swept", o.swept});
+    if (o.shorten_gap) spec.argv.insert(spec.argv.end(), {"--shorten-gap", number(*o.shorten_gap)});
     spec.log_path = job.log_path;
     spec.wall_limit = o.time_limit + o.grace;
     return spec;

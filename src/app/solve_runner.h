@@ -24,6 +24,8 @@ struct SolveRunOptions {
     double grace = 10.0;       ///< seconds past time_limit before the watchdog kills
     unsigned seed = 0;
     std::string swept = "auto";  ///< passed to each solve (solve --swept)
+    /// Passed to each solve (solve --shorten-gap) when set.
+    std::optional<double> shorten_gap;
     int jobs = 1;
 };
 
