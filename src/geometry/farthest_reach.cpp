@@ -48,6 +48,9 @@ FarthestReach least_farthest_reach(const std::vector<Primitive>& path, const Vec
         throw std::invalid_argument("least_farthest_reach: the box is empty");
     FarthestReach out;
     out.upper = std::numeric_limits<double>::infinity();
+    const int max_evaluations = static_cast<int>(
+        std::min(static_cast<double>(options.max_evaluations),
+                 std::max(16.0, options.max_visits / static_cast<double>(path.size()))));
     int evaluations = 0;
     // F is computed in floating point; a relative margin keeps the bound a
     // bound after rounding.
@@ -69,8 +72,7 @@ FarthestReach least_farthest_reach(const std::vector<Primitive>& path, const Vec
         const Cell cell = open.top();
         // The cell of least bound bounds every other one too.
         out.lower = std::max(0.0, cell.bound);
-        if (cell.bound >= out.upper - options.tolerance ||
-            evaluations + 4 > options.max_evaluations ||
+        if (cell.bound >= out.upper - options.tolerance || evaluations + 4 > max_evaluations ||
             (cell.half.x() == 0.0 && cell.half.y() == 0.0))
             return out;
         open.pop();

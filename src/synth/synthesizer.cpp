@@ -369,13 +369,6 @@ double Search::shortest_possible(int base_region, int dof) {
     if (it == least_reach_.end()) {
         geometry::FarthestReachOptions o;
         o.tolerance = std::max(1e-6, 0.25 * opt_.shorten_gap);
-        // Each evaluation visits every primitive: on the longest paths fewer
-        // evaluations keep the bound to milliseconds (looser, never wrong).
-        constexpr double kPrimitiveVisits = 4e6;
-        o.max_evaluations = static_cast<int>(
-            std::clamp(kPrimitiveVisits /
-                           static_cast<double>(std::max<std::size_t>(1, task_.trajectory.size())),
-                       16.0, static_cast<double>(o.max_evaluations)));
         const geometry::FarthestReach reach =
             base_region < 0 ? geometry::least_farthest_reach(task_.trajectory, o)
                             : geometry::least_farthest_reach(

@@ -106,6 +106,12 @@ TEST_CASE("least farthest reach: an evaluation cap loosens the bound, never brea
     const FarthestReach tight = least_farthest_reach(path, Vec2(-3.0, -3.0), Vec2(3.0, 3.0));
     CHECK(loose.lower <= tight.lower);
     CHECK(loose.lower >= 0.0);
+    FarthestReachOptions few_visits;  // 16 evaluations of this 2-primitive path
+    few_visits.max_visits = 2.0;
+    const FarthestReach visited =
+        least_farthest_reach(path, Vec2(-3.0, -3.0), Vec2(3.0, 3.0), few_visits);
+    CHECK(visited.lower <= tight.lower);
+    CHECK(visited.lower >= loose.lower - 1e-12);
     CHECK(tight.upper - tight.lower <= 1e-4);
 }
 

@@ -15,6 +15,10 @@ struct FarthestReachOptions {
     double tolerance = 1e-4;
     /// Evaluations of F, at most; past them the bound is looser, never wrong.
     int max_evaluations = 4000;
+    /// Primitives visited over all evaluations (each visits every one), at
+    /// most: on the longest paths fewer evaluations keep the bound to
+    /// milliseconds. At least 16 evaluations are made whatever the path.
+    double max_visits = 4e6;
 };
 
 struct FarthestReach {
