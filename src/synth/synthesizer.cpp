@@ -322,7 +322,9 @@ std::optional<Solution> Search::retry(const std::vector<smt::Skeleton>& skeleton
 // shortest: the refinement only sees its own elbow sign and base region, and
 // the other branch can need much shorter links (on tasks/rose.json, 0.54 m
 // against 0.97 m). Each other elbow sign and base region gets one initial
-// guess; a fixed amount of work, so that solutions stay repeatable.
+// guess; a fixed amount of work, so that solutions stay repeatable, unless
+// the region cannot hold a robot shorter by more than shorten_gap (a proved
+// bound) or the time left would not cover the attempt.
 Solution Search::shorten(const smt::Skeleton& found, Solution best) {
     std::string best_by = stats_.certified_by;
     for (int region : task::base_region_choices(task_)) {
