@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/nlp/block_ldl.h>
 #include <modsynth/nlp/warm_start.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -271,13 +272,29 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
             o.SetNumericValue(push, options.warm_push);
         o.SetNumericValue("mu_init", options.warm_mu);
     }
+    static const bool block_ldl_loaded = ldl::serves_as_ma27();
+    const bool block_ldl =
+        options.linear_solver == SolverOptions::LinearSolver::BlockLdl && block_ldl_loaded;
+    if (block_ldl) {
+        o.SetStringValue("linear_solver", "ma27");
+        // MC19, the scaling Ipopt pairs with MA27, is not in the library.
+        o.SetStringValue("linear_system_scaling", "none");
+    }
+    auto with_mumps = [&] {
+        SolverOptions fallback = options;
+        fallback.linear_solver = SolverOptions::LinearSolver::Mumps;
+        return minimize(program, fallback, warm);
+    };
     // An empty name: never read ./ipopt.opt, which would override these silently.
     if (app->Initialize("") != Ipopt::Solve_Succeeded) {
+        if (block_ldl) return with_mumps();
         SolverResult failed;
         failed.message = "Ipopt failed to initialise";
         return failed;
     }
     const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(nlp);
+    // An Ipopt built without the MA27 loader refuses the option.
+    if (block_ldl && status == Ipopt::Invalid_Option) return with_mumps();
     SolverResult result = nlp->result;
     if (!nlp->stopped.empty()) {
         result.status = SolverResult::Status::Failed;

@@ -46,6 +46,11 @@ struct SolverOptions {
     double warm_mu = 1e-3;
     /// Ipopt's print_level, 0 (silent) to 12.
     int print_level = 0;
+    /// What factorizes Ipopt's KKT systems: modsynth's block LDLᵀ
+    /// (nlp/block_ldl.h, which Ipopt loads as MA27), or Ipopt's MUMPS. The
+    /// block LDLᵀ gives way to MUMPS where Ipopt cannot load it.
+    enum class LinearSolver { BlockLdl, Mumps };
+    LinearSolver linear_solver = LinearSolver::BlockLdl;
     /// On failure, how many of the most violated constraints (at the last
     /// iterate) SolverResult::message names.
     int reported_violations = 3;
