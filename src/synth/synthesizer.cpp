@@ -301,6 +301,13 @@ Solution Search::timed(Solution solution) {
 // (its best one was tried already); later passes, further seeds. The seeds
 // follow from the pass, so solutions stay repeatable.
 std::optional<Solution> Search::retry(const std::vector<smt::Skeleton>& skeletons) {
+    // However many passes the time allows, the explanation says it once.
+    unsigned retries = 0;
+    auto note_retries = [&] {
+        if (retries > 0)
+            tried_.push_back(
+                text::format("every skeleton retried %u time(s) with other seeds", retries));
+    };
     for (unsigned pass = 0; remaining() > 0.0; ++pass) {
         const unsigned seed = opt_.seed + 1000003u * pass;
         for (const smt::Skeleton& sk : skeletons) {
@@ -310,11 +317,14 @@ std::optional<Solution> Search::retry(const std::vector<smt::Skeleton>& skeleton
                                          sk.dof, sk.elbow, sk.base_region)
                           : text::format("%d joints: retry %u, elbow %+d, base region %d", sk.dof,
                                          pass, sk.elbow, sk.base_region));
-            if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton, seed))
+            if (auto found = try_skeleton(sk, opt_.guesses_per_skeleton, seed)) {
+                note_retries();
                 return shorten(sk, std::move(*found));
+            }
         }
-        if (pass > 0) tried_.push_back(text::format("retry %u of every skeleton", pass));
+        if (pass > 0) ++retries;
     }
+    note_retries();
     return std::nullopt;
 }
 

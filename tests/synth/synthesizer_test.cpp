@@ -247,6 +247,11 @@ TEST_CASE("a search that finds nothing goes on to its time limit and never repea
     CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
         return l.find("retry 1,") != std::string::npos;
     }));
+    // The explanation names the retries once, however many there were.
+    const std::string& why = s.explanation.message;
+    CHECK(why.find("every skeleton retried") != std::string::npos);
+    CHECK(why.find("every skeleton retried") == why.rfind("every skeleton retried"));
+    CHECK(why.size() < 1000);
     // Each start is refined once per skeleton: a line "start: ..." never
     // comes twice after the same skeleton (elbow sign and base region).
     std::set<std::pair<std::string, std::string>> starts;
