@@ -52,13 +52,6 @@ struct OrderView {
 // Layout of the factor: n, number of blocks, stored blocks of L, then the
 // row at each position, where each block starts, where each block column
 // of L starts, and the block row of each stored block of L.
-struct IntsView {
-    int n, blocks, stored;
-    const int* row_at;
-    const int* start;
-    const int* lp;
-    const int* li;
-};
 constexpr std::size_t kHeader = 3;
 std::size_t ints_needed(int n, int blocks, long stored) {
     return kHeader + n + 2 * static_cast<std::size_t>(blocks + 1) + stored;
@@ -68,7 +61,9 @@ std::size_t reals_needed(int blocks, long stored) {
 }
 
 // Scratch reused across calls: sized by the matrix, holding nothing a later
-// call depends on.
+// call depends on. Each function binds it once as `s`: a thread_local in a
+// shared library costs a __tls_get_addr call per access, which showed in
+// the inner loops.
 struct Scratch {
     std::vector<int> position, block_of, start;
     std::vector<int> cp, ci, cslot;
@@ -79,7 +74,7 @@ struct Scratch {
     std::vector<double> diagonal, row_max, adj_value;
     std::vector<int> adj_start, adj, owner, seen, via, queue, super, first, second;
 };
-thread_local Scratch s;
+thread_local Scratch scratch;
 
 int index_of(const SymmetricTriplets& m, std::span<const int> v, std::size_t t) {
     return v[t] - m.base;
@@ -95,6 +90,7 @@ bool indices_valid(const SymmetricTriplets& m) {
 
 // Block structure of the order: block of each position and block starts.
 int block_structure(OrderView order) {
+    Scratch& s = scratch;
     const int n = order.n;
     s.block_of.resize(n);
     s.start.clear();
@@ -111,6 +107,7 @@ int block_structure(OrderView order) {
 // The upper block triangle in block columns: for each entry its block row,
 // its slot in the 2×2 block (row * 2 + column), and its value.
 void upper_blocks(const SymmetricTriplets& m, int blocks) {
+    Scratch& s = scratch;
     const std::size_t nz = m.rows.size();
     s.cp.assign(blocks + 1, 0);
     s.ci.resize(nz);
@@ -144,6 +141,7 @@ void upper_blocks(const SymmetricTriplets& m, int blocks) {
 // Elimination tree of the blocks and the number of stored blocks in each
 // block column of L.
 long block_symbolic(int blocks) {
+    Scratch& s = scratch;
     s.parent.assign(blocks, -1);
     s.count.assign(blocks, 0);
     s.flag.assign(blocks, -1);
@@ -170,6 +168,7 @@ Workspace workspace_for(const SymmetricTriplets& m, OrderView order) {
 
 // Approximate minimum degree over groups of rows (a pair is one node).
 void amd_over_groups(const SymmetricTriplets& m, int groups, OrderView order) {
+    Scratch& s = scratch;
     std::vector<Eigen::Triplet<double, int>> entries;
     entries.reserve(m.rows.size() + groups);
     for (std::size_t t = 0; t < m.rows.size(); ++t)
@@ -193,6 +192,7 @@ void amd_over_groups(const SymmetricTriplets& m, int groups, OrderView order) {
 }
 
 void ungrouped(int n) {
+    Scratch& s = scratch;
     s.super.resize(n);
     s.first.resize(n);
     s.second.assign(n, -1);
@@ -201,6 +201,7 @@ void ungrouped(int n) {
 
 // Diagonal, largest off-diagonal entry per row and adjacency, from values.
 void read_rows(const SymmetricTriplets& m) {
+    Scratch& s = scratch;
     const int n = m.n;
     s.diagonal.assign(n, 0.0);
     s.row_max.assign(n, 0.0);
@@ -234,9 +235,9 @@ void read_rows(const SymmetricTriplets& m) {
 
 // An entry that can hold a pair together: not negligible in its row.
 constexpr double kPairEntry = 1e-3;
-bool pairs_with(int r, double entry) { return entry > kPairEntry * s.row_max[r]; }
+bool pairs_with(const Scratch& s, int r, double entry) { return entry > kPairEntry * s.row_max[r]; }
 
-bool negligible_diagonal(int r) {
+bool negligible_diagonal(const Scratch& s, int r) {
     return s.row_max[r] > 0.0 && std::fabs(s.diagonal[r]) <= kNegligibleDiagonal * s.row_max[r];
 }
 
@@ -244,18 +245,19 @@ bool negligible_diagonal(int r) {
 // rows of a proper diagonal, as a maximum matching (greedy by entry size,
 // then augmenting paths), then what is left with one another.
 void pair_rows(OrderView order) {
+    Scratch& s = scratch;
     const int n = order.n;
     s.owner.assign(n, -1);
     for (int r = 0; r < n; ++r) {
         order.partner(r) = kNoPartner;
-        if (!negligible_diagonal(r)) continue;
+        if (!negligible_diagonal(s, r)) continue;
         order.partner(r) = kUnmatched;
         int best = -1;
         double best_value = 0.0;
         for (int p = s.adj_start[r]; p < s.adj_start[r + 1]; ++p) {
             const int v = s.adj[p];
-            if (negligible_diagonal(v) || s.owner[v] >= 0 || s.adj_value[p] <= best_value ||
-                !pairs_with(r, s.adj_value[p]))
+            if (negligible_diagonal(s, v) || s.owner[v] >= 0 || s.adj_value[p] <= best_value ||
+                !pairs_with(s, r, s.adj_value[p]))
                 continue;
             best = v;
             best_value = s.adj_value[p];
@@ -275,7 +277,8 @@ void pair_rows(OrderView order) {
             const int r = s.queue[h];
             for (int p = s.adj_start[r]; p < s.adj_start[r + 1]; ++p) {
                 const int v = s.adj[p];
-                if (negligible_diagonal(v) || s.seen[v] == root || !pairs_with(r, s.adj_value[p]))
+                if (negligible_diagonal(s, v) || s.seen[v] == root ||
+                    !pairs_with(s, r, s.adj_value[p]))
                     continue;
                 s.seen[v] = root;
                 s.via[v] = r;
@@ -301,8 +304,8 @@ void pair_rows(OrderView order) {
         if (order.partner(r) != kUnmatched) continue;
         for (int p = s.adj_start[r]; p < s.adj_start[r + 1]; ++p) {
             const int v = s.adj[p];
-            if (v != r && order.partner(v) == kUnmatched && pairs_with(r, s.adj_value[p]) &&
-                pairs_with(v, s.adj_value[p])) {
+            if (v != r && order.partner(v) == kUnmatched && pairs_with(s, r, s.adj_value[p]) &&
+                pairs_with(s, v, s.adj_value[p])) {
                 order.partner(r) = v;
                 order.partner(v) = r;
                 break;
@@ -326,6 +329,7 @@ void pair_rows(OrderView order) {
 // anything), every negligible diagonal has its partner (or had none to
 // take) and every pair is adjacent in it.
 bool order_serves(OrderView order) {
+    Scratch& s = scratch;
     const int n = order.n;
     s.flag.assign(n, 0);
     for (int p = 0; p < n; ++p) {
@@ -341,7 +345,7 @@ bool order_serves(OrderView order) {
     }
     for (int r = 0; r < n; ++r) {
         const int mate = order.partner(r);
-        if (negligible_diagonal(r) && mate == kNoPartner) return false;
+        if (negligible_diagonal(s, r) && mate == kNoPartner) return false;
         if (mate >= 0 && order.partner(mate) != r) return false;
     }
     return true;
@@ -394,6 +398,7 @@ Block invert_pivot(const Block& d, int size, double tiny, double floor, int& neg
 
 Factorization numeric(const SymmetricTriplets& m, OrderView order, std::span<int> ints,
                       std::span<double> reals) {
+    Scratch& s = scratch;
     const int n = m.n;
     const int blocks = block_structure(order);
     upper_blocks(m, blocks);
@@ -490,6 +495,7 @@ Workspace choose_order(const SymmetricTriplets& pattern, std::span<int> order_sp
 
 Factorization factorize(const SymmetricTriplets& matrix, std::span<int> order_span,
                         std::span<int> ints, std::span<double> reals) {
+    Scratch& s = scratch;
     OrderView order{matrix.n, order_span};
     if (!indices_valid(matrix) || matrix.values.size() != matrix.rows.size() ||
         order_span.size() < order_size(matrix.n)) {
