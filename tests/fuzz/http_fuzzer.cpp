@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -55,6 +56,20 @@ void print_thread_stacks() {
     std::abort();
 }
 
+/// Each fuzzed POST /api/solve makes a job folder, and the fixture is never
+/// destroyed, so its jobs never remove theirs: they all go under one folder
+/// of this process's own, removed when it exits.
+void keep_scratch_in_own_folder() {
+    static std::string root =
+        (std::filesystem::temp_directory_path() / "modsynth-http-fuzz.XXXXXX").string();
+    if (!::mkdtemp(root.data())) fail("cannot make a scratch folder", {});
+    ::setenv("TMPDIR", root.c_str(), 1);
+    std::atexit([] {
+        std::error_code ignored;
+        std::filesystem::remove_all(root, ignored);
+    });
+}
+
 struct Fixture {
     std::unique_ptr<SolveJobs> jobs;
     std::unique_ptr<ConnectionServer> server;
@@ -62,6 +77,7 @@ struct Fixture {
     int port = 0;
 
     Fixture() {
+        keep_scratch_in_own_folder();
         JobLimits job_limits;
         job_limits.time_limit = 1.0;
         job_limits.grace = 0.5;
