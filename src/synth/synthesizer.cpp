@@ -21,6 +21,7 @@
 #include <modsynth/nlp/solver.h>
 #include <modsynth/nlp/warm_start.h>
 #include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/design_choice.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/obstacle_proof.h>
@@ -135,7 +136,7 @@ private:
     // verdict on its motion -> (certified solution | the next problem).
     std::optional<Solution> try_skeleton(const smt::Skeleton& skeleton, int guesses, unsigned seed);
     std::optional<Solution> retry(const std::vector<smt::Skeleton>& skeletons);
-    Solution shorten(const smt::Skeleton& found, Solution best);
+    Solution shorten(const smt::Skeleton& found, Solution first);
     double shortest_possible(int base_region, int dof);
     std::optional<Solution> refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
                                    SweptAttempt attempt);
@@ -334,12 +335,29 @@ std::optional<Solution> Search::retry(const std::vector<smt::Skeleton>& skeleton
 // against 0.97 m). Each other elbow sign and base region gets one initial
 // guess; a fixed amount of work, so that solutions stay repeatable, unless
 // the region cannot hold a robot shorter by more than shorten_gap (a proved
-// bound) or the time left would not cover the attempt.
-Solution Search::shorten(const smt::Skeleton& found, Solution best) {
-    std::string best_by = stats_.certified_by;
+// bound) or the time left would not cover the attempt. Of the certified
+// robots, the shortest is returned, or one as short to within length_tie
+// that passes farther from the obstacles.
+Solution Search::shorten(const smt::Skeleton& found, Solution first) {
+    struct Certified {
+        Solution solution;
+        std::string by;
+    };
+    std::vector<Certified> certified;
+    certified.push_back({std::move(first), stats_.certified_by});
+    double shortest = certified.front().solution.robot.total_length();
+    const auto chosen = [&] {
+        std::vector<DesignMerit> merits;
+        for (const Certified& c : certified)
+            merits.push_back(
+                {c.solution.robot.total_length(), c.solution.certificate.min_clearance});
+        Certified& c = certified[choose_design(merits, opt_.length_tie)];
+        stats_.certified_by = c.by;
+        return std::move(c.solution);
+    };
     for (int region : task::base_region_choices(task_)) {
         const double bound = shortest_possible(region, found.dof);
-        if (bound >= best.robot.total_length() - opt_.shorten_gap) {
+        if (bound >= shortest - opt_.shorten_gap) {
             say(text::format("%d joints: no robot with base region %d is shorter than %.4f m",
                              found.dof, region, bound));
             continue;
@@ -352,8 +370,7 @@ Solution Search::shorten(const smt::Skeleton& found, Solution best) {
             // robot already certified.
             if (remaining() < opt_.shorten_reserve * certified_seconds_ || remaining() <= 0.0) {
                 say(text::format("%d joints: no time left to look for a shorter robot", found.dof));
-                stats_.certified_by = best_by;
-                return best;
+                return chosen();
             }
             smt::Skeleton variant = found;
             variant.base_region = region;
@@ -361,16 +378,20 @@ Solution Search::shorten(const smt::Skeleton& found, Solution best) {
             say(text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof,
                              elbow, region));
             auto candidate = try_skeleton(variant, opt_.guesses_per_variant, opt_.seed);
-            if (candidate && candidate->robot.total_length() < best.robot.total_length() - 1e-6) {
-                say(text::format("    shorter: total length %.4f m",
-                                 candidate->robot.total_length()));
-                best = std::move(*candidate);
-                best_by = stats_.certified_by;
-            }
+            if (!candidate) continue;
+            const double length = candidate->robot.total_length();
+            if (length < shortest - 1e-6)
+                say(text::format("    shorter: total length %.4f m", length));
+            else if (length <= shortest + opt_.length_tie)
+                say(text::format("    as short, to within %.4f m: total length %.4f m",
+                                 opt_.length_tie, length));
+            else
+                continue;
+            shortest = std::min(shortest, length);
+            certified.push_back({std::move(*candidate), stats_.certified_by});
         }
     }
-    stats_.certified_by = best_by;
-    return best;
+    return chosen();
 }
 
 // A lower bound on the total link length of any robot of `dof` joints with
@@ -607,6 +628,7 @@ bool SynthesisOptions::IsValid(std::string* error) const {
         .at_least("guesses_per_skeleton", guesses_per_skeleton, 1)
         .at_least("guesses_per_variant", guesses_per_variant, 0)
         .at_least("shorten_gap", shorten_gap, 0.0)
+        .at_least("length_tie", length_tie, 0.0)
         .at_least("shorten_reserve", shorten_reserve, 0.0)
         .at_least("refinement_rounds", refinement_rounds, 1)
         .greater("first_solve_seconds", first_solve_seconds, 0.0)

@@ -194,6 +194,7 @@ TEST_CASE("synthesis options: defaults valid, each bad field named", "[options][
         {"SynthesisOptions::guesses_per_skeleton", [](O& o) { o.guesses_per_skeleton = 0; }},
         {"SynthesisOptions::guesses_per_variant", [](O& o) { o.guesses_per_variant = -1; }},
         {"SynthesisOptions::shorten_gap", [](O& o) { o.shorten_gap = -1e-3; }},
+        {"SynthesisOptions::length_tie", [](O& o) { o.length_tie = -1e-4; }},
         {"SynthesisOptions::shorten_reserve", [](O& o) { o.shorten_reserve = -1.0; }},
         {"SynthesisOptions::refinement_rounds", [](O& o) { o.refinement_rounds = 0; }},
         {"SynthesisOptions::first_solve_seconds", [](O& o) { o.first_solve_seconds = 0.0; }},

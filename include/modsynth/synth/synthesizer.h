@@ -75,6 +75,12 @@ struct SynthesisOptions {
     /// be the design that passes far from the obstacles (a 0.8 mm shorter
     /// robot with 147 mm of clearance instead of 3 mm).
     double shorten_gap = 0.0;
+    /// m: of the certified robots the search found, one at most this much
+    /// longer than the shortest is returned when it passes farther from the
+    /// obstacles by more than this (synth/design_choice.h): lengths that
+    /// close are the same to a builder, and the refinement's local optima
+    /// for either elbow of one base often differ by less.
+    double length_tie = 5e-4;
     /// A variant is started only while the time left is at least this many
     /// times what the refinement of the robot found took.
     double shorten_reserve = 2.0;

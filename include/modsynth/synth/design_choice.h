@@ -1,0 +1,25 @@
+#pragma once
+// Which of several certified robots for one task to return. Length is what
+// the search minimises, but two designs a fraction of a millimetre apart
+// are the same length to anyone building them, while one may pass 150 mm
+// from the obstacles and the other 3 mm: between those, clearance decides.
+#include <cstddef>
+#include <span>
+
+namespace modsynth::synth {
+
+/// A certified robot's figures of merit.
+struct DesignMerit {
+    double total_length = 0.0;  ///< m, sum of the link lengths
+    double clearance = 0.0;     ///< m, certified margin to the obstacles
+};
+
+/// The index of the design to return. Lengths or clearances closer than
+/// `tie` m count as equal: of the designs at most `tie` longer than the
+/// shortest, those with clearance within `tie` of the clearest among them
+/// are the candidates, and the shortest of those is returned (then the
+/// earlier). Measured from the shortest and the clearest, not from each
+/// other, so a chain of near-ties never drifts. `designs` must not be empty.
+std::size_t choose_design(std::span<const DesignMerit> designs, double tie);
+
+}  // namespace modsynth::synth

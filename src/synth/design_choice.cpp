@@ -1,0 +1,29 @@
+#include <modsynth/synth/design_choice.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace modsynth::synth {
+
+std::size_t choose_design(std::span<const DesignMerit> designs, double tie) {
+    if (designs.empty()) throw std::invalid_argument("choose_design: no design to choose from");
+    const auto shorter = [](const DesignMerit& a, const DesignMerit& b) {
+        return a.total_length < b.total_length;
+    };
+    const double longest =
+        std::min_element(designs.begin(), designs.end(), shorter)->total_length + tie;
+    double clearest = -std::numeric_limits<double>::infinity();
+    for (const DesignMerit& d : designs)
+        if (d.total_length <= longest) clearest = std::max(clearest, d.clearance);
+    std::size_t chosen = designs.size();
+    for (std::size_t i = 0; i < designs.size(); ++i) {
+        const DesignMerit& d = designs[i];
+        // inf - tie == inf: among designs that meet no obstacle, length decides.
+        if (d.total_length > longest || d.clearance < clearest - tie) continue;
+        if (chosen == designs.size() || shorter(d, designs[chosen])) chosen = i;
+    }
+    return chosen;
+}
+
+}  // namespace modsynth::synth
