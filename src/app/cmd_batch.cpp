@@ -304,7 +304,7 @@ Command add_batch(CLI::App& parent) {
     sub->add_option("--swept", a->run.swept, "passed to every solve (default auto)")
         ->check(CLI::IsMember({"auto", "app", "over", "lines"}));
     sub->add_option("--shorten-gap", a->run.shorten_gap,
-                    "passed to every solve (solve --shorten-gap; default 0)")
+                    "passed to every solve (solve --shorten-gap; default 0.0005)")
         ->check(within(0.0, 10.0));
     return {sub, [a] { return run_batch(*a); }};
 }

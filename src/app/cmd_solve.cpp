@@ -167,8 +167,8 @@ Command add_solve(CLI::App& parent) {
         ->check(CLI::IsMember({"auto", "app", "over", "lines"}));
     sub->add_option("--shorten-gap", a->shorten_gap,
                     "m: after the first certified robot, other elbow signs and base regions are "
-                    "tried only where a robot more than this shorter could exist (default 0: "
-                    "wherever any shorter one could)")
+                    "refined only where a robot more than this shorter could exist (0: "
+                    "wherever any shorter one could; default 0.0005)")
         ->check(within(0.0, 10.0));
     sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");
     add_export_options(*sub, a->exports);

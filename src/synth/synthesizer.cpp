@@ -360,6 +360,18 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
         if (bound >= shortest - opt_.shorten_gap) {
             say(text::format("%d joints: no robot with base region %d is shorter than %.4f m",
                              found.dof, region, bound));
+            // The other elbow could then give a robot about as long that
+            // passes farther from the obstacles. The robot found, with the
+            // other elbow, is one such: it reaches the same points, and
+            // costs a verification, not a refinement.
+            if (region == found.base_region && certified.size() == 1 && remaining() > 0.0) {
+                kinematics::Robot other = certified.front().solution.robot;
+                other.elbow = -other.elbow;
+                say(text::format("%d joints: the same robot with elbow %+d?", found.dof,
+                                 other.elbow));
+                if (auto twin = judge(other).solution)
+                    certified.push_back({std::move(*twin), certified.front().by});
+            }
             continue;
         }
         for (int elbow : {1, -1}) {

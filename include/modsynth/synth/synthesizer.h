@@ -66,15 +66,15 @@ struct SynthesisOptions {
     /// certified robot: a fixed amount of work, so solutions stay repeatable.
     int guesses_per_skeleton = 4;
     int guesses_per_variant = 1;
-    /// m: a variant is not tried when no robot with its base region can be
-    /// shorter than the one found by more than this. Every arm is at least
-    /// as long as its farthest reach from the best base of its region
-    /// (geometry/farthest_reach.h). At 0 a variant is left out only when
-    /// nothing in its region can be shorter at all: a wider gap saves time
-    /// on the variants that could gain less than it, but one of those may
-    /// be the design that passes far from the obstacles (a 0.8 mm shorter
-    /// robot with 147 mm of clearance instead of 3 mm).
-    double shorten_gap = 0.0;
+    /// m: a variant is not refined when no robot with its base region can
+    /// be shorter than the one found by more than this. Every arm is at
+    /// least as long as its farthest reach from the best base of its region
+    /// (geometry/farthest_reach.h). Such a variant could at best tie
+    /// (length_tie) with more clearance; in the robot's own region the robot
+    /// found with the other elbow is verified instead, which costs a
+    /// verification. A gap wider than length_tie would leave out robots that
+    /// are shorter by more than a tie.
+    double shorten_gap = 5e-4;
     /// m: of the certified robots the search found, one at most this much
     /// longer than the shortest is returned when it passes farther from the
     /// obstacles by more than this (synth/design_choice.h): lengths that
