@@ -11,6 +11,7 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/obstacle_proof.h>
+#include <modsynth/synth/reach_proof.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/synth/wall_changes.h>
 #include <modsynth/task/strokes.h>
@@ -154,6 +155,13 @@ std::vector<std::string> common_core(const task::Task& task,
 InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
     InfeasibilityProof proof;
     const Clock::time_point deadline = after(time_limit);
+    // The same proofs, in the same order, as solve's: both name one core.
+    if (auto core = out_of_reach_core(task)) {
+        proof.proved = true;
+        proof.message = describe_conflict(task, *core);
+        proof.core = std::move(*core);
+        return proof;
+    }
     std::optional<ObstacleProof> obstacles = prove_obstacle_infeasible(task);
     if (!obstacles) {
         // explain has the time to shrink the proof's obstacles to a minimal core.

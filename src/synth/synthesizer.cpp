@@ -25,6 +25,7 @@
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/obstacle_proof.h>
+#include <modsynth/synth/reach_proof.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 #include <modsynth/verify/verifier.h>
@@ -165,9 +166,17 @@ private:
 Solution Search::run() {
     Solution out;
     out.task_name = task_.name;
-    // Walls and detours first: exact geometry in milliseconds, where the
-    // front stage could only search.
+    // Reach, walls and detours first: exact geometry in milliseconds, where
+    // the front stage could only search.
     const auto t_walls = Clock::now();
+    if (auto core = out_of_reach_core(task_)) {
+        stats_.front_seconds += seconds_since(t_walls);
+        out.status = Status::Infeasible;
+        out.explanation.message = "Proved infeasible: " + describe_conflict(task_, *core);
+        out.explanation.core = std::move(*core);
+        say("reach: " + out.explanation.message);
+        return out;
+    }
     std::optional<ObstacleProof> proof = prove_obstacle_infeasible(task_);
     if (!proof) {
         // Two joints only: a branch and bound over the designs settles what

@@ -8,6 +8,7 @@
 
 #include <modsynth/geometry/farthest_reach.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/synth/reach_proof.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/verify/verifier.h>
 
@@ -142,10 +143,12 @@ TEST_CASE("the shortening pass skips the variants that cannot be shorter", "[syn
 TEST_CASE("a long path out of reach is proved infeasible well within a 10 s limit",
           "[synth][slow]") {
     // 640 segments round a ring of radius about 0.5 m about a base region at
-    // its centre, arms of at most 3 x 0.15 m. Minimising the 2-joint core
-    // tries the conflict without each of its parts; such a trial is
-    // satisfiable, and Z3 could take its whole 10 s timeout on each, leaving
-    // no time for 3 joints (the answer was unknown).
+    // its centre, arms of at most 3 x 0.15 m. Each segment alone is within
+    // reach of the region's side nearest to it (the region is 0.16 m wide),
+    // so no single-primitive proof holds: the front stage proves it.
+    // Minimising the 2-joint core tries the conflict without each of its
+    // parts; such a trial is satisfiable, and Z3 could take its whole 10 s
+    // timeout on each, leaving no time for 3 joints (the answer was unknown).
     task::Task t;
     t.name = "ring";
     constexpr int n = 640;
@@ -154,9 +157,10 @@ TEST_CASE("a long path out of reach is proved infeasible well within a 10 s limi
         return geometry::Vec2(0.5 * std::cos(a) + 0.02 * std::sin(7.0 * a), 0.5 * std::sin(a));
     };
     for (int k = 0; k < n; ++k) t.trajectory.push_back(geometry::make_line(at(k), at(k + 1)));
-    t.base_regions.push_back({geometry::Vec2(-0.05, -0.05), geometry::Vec2(0.05, 0.05)});
+    t.base_regions.push_back({geometry::Vec2(-0.08, -0.08), geometry::Vec2(0.08, 0.08)});
     t.robot.dof = {2, 3};
     t.robot.max_link_length = 0.15;
+    REQUIRE_FALSE(synth::out_of_reach_core(t));
     synth::SynthesisOptions options;
     options.time_limit = 10.0;
     const synth::Solution s = synth::synthesize(t, options);
