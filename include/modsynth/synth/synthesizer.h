@@ -38,11 +38,10 @@ struct SynthesisOptions {
     /// neither a wall nor a detour proves them infeasible. Its time_limit
     /// is further capped at branch_and_bound_share of the run's, and so is
     /// its core_time_limit: the core of a proof is shrunk within what the
-    /// proof leaves of that share.
-    /// A proof's core is shrunk until 1.5 s after the proof started, so
-    /// that a walled-in task is answered within 2 s in all (the shrinking
-    /// took every second it was given); `explain` shrinks a core with its
-    /// own, longer budget.
+    /// proof leaves of that share, and at most until 1.5 s after the proof
+    /// started, so that a walled-in task is answered within 2 s in all (the
+    /// shrinking took every second it was given). `explain` shrinks a core
+    /// with its own, longer budget.
     BranchAndBoundOptions branch_and_bound = [] {
         BranchAndBoundOptions o;
         o.core_time_limit = 0.75 * o.time_limit;
