@@ -293,10 +293,16 @@ struct FrontStage::Impl {
         const kinematics::ClearanceRule rule{task.robot.link_diameter};
         const double d2 = rule.self_distance() * rule.self_distance() - options.slack;
         const auto pts = sample_points(p, samples);
-        for (const auto& v : pts) {
-            const z3::expr dv = dist2(v);
+        // A line's closest point to the base is an end or the foot of the
+        // perpendicular, which the exact clause below covers: the inner
+        // atoms at its other samples would only repeat it, and each costs
+        // nlsat time (a fifth of a 40-line check).
+        const bool exact_closest = p.kind == geometry::PrimitiveKind::Line;
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            const z3::expr dv = dist2(pts[i]);
             require({name}, dv <= R * R + num(options.slack));
-            if (!kinematics::has_proximal_link(dof)) {
+            const bool end = i == 0 || i + 1 == pts.size();
+            if (!kinematics::has_proximal_link(dof) && (end || !exact_closest)) {
                 require({name}, dv + num(options.slack) >= (r[0] - r[1]) * (r[0] - r[1]), true);
                 require({name, diam}, dv >= num(d2), true);
             }
@@ -326,16 +332,25 @@ struct FrontStage::Impl {
                 true);
             require({name, diam}, outside || cr * cr >= num(d2 * l2), true);
         } else if (p.kind == geometry::PrimitiveKind::Circle) {
-            // Exact for a circle: farthest |b - c| + R, closest ||b - c| - R|.
-            z3::expr dc = ctx.real_const(("center_distance_" + std::to_string(j)).c_str());
-            fine.add(dc >= 0 && dc * dc == dist2(p.center));
-            const z3::expr rc = num(p.radius);
-            require({name}, dc + rc <= R + num(options.slack), true);
-            z3::expr inside = ctx.bool_const(("base_inside_" + std::to_string(j)).c_str());
-            fine.add(inside == (dc <= rc));
-            const z3::expr gap = z3::ite(inside, rc - dc, dc - rc) + num(options.slack);
-            require({name}, gap >= r[0] - r[1] && gap >= r[1] - r[0], true);
-            require({name, diam}, gap >= num(rule.self_distance() - options.slack), true);
+            // Exact for a circle of radius rc about c: the farthest point is
+            // |b - c| + rc away, the closest ||b - c| - rc|. Written in
+            // D = |b - c|^2 alone, without a variable for |b - c| and a
+            // Boolean for "inside": each such pair made nlsat's check of a
+            // 40-primitive path with 11 circles several times slower.
+            const z3::expr D = dist2(p.center);
+            const double rc = p.radius;
+            const z3::expr far = R + num(options.slack - rc);
+            require({name}, far >= 0 && D <= far * far, true);
+            // ||b - c| - rc| >= g, for g > 0: outside by g or inside by g.
+            const auto gap_at_least = [&](const z3::expr& g) {
+                return D >= (num(rc) + g) * (num(rc) + g) ||
+                       (g <= num(rc) && D <= (num(rc) - g) * (num(rc) - g));
+            };
+            const z3::expr e = r[0] - r[1];
+            for (const z3::expr& g : {e - num(options.slack), -e - num(options.slack)})
+                require({name}, g <= 0 || gap_at_least(g), true);
+            const double self = rule.self_distance() - 2 * options.slack;
+            if (self > 0) require({name, diam}, gap_at_least(num(self)), true);
         }
     }
 
@@ -372,6 +387,9 @@ struct FrontStage::Impl {
         model = solver.get_model();
         if (kinematics::has_proximal_link(dof) || !refined_level || expired())
             return Result::Sat;  // no refined families for these joint counts or this size
+        // Once a skeleton is blocked an unsat answer proves nothing, and the
+        // coarse model names the next skeleton as well.
+        if (blocked > 0 && !options.refine_after_block) return Result::Sat;
         set_timeout(fine, std::min(options.time_limit, options.refined_time_limit));
         const z3::check_result refined = fine.check(assumptions());
         if (refined == z3::unsat) {

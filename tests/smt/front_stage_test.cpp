@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <set>
 
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/io/task_io.h>
@@ -184,4 +186,33 @@ TEST_CASE("the refined level proves what reach alone cannot, and is skipped on l
     // The dump is the encoding actually checked: without the refined
     // families it is the shorter one.
     CHECK(coarse.smtlib().size() < full.smtlib().size());
+}
+
+TEST_CASE(
+    "the refined level's circle atoms: a circle through the base region is refuted, one "
+    "round it is not",
+    "[smt]") {
+    // Through the base region: the tip would have to pass over the base
+    // joint (the self-collision gap of the refined level). The circle
+    // starts 22.5 degrees past the base, so that its sampled points (every
+    // 45 degrees) stay 39 mm away, more than the gap: only the exact atoms
+    // see it.
+    const double a = geometry::kTau * 202.5 / 360.0;
+    task::Task through = testing::line_task();
+    through.trajectory = {
+        geometry::make_circle({0.1 + 0.1 * std::cos(a), 0.1 * std::sin(a)}, {0.1, 0.0}, true)};
+    through.base_regions = {{{-0.001, -0.001}, {0.001, 0.001}}};
+    FrontStage refuted(through, 2);
+    CHECK(refuted.check() == FrontStage::Result::Unsat);
+    const auto core = refuted.minimal_core();
+    CHECK(std::set<std::string>(core.begin(), core.end()) ==
+          std::set<std::string>{"trajectory[0]", "base_regions", "robot.link_diameter"});
+    // Round the base region, 0.3 m away: reached from inside, with the
+    // annulus of two links of about equal length.
+    task::Task round = through;
+    round.trajectory = {geometry::make_circle({0.3, 0.0}, {0.0, 0.0}, true)};
+    FrontStage reached(round, 2);
+    REQUIRE(reached.check() == FrontStage::Result::Sat);
+    const smt::Skeleton s = reached.skeleton();
+    CHECK(s.link_lengths[0] + s.link_lengths[1] >= 0.29);
 }

@@ -31,6 +31,11 @@ struct FrontStageOptions {
     /// that only the refined level proves infeasible answers unknown past
     /// this size.
     int refined_max_primitives = 150;
+    /// Whether checks after a skeleton was blocked run the refined level
+    /// too. Its unsat answer is then no proof, only the end of the
+    /// skeletons, and the coarse model names the next skeleton as well: a
+    /// second refined check cost 0.15 s on a 40-primitive path.
+    bool refine_after_block = false;
     /// Intervals sampled along each primitive for the reach atoms. More
     /// samples tighten the relaxation (every one is sound); 8 catch the
     /// far side of every arc of the shipped tasks.
