@@ -295,8 +295,7 @@ struct FrontStage::Impl {
         const auto pts = sample_points(p, samples);
         // A line's closest point to the base is an end or the foot of the
         // perpendicular, which the exact clause below covers: the inner
-        // atoms at its other samples would only repeat it, and each costs
-        // nlsat time (a fifth of a 40-line check).
+        // atoms at its other samples would only repeat it.
         const bool exact_closest = p.kind == geometry::PrimitiveKind::Line;
         for (std::size_t i = 0; i < pts.size(); ++i) {
             const z3::expr dv = dist2(pts[i]);
@@ -334,9 +333,8 @@ struct FrontStage::Impl {
         } else if (p.kind == geometry::PrimitiveKind::Circle) {
             // Exact for a circle of radius rc about c: the farthest point is
             // |b - c| + rc away, the closest ||b - c| - rc|. Written in
-            // D = |b - c|^2 alone, without a variable for |b - c| and a
-            // Boolean for "inside": each such pair made nlsat's check of a
-            // 40-primitive path with 11 circles several times slower.
+            // D = |b - c|^2 alone: no variable for |b - c| and no Boolean
+            // for "inside", which nlsat would have to decide per circle.
             const z3::expr D = dist2(p.center);
             const double rc = p.radius;
             const z3::expr far = R + num(options.slack - rc);
