@@ -375,7 +375,7 @@ std::string robot(const synth::Solution& s, const plot::Frame& f) {
 std::string reach_limit(const task::Task& task, const plot::Frame& f, const Core& core) {
     const std::string part = "robot.max_link_length";
     if (!in_core(core, part) || task.base_regions.empty()) return "";
-    const double reach = task.robot.dof.back() * task.robot.max_link_length;
+    const double reach = task.robot.longest_arm();
     const std::string r = n2(reach * f.scale);
     std::string out = "<g id=\"reach-limit\">\n";
     for (const auto& b : task.base_regions) {

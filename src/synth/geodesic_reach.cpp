@@ -296,11 +296,6 @@ bool box_free(const std::vector<NoGoDisc>& discs, const Vec2& lo, const Vec2& hi
     return true;
 }
 
-double reach(const task::Task& task) {
-    return *std::max_element(task.robot.dof.begin(), task.robot.dof.end()) *
-           task.robot.max_link_length;
-}
-
 }  // namespace
 
 struct GeodesicProver::Impl {
@@ -354,7 +349,7 @@ std::optional<GeodesicWitness> GeodesicProver::prove(const std::vector<int>& amo
         if (!gone[k]) discs.push_back(g.discs()[k]);
     for (const auto& r : task.base_regions)
         if (!box_free(discs, r.min, r.max)) return std::nullopt;
-    const double limit = reach(task);
+    const double limit = task.robot.longest_arm();
     const double margin = 1e-9 * (1.0 + limit);
     GeodesicWitness out;
     out.reach = limit;

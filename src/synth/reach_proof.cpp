@@ -10,8 +10,7 @@ namespace modsynth::synth {
 
 std::optional<std::vector<std::string>> out_of_reach_core(const task::Task& task) {
     if (task.base_regions.empty() || task.robot.dof.empty()) return std::nullopt;
-    const int most_links = *std::max_element(task.robot.dof.begin(), task.robot.dof.end());
-    const double longest_arm = most_links * task.robot.max_link_length;
+    const double longest_arm = task.robot.longest_arm();
     geometry::FarthestReachOptions options;
     options.tolerance = 1e-6;
     // Of the primitives out of reach, the one farthest out: the part a

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <modsynth/control/motion.h>
@@ -56,18 +55,6 @@ inline task::Task three_joint_task() {
     return t;
 }
 
-/// A sample without rates (the timing pass adds them).
-inline control::Sample sample_at(double t, control::Phase phase, int primitive, double s,
-                                 std::vector<double> q) {
-    control::Sample x;
-    x.t = t;
-    x.phase = phase;
-    x.primitive = primitive;
-    x.s = s;
-    x.q = std::move(q);
-    return x;
-}
-
 /// The distal pair's joint angles that put the EE at p with link 1 at q1.
 inline std::vector<double> three_joint_q(const kinematics::Robot& r, double q1,
                                          const geometry::Vec2& p) {
@@ -92,16 +79,15 @@ inline synth::Solution three_joint_solution(const task::Task& task) {
         const int steps = 40;
         for (int i = 0; i <= steps; ++i) {
             const double u = geometry::length(prim) * i / steps;
-            s.samples.push_back(
-                sample_at(t, control::Phase::Trace, j, u,
-                          three_joint_q(s.robot, q1[j], geometry::point_at(prim, u))));
+            s.samples.push_back({t, control::Phase::Trace, j, u,
+                                 three_joint_q(s.robot, q1[j], geometry::point_at(prim, u))});
             t += 0.05;
         }
         if (j == 1) break;
         for (int i = 1; i < 25; ++i) {  // link 1 turns, the EE holds still
             const double a = q1[0] + (q1[1] - q1[0]) * i / 25.0;
-            s.samples.push_back(sample_at(t, control::Phase::Transition, j, 0.0,
-                                          three_joint_q(s.robot, a, prim.end)));
+            s.samples.push_back(
+                {t, control::Phase::Transition, j, 0.0, three_joint_q(s.robot, a, prim.end)});
             t += 0.05;
         }
     }

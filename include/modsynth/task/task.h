@@ -1,6 +1,7 @@
 #pragma once
 // The task a user asks modsynth to solve (formats.md, modsynth-task/1), as
 // plain value types. A Task that exists has been validated.
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,11 @@ struct RobotSpec {
     double link_diameter = 0.03175;
     double min_link_length = 0.05;
     double max_link_length = 1.0;
+    /// m: the farthest any allowed arm reaches from its base, its most
+    /// joints times max_link_length (0 when no joint count is allowed).
+    double longest_arm() const {
+        return dof.empty() ? 0.0 : *std::max_element(dof.begin(), dof.end()) * max_link_length;
+    }
     /// The hardware the arm is built from (optional keys, used by the build
     /// sheet and the URDF only): actuator modules as boxes with the joint
     /// axis at the centre of the output end, module_width / 2 from that end;
