@@ -30,8 +30,10 @@ struct Sample {
     int stroke = 0;
     /// Joint rates (rad/s) and accelerations (rad/s^2), as long as q when
     /// the motion is timed for a controller, empty otherwise (formats.md,
-    /// "Timing a controller accepts").
-    std::vector<double> qd, qdd;
+    /// "Timing a controller accepts"). Braced, so that a sample written as
+    /// {t, phase, primitive, s, q, stroke} leaves them empty without a
+    /// missing-initializer warning.
+    std::vector<double> qd{}, qdd{};
 };
 
 /// The index in task.trajectory of the primitive a sample belongs to.
