@@ -364,6 +364,17 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
         stats_.certified_by = c.by;
         return std::move(c.solution);
     };
+    // A variant costs about what the robot found did, and a single Ipopt
+    // iteration on a long path can outlast what is left: one started too
+    // late would leave no time to time and write the robot already
+    // certified. A verification alone (the twin below) is held to the same
+    // reserve: on a 3000-primitive path it takes a third of a second.
+    const auto out_of_time = [&] {
+        if (remaining() >= opt_.shorten_reserve * certified_seconds_ && remaining() > 0.0)
+            return false;
+        say(text::format("%d joints: no time left to look for a shorter robot", found.dof));
+        return true;
+    };
     for (int region : task::base_region_choices(task_)) {
         const double bound = shortest_possible(region, found.dof);
         if (bound >= shortest - opt_.shorten_gap) {
@@ -373,7 +384,8 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
             // passes farther from the obstacles. The robot found, with the
             // other elbow, is one such: it reaches the same points, and
             // costs a verification, not a refinement.
-            if (region == found.base_region && certified.size() == 1 && remaining() > 0.0) {
+            if (region == found.base_region && certified.size() == 1) {
+                if (out_of_time()) return chosen();
                 kinematics::Robot other = certified.front().solution.robot;
                 other.elbow = -other.elbow;
                 say(text::format("%d joints: the same robot with elbow %+d?", found.dof,
@@ -385,14 +397,7 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
         }
         for (int elbow : {1, -1}) {
             if (region == found.base_region && elbow == found.elbow) continue;
-            // A variant costs about what the robot found did, and a single
-            // Ipopt iteration on a long path can outlast what is left: one
-            // started too late would leave no time to time and write the
-            // robot already certified.
-            if (remaining() < opt_.shorten_reserve * certified_seconds_ || remaining() <= 0.0) {
-                say(text::format("%d joints: no time left to look for a shorter robot", found.dof));
-                return chosen();
-            }
+            if (out_of_time()) return chosen();
             smt::Skeleton variant = found;
             variant.base_region = region;
             variant.elbow = elbow;
