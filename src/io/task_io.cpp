@@ -581,6 +581,20 @@ void check_format(const json& doc) {
     }
 }
 
+/// `"space": "plane"` (or no `space`) is the planar task; spatial tasks
+/// (`"3d"`, docs/formats.md "Spatial tasks") are not read yet and are refused
+/// by name rather than misread as planar.
+void check_space(const json& doc) {
+    const json* space = optional(doc, "space");
+    if (!space) return;
+    const std::string value = text(*space, "space", "\"plane\" or \"3d\"");
+    if (value == "plane") return;
+    if (value == "3d") {
+        throw InputError("space", "spatial tasks (\"space\": \"3d\") are not implemented yet");
+    }
+    throw InputError("space", "expected \"plane\" or \"3d\", got " + describe(*space));
+}
+
 /// Nothing can trace a path that runs through an obstacle, whatever the robot.
 void check_clearance(const Task& task) {
     for (std::size_t i = 0; i < task.obstacles.size(); ++i) {
@@ -631,6 +645,7 @@ Task parse_task(const json& doc) {
             "expected a JSON object {\"format\": \"modsynth-task/1\", ...}, got " + describe(doc));
     }
     check_format(doc);
+    check_space(doc);
     Task task;
     task.name = parse_name(doc);
     parse_path(doc, task);

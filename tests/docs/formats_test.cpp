@@ -238,6 +238,21 @@ TEST_CASE("docs/formats.md: the extensions not yet implemented behave as documen
         "trajectory": [{"type": "line", "start": [0.4, 0.1], "end": [0.5, 0.1]}]
     })");
 
+    SECTION("a spatial task is refused by name, a planar one with \"space\": \"plane\" read") {
+        json doc = task;
+        doc["space"] = "3d";
+        try {
+            parse_task(doc);
+            FAIL("a spatial task was read although spatial tasks are not implemented");
+        } catch (const InputError& e) {
+            CHECK(e.part() == "space");
+            CHECK(std::string(e.what()).find("not implemented yet") != std::string::npos);
+        }
+        doc["space"] = "plane";
+        CHECK(parse_task(doc).trajectory.size() == 1);
+        doc["space"] = "4d";
+        CHECK_THROWS_AS(parse_task(doc), InputError);
+    }
     SECTION("robot.joint_limits is not read") {
         json doc = task;
         doc["robot"] = {{"joint_limits", {{"velocity", 1.0}, {"acceleration", 2.0}}}};
