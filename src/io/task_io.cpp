@@ -581,16 +581,16 @@ void check_format(const json& doc) {
     }
 }
 
-/// `"space": "plane"` (or no `space`) is the planar task; spatial tasks
-/// (`"3d"`, docs/formats.md "Spatial tasks") are not read yet and are refused
-/// by name rather than misread as planar.
+/// `"space": "plane"` (or no `space`) is the planar task; a spatial task
+/// (`"3d"`, io/spatial_task_io.h) is refused by name rather than misread as
+/// planar, by callers that take planar tasks only.
 void check_space(const json& doc) {
     const json* space = optional(doc, "space");
     if (!space) return;
     const std::string value = text(*space, "space", "\"plane\" or \"3d\"");
     if (value == "plane") return;
     if (value == "3d") {
-        throw InputError("space", "spatial tasks (\"space\": \"3d\") are not implemented yet");
+        throw InputError("space", "spatial tasks (\"space\": \"3d\") are not supported here yet");
     }
     throw InputError("space", "expected \"plane\" or \"3d\", got " + describe(*space));
 }
