@@ -3,7 +3,9 @@
 #include <modsynth/control/joint_limits.h>
 #include <modsynth/control/motion.h>
 #include <modsynth/control/retime.h>
+#include <modsynth/control/spatial_samples.h>
 #include <modsynth/synth/synthesizer.h>
+#include <modsynth/verify/spatial_verifier.h>
 
 namespace modsynth::output {
 
@@ -25,6 +27,16 @@ std::string recertify(const task::Task& task, io::ParsedSolution& parsed) {
         s.samples = control::retime(std::move(s.samples), limits);
     // Figures recomputed from an unchanged motion are the stored ones, so
     // the report of a saved solution matches the one solve wrote.
+    return parsed.has_certificate ? ""
+                                  : "computed by export: the solution file carries no certificate";
+}
+
+std::string recertify(const task::SpatialTask& task, io::ParsedSolution& parsed) {
+    io::check_solution_fits(task, parsed.solution);
+    synth::Solution& s = parsed.solution;
+    if (s.status != synth::Status::Solved) return "";
+    control::recover_parameters(task, *s.dh_robot, s.samples);
+    s.certificate = verify::certify(task, *s.dh_robot, s.samples);
     return parsed.has_certificate ? ""
                                   : "computed by export: the solution file carries no certificate";
 }
