@@ -2,6 +2,7 @@
 
 #include <modsynth/drawing/import.h>
 #include <modsynth/io/input.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/text/printable.h>
 
@@ -14,9 +15,11 @@
 #include <optional>
 #include <regex>
 #include <sstream>
+#include <variant>
 
 #include "imported_task.h"
 #include "loopback.h"
+#include "planar_task.h"
 #include "solve_jobs.h"
 #include "stream_slots.h"
 #include "web_assets.h"
@@ -414,14 +417,18 @@ private:
         const auto doc = read_body(body, res);
         if (!doc) return;
         try {
-            const task::Task t = io::parse_task(*doc);
-            send_json(res, 200,
-                      {{"valid", true},
-                       {"name", t.name},
-                       {"primitives", t.trajectory.size()},
-                       {"obstacles", t.obstacles.size()},
-                       {"base_regions", t.base_regions.size()},
-                       {"errors", json::array()}});
+            // A spatial task is validated too; the editor shows it read-only.
+            std::visit(
+                [&](const auto& t) {
+                    send_json(res, 200,
+                              {{"valid", true},
+                               {"name", t.name},
+                               {"primitives", t.trajectory.size()},
+                               {"obstacles", t.obstacles.size()},
+                               {"base_regions", t.base_regions.size()},
+                               {"errors", json::array()}});
+                },
+                io::parse_task_document(*doc));
         } catch (const task::InputError& e) {
             send_json(res, 200,
                       {{"valid", false},
@@ -504,7 +511,7 @@ private:
         if (!doc) return;
         double time_limit = 0.0;
         try {
-            io::parse_task(*doc);
+            parse_planar_task(*doc, "serve");
             time_limit = query_number(req, "time_limit").value_or(0.0);
         } catch (const task::InputError& e) {
             send_error(res, e.part() == "time_limit" ? 400 : 422, e.what(), e.part());

@@ -14,6 +14,7 @@
 
 #include "command.h"
 #include "number_checks.h"
+#include "planar_task.h"
 #include "watchdog.h"
 
 namespace modsynth::app {
@@ -33,7 +34,7 @@ constexpr double kWatchdogMargin = 0.6;
 // there is none, and then the suggestions.
 int run_explain(const ExplainArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
-    const task::Task task = io::load_task(a.task);
+    const task::Task task = load_planar_task(a.task, "explain");
     const auto left = [&] {
         return a.time_limit -
                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

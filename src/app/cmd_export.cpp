@@ -10,6 +10,7 @@
 
 #include "command.h"
 #include "module_choice.h"
+#include "planar_task.h"
 
 namespace modsynth::app {
 namespace {
@@ -26,7 +27,7 @@ int run_export(const ExportArgs& a) {
                      "--joint-trajectory and/or --build-sheet\n");
         return kInvalid;
     }
-    const task::Task task = io::load_task(a.task);
+    const task::Task task = load_planar_task(a.task, "export");
     const std::optional<hardware::Catalog> catalog = catalog_for(task);
     io::ParsedSolution parsed = io::load_solution(a.solution);
     output::ReportFigures figures;

@@ -13,11 +13,13 @@
 #include <modsynth/drawing/svg_writer.h>
 #include <modsynth/io/atomic_file.h>
 #include <modsynth/io/input.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/task/input_error.h>
 
 #include "command.h"
 #include "imported_task.h"
+#include "planar_task.h"
 
 namespace modsynth::app {
 
@@ -98,6 +100,7 @@ int run_import(ImportArgs& a) {
 /// The primitives of each stroke of a task file (one for a trajectory).
 std::vector<drawing::Chain> task_strokes(const std::string& path) {
     const nlohmann::json doc = io::parse_json_text(io::read_input_file(path, "task"));
+    if (io::is_spatial(doc)) throw spatial_not_supported("export-svg");
     std::vector<drawing::Chain> out;
     if (doc.is_object() && doc.contains("strokes") && doc["strokes"].is_array()) {
         // Each stroke is read as the trajectory of a task of its own.

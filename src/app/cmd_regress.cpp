@@ -25,6 +25,7 @@
 
 #include "command.h"
 #include "number_checks.h"
+#include "planar_task.h"
 #include "solve_runner.h"
 #include "task_files.h"
 #include "temp_dir.h"
@@ -159,7 +160,7 @@ std::vector<Entry> discover(const RegressArgs& a) {
         e.task_path = path;
         e.key = key_of(path, a.tasks);
         try {
-            const task::Task t = io::load_task(path);
+            const task::Task t = load_planar_task(path, "regress");
             e.now.name = t.name;
             for (int dof : t.robot.dof) e.now.front.push_back(run_front(t, dof));
         } catch (const task::InputError& err) {

@@ -18,6 +18,7 @@
 #include "command.h"
 #include "module_choice.h"
 #include "number_checks.h"
+#include "planar_task.h"
 #include "watchdog.h"
 
 namespace modsynth::app {
@@ -77,7 +78,7 @@ constexpr double kWatchdogMargin = 0.6;
 
 int run_solve(const SolveArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
-    const task::Task task = io::load_task(a.task);
+    const task::Task task = load_planar_task(a.task, "solve");
     const std::optional<hardware::Catalog> catalog = catalog_for(task);
     const auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

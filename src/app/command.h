@@ -13,7 +13,15 @@
 
 namespace modsynth::app {
 
-enum Exit { kOk = 0, kInternal = 1, kInvalid = 2, kInfeasible = 3, kUnknown = 4 };
+/// kNotCertified: `certify` found the solution's motion not certified.
+enum Exit {
+    kOk = 0,
+    kInternal = 1,
+    kInvalid = 2,
+    kInfeasible = 3,
+    kUnknown = 4,
+    kNotCertified = 5
+};
 
 struct Command {
     CLI::App* app = nullptr;
@@ -25,6 +33,7 @@ Command add_solve(CLI::App& parent);
 Command add_batch(CLI::App& parent);
 Command add_regress(CLI::App& parent);
 Command add_export(CLI::App& parent);
+Command add_certify(CLI::App& parent);
 Command add_explain(CLI::App& parent);
 Command add_serve(CLI::App& parent);
 Command add_baseline(CLI::App& parent);
