@@ -21,6 +21,7 @@ BIN, ROOT = sys.argv[1], sys.argv[2]
 ROSE = os.path.join(ROOT, "tasks", "rose.json")
 OUT_OF_REACH = os.path.join(ROOT, "tasks", "infeasible", "out-of-reach.task.json")
 DISCONNECTED = os.path.join(ROOT, "tests", "fixtures", "invalid", "disconnected.json")
+SPATIAL = os.path.join(ROOT, "tests", "fixtures", "spatial", "s3-0001.task.json")
 # Runs to its time limit: for checks that act on a solve still running.
 SLOW = os.path.join(ROOT, "tests", "fixtures", "serve", "slow.task.json")
 JSON_TYPE = {"Content-Type": "application/json"}
@@ -207,6 +208,14 @@ def test_malformed_and_invalid():
         check(status == 422 and body.get("part") == "trajectory[1]", "an invalid task to solve: 422 with its part")
         status, _, body = s.json("POST", "/api/validate", read(ROSE), JSON_TYPE)
         check(status == 200 and body.get("valid") is True and body.get("primitives") == 7, "rose is valid")
+        # A spatial task is validated, and refused by name for solving.
+        spatial = read(SPATIAL)
+        status, _, body = s.json("POST", "/api/validate", spatial, JSON_TYPE)
+        check(status == 200 and body.get("valid") is True and body.get("primitives") == 1,
+              "a spatial task is valid: %s" % body)
+        status, _, body = s.json("POST", "/api/solve", spatial, JSON_TYPE)
+        check(status == 422 and body.get("part") == "space" and "not supported by serve yet" in
+              body.get("error", ""), "a spatial task to solve: 422 naming space: %s" % body)
         status, _, body = s.json("POST", "/api/validate", b"{}", {"Content-Type": "text/plain"})
         check(status == 415, "a body that is not application/json: 415 (%s)" % status)
         status, _, body = s.json("GET", "/api/info", headers={"Host": "attacker.example"})
