@@ -50,11 +50,13 @@ std::string curve(const Samples& s, const Pick& pick, std::size_t k, const Axes&
     return out;
 }
 
+/// `end`: the motion's duration, when `s` is drawn from its steps and ends
+/// before it.
 std::string chart(const char* id, const std::string& title, const Samples& s, const Pick& pick,
-                  const std::vector<double>* limits) {
+                  const std::vector<double>* limits, double end = 0.0) {
     const std::size_t dof = pick(s[0]).size();
     Axes a;
-    a.t_end = std::max(s.back().t, 1e-9);
+    a.t_end = std::max({s.back().t, end, 1e-9});
     a.lo = 1e300;
     a.hi = -1e300;
     for (const auto& x : s) {
@@ -89,7 +91,7 @@ std::string chart(const char* id, const std::string& title, const Samples& s, co
         out += "<text x=\"" + plot::n2(kLeft - 4.0) + "\" y=\"" + plot::n2(a.y(v) + 4.0) +
                "\" font-size=\"10\" text-anchor=\"end\">" + text::format("%.3g", v) + "</text>\n";
     out += "<text x=\"" + plot::n2(kWidth - kRight) + "\" y=\"" + plot::n2(kHeight - 8.0) +
-           "\" font-size=\"10\" text-anchor=\"end\">" + text::format("%.3f s", s.back().t) +
+           "\" font-size=\"10\" text-anchor=\"end\">" + text::format("%.3f s", a.t_end) +
            "</text>\n<text x=\"" + plot::n2(kLeft) + "\" y=\"" + plot::n2(kHeight - 8.0) +
            "\" font-size=\"10\">0 s</text>\n";
     for (std::size_t k = 0; k < dof; ++k) {
@@ -213,10 +215,11 @@ std::string section(const task::Task& task, const synth::Solution& solution) {
     const Samples jerk = jerk_points(s);
     if (!jerk.empty())
         out += chart("chart-jerk", "Joint jerks, change of qdd per step (rad/s\u00b3)", jerk, rate,
-                     limits && !limits->jerk.empty() ? &limits->jerk : nullptr);
+                     limits && !limits->jerk.empty() ? &limits->jerk : nullptr, s.back().t);
     const Samples tool = tool_speed_points(s);
     if (!tool.empty())
-        out += chart("chart-tool-speed", "Tool speed along the path (m/s)", tool, rate, nullptr);
+        out += chart("chart-tool-speed", "Tool speed along the path (m/s)", tool, rate, nullptr,
+                     s.back().t);
     return out + "</section>\n";
 }
 
