@@ -45,7 +45,9 @@ Path::Path(const std::vector<Sample>& s, const RetimeOptions& o,
         for (std::size_t k = 0; k < nj; ++k) d[k] = s[i + 1].q[k] - s[i].q[k];
         const double len = norm(d);
         length[i] = len;
-        if (len < o.still_length) {
+        // A step too long to measure (angles read from a file near the
+        // largest double) is timed as one from rest to rest, like a still one.
+        if (len < o.still_length || !std::isfinite(len)) {
             still[i] = 1;
             continue;
         }

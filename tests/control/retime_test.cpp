@@ -244,6 +244,19 @@ TEST_CASE("a 3-joint motion stops at both ends of its transition", "[control][re
     CHECK(stats.rests == 4);
 }
 
+TEST_CASE("a step too long to measure is timed from rest to rest", "[control][retime]") {
+    // Angles near the largest double, as a hostile file may hold: the
+    // step's length overflows, its time must not.
+    auto s = straight(0.2, 0.01);
+    s[10].q = {1e300, -1e300};
+    const JointLimits limits = control::default_joint_limits(2);
+    const auto timed = control::retime(s, limits);
+    for (const auto& x : timed) REQUIRE(std::isfinite(x.t));
+    CHECK(at_rest(timed[9]));
+    CHECK(at_rest(timed[10]));
+    CHECK(at_rest(timed[11]));
+}
+
 TEST_CASE("retime refuses bad limits and options", "[control][retime]") {
     const auto s = straight(0.1, 0.01);
     CHECK_THROWS_AS(control::retime(s, {{1.0, 0.0}, {1.0, 1.0}}), std::invalid_argument);
@@ -270,7 +283,7 @@ TEST_CASE("joint limits come from the task or the modules", "[control][retime]")
 
 TEST_CASE("a long motion is timed in one pass", "[control][retime]") {
     // 20 000 samples along a curve: a motion as long as the shipped tasks'.
-    // (How long retiming takes: scripts/bench --retime.)
+    // (How long retiming takes: the `timed:` line of solve, scripts/bench --motion.)
     std::vector<Sample> s;
     for (int i = 0; i <= 20000; ++i) {
         const double u = 0.0005 * i;
