@@ -137,6 +137,7 @@ json outcome_json(const SolveOutcome& o) {
     out["dof"] = o.dof ? json(*o.dof) : json(nullptr);
     out["total_link_length"] = o.total_link_length ? json(*o.total_link_length) : json(nullptr);
     out["clearance_margin"] = o.clearance_margin ? json(*o.clearance_margin) : json(nullptr);
+    out["motion_seconds"] = o.motion_seconds ? json(*o.motion_seconds) : json(nullptr);
     return out;
 }
 

@@ -116,6 +116,7 @@ nlohmann::ordered_json result_line(const std::string& path, const SolveOutcome& 
     line["dof"] = o.dof ? nlohmann::json(*o.dof) : nlohmann::json(nullptr);
     line["total_link_length"] = optional_json(o.total_link_length, 9);
     line["clearance_margin"] = optional_json(o.clearance_margin, 9);
+    line["motion_seconds"] = optional_json(o.motion_seconds, 3);
     if (!o.core.empty()) line["core"] = o.core;
     if (!o.message.empty() && o.status != synth::Status::Solved) line["message"] = o.message;
     if (o.signal != 0) line["signal"] = o.signal;

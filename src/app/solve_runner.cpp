@@ -97,6 +97,7 @@ void read_solution(const std::string& path, SolveOutcome& o) {
     if (s.status != synth::Status::Solved) return;
     o.dof = s.robot.dof();
     o.total_link_length = s.robot.total_length();
+    if (!s.samples.empty()) o.motion_seconds = s.samples.back().t - s.samples.front().t;
     if (parsed.has_certificate && std::isfinite(s.certificate.min_clearance))
         o.clearance_margin = s.certificate.min_clearance;
 }
