@@ -137,7 +137,7 @@ expect_error "$tmp/text.dxf" "TEXT"
 printf '0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n90\n200000000\n10\n0\n20\n0\n10\n1\n20\n1\n0\nENDSEC\n0\nEOF\n' >"$tmp/vertices.dxf"
 expect_error "$tmp/vertices.dxf" "LWPOLYLINE (line 10)" "group code 90 declares 200000000"
 printf '0\nSECTION\n2\nENTITIES\n0\nSPLINE\n8\n0\n71\n3\n72\n-5\n73\n4\n0\nENDSEC\n0\nEOF\n' >"$tmp/knots.dxf"
-expect_error "$tmp/knots.dxf" "SPLINE (line 12)" "group code 72 declares -5"
+expect_error "$tmp/knots.dxf" "SPLINE (line 12)" "group code 72 gives a count of -5: a count cannot be negative"
 echo 'x' >"$tmp/drawing.png"
 expect_error "$tmp/drawing.png" ".svg or .dxf"
 # A file beyond the size cap is refused before it is read.
