@@ -98,6 +98,16 @@ expect_exit 2 "export-svg of a bad stroke" "$bin" export-svg "$tmp/badstroke.jso
 expect_message "export-svg of a bad stroke" "strokes[1][0]"
 grep -qF "trajectory[0]" "$tmp/err" && fail "export-svg names trajectory[0] in a task of strokes: $(cat "$tmp/err")"
 
+# import checks the whole task once: a cap is named by its own part.
+python3 -c '
+import sys
+circles = "".join("<circle cx=\"%d\" cy=\"%d\" r=\"1\"/>" % (5 + (k % 40) * 5, 5 + (k // 40) * 5) for k in range(1001))
+open(sys.argv[1], "w").write("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"300mm\" height=\"300mm\" "
+    "viewBox=\"0 0 300 300\"><path d=\"M 250,250 L 290,290\"/><g id=\"obs\">" + circles + "</g></svg>")' "$tmp/obs.svg"
+expect_exit 2 "import 1001 obstacles" "$bin" import "$tmp/obs.svg" -o "$tmp/x.json" --obstacles-from obs
+expect_message "import 1001 obstacles" "obstacles: 1001 obstacles, more than the 1000 allowed"
+grep -qF "strokes[" "$tmp/err" && fail "import 1001 obstacles names a stroke: $(cat "$tmp/err")"
+
 # batch and regress on folders that link to themselves: every task once, a
 # bad entry one invalid row, no internal error.
 # Infeasible tasks (proved in milliseconds) keep the runs short.

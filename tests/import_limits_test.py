@@ -6,6 +6,7 @@ limit), never hanging or ballooning.
 
 usage: import_limits_test.py MODSYNTH SOURCE_DIR
 """
+import json
 import os
 import resource
 import subprocess
@@ -121,6 +122,52 @@ with tempfile.TemporaryDirectory() as tmp:
         if rss >= 500:
             fail("%s: peak RSS %.0f MB, 500 MB or more" % (name, rss))
     print("worst: %.2f s past the time limit, %.0f MB peak RSS" % (worst_wall, worst_rss))
+
+
+def timed(args):
+    start = time.monotonic()
+    p = subprocess.run([BIN] + args, capture_output=True, text=True, errors="replace", timeout=600)
+    return p.returncode, p.stderr, time.monotonic() - start
+
+
+# Linear, not quadratic: 5,000 strokes and 1,000 obstacles take about as
+# long to write as an SVG, and to import with their obstacles, as the task
+# takes to validate and the drawing to import without them (once 22 s
+# against 0.06 s, and 4.75 s against 0.17 s). Measured against each other,
+# so that a loaded machine slows both.
+with tempfile.TemporaryDirectory() as tmp:
+    strokes, entities = [], []
+    for i in range(5000):
+        x, y = 0.1 + (i % 100) * 0.004, 0.1 + (i // 100) * 0.004
+        strokes.append([{"type": "line", "start": [x, y], "end": [x + 0.002, y]}])
+        entities.append("0\nLINE\n8\n0\n10\n%g\n20\n%g\n11\n%g\n21\n%g\n" %
+                        (1000 * x, 1000 * y, 1000 * x + 2, 1000 * y))
+    circles = ["0\nCIRCLE\n8\nobs\n10\n%g\n20\n%g\n40\n2\n" % (-500 + (k % 40) * 10, 600 + (k // 40) * 10)
+               for k in range(1000)]
+    task = os.path.join(tmp, "strokes.json")
+    with open(task, "w") as f:
+        json.dump({"format": "modsynth-task/1", "name": "strokes", "strokes": strokes,
+                   "obstacles": [{"center": [-0.5 + (k % 40) * 0.01, 0.6 + (k // 40) * 0.01],
+                                  "radius": 0.002} for k in range(1000)]}, f)
+    code, err, validate = timed(["validate", task])
+    code_svg, err_svg, export = timed(["export-svg", task, "-o", os.path.join(tmp, "s.svg")])
+    print("5000 strokes, 1000 obstacles: validate %.2f s, export-svg %.2f s" % (validate, export))
+    if code != 0 or code_svg != 0:
+        fail("validate / export-svg of 5000 strokes: exit %s / %s: %s" % (code, code_svg, (err + err_svg)[:300]))
+    elif export > 5 * validate + 1:
+        fail("export-svg took %.2f s against validate's %.2f s" % (export, validate))
+    plain, with_obstacles = os.path.join(tmp, "plain.dxf"), os.path.join(tmp, "obstacles.dxf")
+    for path, items in [(plain, entities), (with_obstacles, entities + circles)]:
+        with open(path, "w") as f:
+            f.write(dxf("".join(items)))
+    code, err, alone = timed(["import", plain, "-o", os.path.join(tmp, "a.json"), "--keep-order"])
+    code_obs, err_obs, along = timed(["import", with_obstacles, "-o", os.path.join(tmp, "b.json"),
+                                      "--keep-order", "--obstacles-from", "obs"])
+    print("5000 strokes: import %.2f s, with 1000 obstacles %.2f s" % (alone, along))
+    if code != 0 or code_obs != 0:
+        fail("import of 5000 strokes: exit %s / %s: %s" % (code, code_obs, (err + err_obs)[:300]))
+    elif along > 4 * alone + 1:
+        fail("import with 1000 obstacles took %.2f s against %.2f s without" % (along, alone))
 
 print("%d failure(s)" % len(failures))
 sys.exit(1 if failures else 0)
