@@ -142,7 +142,7 @@ echo 'x' >"$tmp/drawing.png"
 expect_error "$tmp/drawing.png" ".svg or .dxf"
 # A file beyond the size cap is refused before it is read.
 head -c 17000000 /dev/zero | tr '\0' ' ' >"$tmp/big.svg"
-expect_error "$tmp/big.svg" "too large"
+expect_error "$tmp/big.svg" "17000000 bytes, more than the 16777216 allowed for a drawing file"
 # A tolerance so tight the drawing needs too many pieces: refused, no hang.
 timeout 60 "$bin" import "$root/tasks/drawings/sketch.svg" -o "$tmp/t.json" --tolerance 1e-9 --width 100 >"$tmp/out" 2>"$tmp/err"
 [ $? -eq 2 ] && grep -q "raise --tolerance" "$tmp/err" || fail "tolerance 1e-9: $(cat "$tmp/err")"

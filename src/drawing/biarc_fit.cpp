@@ -44,6 +44,12 @@ constexpr double kMinStretch = 1.0 / 4096;
 constexpr std::size_t kSplitsPerPiece = 4;
 constexpr std::size_t kSplitsSpare = 4096;
 
+/// Why a curve is refused when it needs more pieces than it may have: the
+/// pieces left for it of what the drawing may have.
+std::string too_many(std::size_t left) {
+    return "needs more than the " + std::to_string(left) + " primitives left for it";
+}
+
 /// The bounding box of samples of segments; size() is its diagonal.
 struct Extent {
     Vec2 min = Vec2::Constant(std::numeric_limits<double>::infinity());
@@ -214,8 +220,8 @@ struct Fitter {
         while (t < 1.0) {
             check_time();
             if (out.size() > max_primitives) {
-                throw InputError(source, "needs more than " + std::to_string(max_primitives) +
-                                             " primitives at this tolerance: raise --tolerance");
+                throw InputError(
+                    source, too_many(max_primitives) + " at this tolerance: raise --tolerance");
             }
             double dev = 0.0;
             if (auto whole = within(t, 1.0, dev)) {
@@ -251,8 +257,8 @@ struct Fitter {
     void fit(double t0, double t1, const Vec2& p0, const Vec2& tan0, const Vec2& p1,
              const Vec2& tan1, int depth) {
         if (out.size() > max_primitives) {
-            throw InputError(source, "needs more than " + std::to_string(max_primitives) +
-                                         " primitives at this tolerance: raise --tolerance");
+            throw InputError(source,
+                             too_many(max_primitives) + " at this tolerance: raise --tolerance");
         }
         if (++splits > kSplitsPerPiece * max_primitives + kSplitsSpare) {
             throw InputError(source,
@@ -421,8 +427,8 @@ FittedCurve fit_curve(const Curve& curve, double tolerance, std::size_t max_prim
         result.deviation = std::max(result.deviation, f.worst);
         pieces.insert(pieces.end(), fitted.begin(), fitted.end());
         if (pieces.size() > max_primitives) {
-            throw InputError(curve.source, "needs more than " + std::to_string(max_primitives) +
-                                               " primitives at this tolerance: raise --tolerance");
+            throw InputError(curve.source,
+                             too_many(max_primitives) + " at this tolerance: raise --tolerance");
         }
     }
     result.primitives = without_slivers(merged(pieces));

@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -74,6 +75,11 @@ public:
             throw InputError("(document)", "empty drawing: nothing to draw");
         drawing_.metres_per_unit = metres_per_insunit(insunits_);
         return std::move(drawing_);
+    }
+
+    /// Entities dxflib does not read at all, counted before it ran.
+    void add_unread(const std::map<std::string, int>& unread) {
+        for (const auto& [name, count] : unread) unsupported_[name] += count;
     }
 
     void setVariableInt(const std::string& key, int value, int) override {
@@ -171,6 +177,9 @@ public:
     void addSolid(const DL_SolidData&) override { unsupported("SOLID"); }
     void addMText(const DL_MTextData&) override { unsupported("MTEXT (explode text first)"); }
     void addText(const DL_TextData&) override { unsupported("TEXT (explode text first)"); }
+    void addAttribute(const DL_AttributeData&) override {
+        unsupported("ATTRIB (explode text first)");
+    }
     void addArcAlignedText(const DL_ArcAlignedTextData&) override { unsupported("ARCALIGNEDTEXT"); }
     void addDimAlign(const DL_DimensionData&, const DL_DimAlignedData&) override {
         unsupported("DIMENSION");
@@ -493,21 +502,40 @@ struct Context {
     }
 };
 
+/// What dxflib makes of an entity in the ENTITIES section; any other type
+/// it skips without a word, so the check below names it instead. VIEWPORT
+/// draws nothing of the drawing (it is a view of paper space).
+const std::set<std::string, std::less<>> kEntitiesRead = {
+    "LINE",   "ARC",    "CIRCLE", "ELLIPSE", "LWPOLYLINE", "POLYLINE",  "VERTEX",
+    "SEQEND", "SPLINE", "POINT",  "XLINE",   "RAY",        "INSERT",    "TRACE",
+    "3DFACE", "SOLID",  "MTEXT",  "TEXT",    "ATTRIB",     "DIMENSION", "LEADER",
+    "HATCH",  "IMAGE",  "ENDSEC", "EOF",     "SECTION",    "VIEWPORT"};
+
+struct CheckedGroups {
+    std::string text;  ///< the groups to hand dxflib
+    /// Entity types of the ENTITIES section that dxflib does not read, and
+    /// how many of each.
+    std::map<std::string, int> unread;
+};
+
 /// The file's groups as dxflib is to read them, after every check dxflib
 /// does not make: group codes are integers ("090" is 90), numbers are whole
 /// and finite numbers, declared counts fit in the file and match what
 /// follows, no line is longer than dxflib's buffer (its read loop never ends
 /// on one), and the file ends with EOF (one cut off inside an entity would
 /// lose that entity). Comments (999) are dropped, whatever their length.
-/// Every error names the entity and the line.
-std::string checked_groups(std::string_view text) {
+/// Entity names are written without the spaces around them, as dxflib
+/// compares them. Every error names the entity and the line.
+CheckedGroups checked_groups(std::string_view text) {
     const std::size_t total_lines = std::count(text.begin(), text.end(), '\n') + 1;
     const auto room = static_cast<long long>(total_lines / 2);
     constexpr std::size_t kLongestLine = DL_DXF_MAXLINE - 1;
     Lines lines(text);
-    std::string out;
+    CheckedGroups checked;
+    std::string& out = checked.text;
     out.reserve(text.size());
     Context context;
+    std::string section;
     bool started = false, in_section = false, section_named = false;
     while (const auto code_line = lines.next()) {
         const std::size_t code_number = lines.number();
@@ -568,6 +596,9 @@ std::string checked_groups(std::string_view text) {
                 in_section = section_named = true;
             } else if (name == "ENDSEC") {
                 in_section = false;
+                section.clear();
+            } else if (section == "ENTITIES" && !kEntitiesRead.count(name)) {
+                ++checked.unread[text::printable(name)];
             }
             context = Context{};
             context.name = text::printable(name);
@@ -575,18 +606,20 @@ std::string checked_groups(std::string_view text) {
             const auto counts = kCounts.find(name);
             if (counts != kCounts.end()) context.counts = &counts->second;
             out += "0\n";
-            out += value;
+            out += name;
             out += '\n';
             if (name == "EOF") {
                 if (in_section)
                     throw InputError(context.at(code_number),
                                      "the file ends inside a section (no ENDSEC)");
-                return out;
+                return checked;
             }
             continue;
         }
-        if (*code == 2 && section_named)
-            context.name = text::printable(trimmed(value)) + " section";
+        if (*code == 2 && section_named) {
+            section = trimmed(value);
+            context.name = text::printable(section) + " section";
+        }
         section_named = false;
         if (context.counts) {
             for (const DeclaredCount& c : *context.counts) {
@@ -624,8 +657,10 @@ Drawing read_dxf(std::string_view text, const ReadOptions& options) {
         throw InputError("(document)", "the file is larger than " +
                                            std::to_string(kMaxDrawingBytes >> 20) + " MB");
     }
-    std::stringstream stream{checked_groups(text)};
+    CheckedGroups checked = checked_groups(text);
+    std::stringstream stream{std::move(checked.text)};
     Collector collector(options);
+    collector.add_unread(checked.unread);
     DL_Dxf dxf;
     try {
         if (!dxf.in(stream, &collector)) throw InputError("(document)", "not a readable DXF file");

@@ -105,6 +105,11 @@ ImportResult import_drawing(std::string_view text, DrawingFormat format,
             check(start_point(placed.segments.back()), c.source);
             check(end_point(placed.segments.back()), c.source);
         }
+        if (total >= task::kMaxPrimitives) {
+            throw InputError(c.source, "the drawing needs more than " +
+                                           std::to_string(task::kMaxPrimitives) +
+                                           " primitives: raise --tolerance or simplify it");
+        }
         FittedCurve f =
             fit_curve(placed, options.tolerance, task::kMaxPrimitives - total, options.deadline);
         for (const geometry::Primitive& p : f.primitives) {

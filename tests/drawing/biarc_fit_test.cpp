@@ -92,3 +92,26 @@ TEST_CASE("fit: a curve of cusps everywhere ends, refused or fitted", "[drawing]
     const std::string m = message_of([&] { fit_curve({"zigzag", {b}}, 1e-9, 200); });
     CHECK_THAT(m, Catch::Contains("zigzag"));
 }
+
+TEST_CASE("import: a drawing past the primitives a task may have says so", "[drawing][fit]") {
+    std::string lines;
+    for (int i = 0; i < 5001; ++i)
+        lines += "<line x1=\"" + std::to_string(i % 90) + "\" y1=\"" + std::to_string(i / 90) +
+                 "\" x2=\"" + std::to_string(i % 90) + ".5\" y2=\"" + std::to_string(i / 90) +
+                 "\"/>";
+    const std::string text =
+        R"(<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100">)" +
+        lines + "</svg>";
+    ImportOptions o;
+    o.keep_order = true;
+    const std::string m = message_of([&] { import_drawing(text, DrawingFormat::Svg, o); });
+    CHECK_THAT(m, Catch::Contains("the drawing needs more than 5000 primitives"));
+    // A curve that alone needs more than are left is told how many were.
+    CHECK_THAT(message_of([] {
+                   fit_curve(
+                       {"path#w",
+                        {CubicBezier{Vec2(0, 0), Vec2(0.1, 0.3), Vec2(0.2, -0.3), Vec2(0.3, 0)}}},
+                       1e-9, 3);
+               }),
+               Catch::Contains("path#w: needs more than the 3 primitives left for it"));
+}

@@ -152,3 +152,20 @@ TEST_CASE("DXF: near-straight bulges import as lines", "[drawing][dxf]") {
         CHECK((r.strokes[0].back().end - Vec2(0.5, 0.0)).norm() <= 1e-9);
     }
 }
+
+TEST_CASE("DXF: entities dxflib does not know are named, not skipped", "[drawing][dxf]") {
+    // dxflib skips an entity type it does not know without a word.
+    const std::string text = dxf(kLine + "0\nREGION\n8\n0\n0\nREGION\n8\n0\n0\n3DSOLID\n8\n0\n" +
+                                 "0\nATTDEF\n8\n0\n0\nVIEWPORT\n8\n0\n");
+    CHECK_THAT(message_of([&] { read_dxf(text); }),
+               Catch::Contains("entities that cannot be drawn: 3DSOLID, ATTDEF, REGION (2x)"));
+    // Inside a block they are the block's (drawn only where inserted).
+    const std::string block =
+        "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n8\n0\n2\nB\n0\nREGION\n8\n0\n0\nENDBLK\n8\n0\n0\nENDSEC"
+        "\n";
+    std::string blocks_first = dxf(kLine);
+    blocks_first.insert(blocks_first.find("0\nSECTION\n2\nENTITIES"), block);
+    CHECK(read_dxf(blocks_first).curves.size() == 1);
+    // An entity's name with spaces around it is the entity.
+    CHECK(read_dxf(dxf("0\n LINE \n8\n0\n10\n0\n20\n0\n11\n100\n21\n0\n")).curves.size() == 1);
+}
