@@ -677,14 +677,7 @@ Task parse_task_text(std::string_view text) {
 }
 
 Task load_task(const std::string& path) {
-    // Checked before reading, so that a huge file is not loaded at all.
-    std::error_code ec;
-    const auto bytes = std::filesystem::file_size(path, ec);
-    if (!ec && bytes > kMaxTaskBytes) {
-        throw InputError(path, std::to_string(bytes) + " bytes, more than the " +
-                                   std::to_string(kMaxTaskBytes) + " allowed for a task file");
-    }
-    Task task = parse_task_text(read_input_file(path, "task"));
+    Task task = parse_task_text(read_input_file(path, "task", kMaxTaskBytes));
     if (task.name.empty()) task.name = std::filesystem::path(path).stem().string();
     return task;
 }

@@ -283,9 +283,10 @@ Solution Search::run() {
     out.status =
         Status(Status::Unknown, stage_,
                out_of_time ? "time limit" : "every joint count tried without a certified robot");
-    out.explanation.message = "No certified robot found" +
-                              std::string(out_of_time ? " within the time limit" : "") + ": " +
-                              join(tried_, "; ") + ".";
+    out.explanation.message =
+        "No certified robot found" + std::string(out_of_time ? " within the time limit" : "") +
+        (tried_.empty() ? std::string(": the time ran out before any robot was tried.")
+                        : ": " + join(tried_, "; ") + ".");
     for (const auto& c : cores)
         for (const auto& part : c)
             if (std::find(out.explanation.core.begin(), out.explanation.core.end(), part) ==
