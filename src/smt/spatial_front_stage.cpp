@@ -331,9 +331,9 @@ std::vector<SpatialSkeleton> SpatialFrontStage::skeletons(int limit) {
         for (int r = 0; r < regions && static_cast<int>(out.size()) < limit; ++r) {
             if (m.expired()) return out;
             z3::expr_vector a = m.assumptions();
-            a.push_back(column > 0 ? m.up : column < 0 ? m.down : m.none);
-            for (const z3::expr& other : {m.up, m.down, m.none})
-                if (!z3::eq(other, a.back())) a.push_back(!other);
+            const z3::expr chosen = column > 0 ? m.up : column < 0 ? m.down : m.none;
+            for (const z3::expr& sign : {m.up, m.down, m.none})
+                a.push_back(z3::eq(sign, chosen) ? sign : !sign);
             if (!m.pattern_regions.empty()) a.push_back(m.pattern_regions[static_cast<std::size_t>(r)]);
             m.set_timeout(m.pattern, m.options.time_limit);
             if (m.pattern.check(a) != z3::sat) continue;

@@ -184,9 +184,11 @@ Solution Search::run() {
                              "robot.twists");
             continue;
         }
+        const double relaxed = seconds_since(t0);
         std::vector<smt::SpatialSkeleton> skeletons = front.skeletons();
         stats_.front_seconds += seconds_since(t0);
-        say(text::format("%d joints: %zu skeleton(s)", dof, skeletons.size()));
+        say(text::format("%d joints: relaxation satisfiable (%.3f s), %zu skeleton(s) (%.3f s)",
+                         dof, relaxed, skeletons.size(), seconds_since(t0) - relaxed));
         if (skeletons.empty()) {
             tried_.push_back(std::to_string(dof) +
                              " joints: no skeleton of the yaw column and pitch links meets its "
