@@ -2,6 +2,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
@@ -18,6 +20,7 @@ namespace {
 struct ExportArgs {
     std::string task, solution;
     output::ExportPaths exports;
+    bool write_uncertified = false;
 };
 
 int run_export(const ExportArgs& a) {
@@ -37,10 +40,26 @@ int run_export(const ExportArgs& a) {
     if (was_solved && parsed.solution.status != synth::Status::Solved)
         std::fprintf(stderr, "error: %s\n", parsed.solution.explanation.message.c_str());
     const synth::Solution& s = parsed.solution;
-    if (s.status == synth::Status::Solved && !s.certificate.ok)
+    output::ExportPaths paths = a.exports;
+    std::vector<std::string> refused;
+    if (s.status == synth::Status::Solved && !s.certificate.ok) {
         std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),
                      output::uncertified_reason(s.certificate).c_str());
-    const auto skipped = output::write_exports(task, parsed.solution, a.exports, figures);
+        // A controller commands what these files say: a motion that fails
+        // verification is not handed to one unless the user says so.
+        if (!a.write_uncertified) {
+            for (auto [path, option] : {std::pair{&paths.csv, "--csv"},
+                                        std::pair{&paths.joint_trajectory, "--joint-trajectory"}}) {
+                if (path->empty()) continue;
+                refused.push_back(std::string(option) + " " + *path +
+                                  ": not written; the motion is not certified (give "
+                                  "--write-uncertified to write it anyway)");
+                path->clear();
+            }
+        }
+    }
+    auto skipped = output::write_exports(task, parsed.solution, paths, figures);
+    skipped.insert(skipped.end(), refused.begin(), refused.end());
     for (const auto& s : skipped) std::fprintf(stderr, "error: %s\n", s.c_str());
     return skipped.empty() ? kOk : kInvalid;
 }
@@ -67,6 +86,9 @@ Command add_export(CLI::App& parent) {
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file the solution is for")->required();
     sub->add_option("SOLUTION", a->solution, "modsynth-solution/1 JSON file")->required();
     add_export_options(*sub, a->exports);
+    sub->add_flag("--write-uncertified", a->write_uncertified,
+                  "write --csv and --joint-trajectory even for a motion that fails "
+                  "verification again (by default they are not written, and the exit code is 2)");
     return {sub, [a] { return run_export(*a); }};
 }
 

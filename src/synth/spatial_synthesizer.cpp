@@ -6,7 +6,7 @@
 #include <optional>
 #include <set>
 
-#include <modsynth/control/joint_limits.h>
+#include <modsynth/control/spatial_timing.h>
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/synth/design_choice.h>
@@ -57,22 +57,6 @@ void add_point(std::vector<nlp::SpatialPoint>& pts, const nlp::SpatialPoint& p) 
             std::abs(q.s - p.s) < 1e-4 && std::abs(q.t - p.t) < 1e-4)
             return;
     pts.push_back(p);
-}
-
-/// The joint limits a spatial motion is timed with: the task's, or the
-/// modules' defaults (as control::joint_limits_for does in the plane).
-control::JointLimits limits_for(const task::SpatialTask& task, int dof) {
-    if (!task.robot.joint_limits) return control::default_joint_limits(dof);
-    control::JointLimits l;
-    const auto& spec = *task.robot.joint_limits;
-    for (int k = 0; k < dof; ++k) {
-        l.velocity.push_back(spec.velocity.size() == 1 ? spec.velocity[0]
-                                                       : spec.velocity.at(static_cast<std::size_t>(k)));
-        l.acceleration.push_back(spec.acceleration.size() == 1
-                                     ? spec.acceleration[0]
-                                     : spec.acceleration.at(static_cast<std::size_t>(k)));
-    }
-    return l;
 }
 
 /// What planning and certifying one candidate design came to.
@@ -405,9 +389,10 @@ Verdict Search::judge(const kinematics::YawPitchDesign& design) {
 Solution Search::timed(Solution solution) {
     const auto t0 = Clock::now();
     control::RetimeStats timing;
-    solution.samples = control::retime(std::move(solution.samples),
-                                       limits_for(task_, solution.dh_robot->dof()), opt_.retime,
-                                       &timing);
+    solution.samples = control::retime_for(
+        task_, std::move(solution.samples),
+        control::joint_limits_for(task_, solution.dh_robot->dof()), opt_.retime, &timing);
+    stats_.timing = timing;
     say(text::format("timed: %.3f s of motion, %d rests, %d passes, in %.1f ms", timing.duration,
                      timing.rests, timing.passes, 1e3 * seconds_since(t0)));
     return solution;
