@@ -21,9 +21,9 @@ constexpr double kWatchdogMargin = 0.6;
 std::string chain_summary(const kinematics::DhChain& c) {
     std::string rows;
     for (const auto& r : c.rows)
-        rows += text::format(rows.empty() ? "(a %.4f, alpha %+.4f, d %.4f)"
-                                          : " (a %.4f, alpha %+.4f, d %.4f)",
-                             r.a, r.alpha, r.d);
+        rows += text::format(
+            rows.empty() ? "(a %.4f, alpha %+.4f, d %.4f)" : " (a %.4f, alpha %+.4f, d %.4f)", r.a,
+            r.alpha, r.d);
     return text::format("%d joints, base (%.4f, %.4f, %.4f), DH ", c.dof(), c.base.x(), c.base.y(),
                         c.base.z()) +
            rows + text::format(", chain %.4f m", c.total_length());

@@ -194,11 +194,11 @@ std::optional<std::vector<Sample>> plan_spatial_motion(const task::SpatialTask& 
             // The EE holds the join while the hand pitches sweep linearly to
             // the next primitive's.
             const std::size_t before = out.size();
-            const bool ok = walker.walk(
-                0.0, 1.0, 1.0, Phase::Transition, k - 1, stroke, &failed_at, &gave_up,
-                [&](double t, const std::vector<double>* prev) {
-                    return transition_configuration(task, design, j - 1, t, prev);
-                });
+            const bool ok =
+                walker.walk(0.0, 1.0, 1.0, Phase::Transition, k - 1, stroke, &failed_at, &gave_up,
+                            [&](double t, const std::vector<double>* prev) {
+                                return transition_configuration(task, design, j - 1, t, prev);
+                            });
             if (!ok) return fail(j - 1, true, failed_at);
             if (out.size() > before) out.pop_back();  // the last pose is the next trace's first
         } else if (j > 0 && k == 0) {
@@ -209,20 +209,23 @@ std::optional<std::vector<Sample>> plan_spatial_motion(const task::SpatialTask& 
             const std::vector<double> from = out.back().q;
             const int steps =
                 static_cast<int>(std::ceil(largest_change(from, *q) / options.max_joint_step));
-            const int last = task::stroke_last(task, stroke - 1) - task::stroke_first(task, stroke - 1);
+            const int last =
+                task::stroke_last(task, stroke - 1) - task::stroke_first(task, stroke - 1);
             for (int i = 1; i < steps; ++i)
                 out.push_back({0.0, Phase::Travel, last, 0.0,
                                lerp(from, *q, static_cast<double>(i) / steps), stroke - 1});
         }
-        if (!q) q = spatial_configuration_at(task, design, j, 0.0, out.empty() ? nullptr : &out.back().q);
+        if (!q)
+            q = spatial_configuration_at(task, design, j, 0.0,
+                                         out.empty() ? nullptr : &out.back().q);
         if (!q) return fail(j, false, 0.0);
         out.push_back({0.0, Phase::Trace, k, 0.0, *q, stroke});
         const double length = geometry::length(task.trajectory[static_cast<std::size_t>(j)]);
-        const bool ok = walker.walk(
-            0.0, length, options.max_ee_step, Phase::Trace, k, stroke, &failed_at, &gave_up,
-            [&](double s, const std::vector<double>* prev) {
-                return spatial_configuration_at(task, design, j, s, prev);
-            });
+        const bool ok =
+            walker.walk(0.0, length, options.max_ee_step, Phase::Trace, k, stroke, &failed_at,
+                        &gave_up, [&](double s, const std::vector<double>* prev) {
+                            return spatial_configuration_at(task, design, j, s, prev);
+                        });
         if (!ok) return fail(j, false, failed_at);
         out.back().s = length;  // exactly, as the verifier checks the end
     }
@@ -240,7 +243,8 @@ bool refine_spatial_motion(const task::SpatialTask& task, const kinematics::YawP
         if (a.phase == Phase::Travel || b.phase == Phase::Travel || a.stroke != b.stroke) {
             mid = Sample{a.t, Phase::Travel, a.primitive, 0.0, lerp(a.q, b.q, 0.5), a.stroke};
             if (a.phase != Phase::Travel) {  // the travel is tagged by the stroke it leaves
-                mid->primitive = task::stroke_last(task, a.stroke) - task::stroke_first(task, a.stroke);
+                mid->primitive =
+                    task::stroke_last(task, a.stroke) - task::stroke_first(task, a.stroke);
             }
         } else if (a.phase == Phase::Trace && b.phase == Phase::Trace &&
                    a.primitive == b.primitive) {

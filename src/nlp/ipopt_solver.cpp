@@ -316,7 +316,8 @@ SolverResult solve(const Program& program, const SolverOptions& options, const W
     o.SetNumericValue("max_cpu_time", std::max(0.01, options.time_limit));
     o.SetStringValue("mu_strategy", "adaptive");
     o.SetStringValue("honor_original_bounds", "yes");
-    if constexpr (!kExactHessian<Program>) o.SetStringValue("hessian_approximation", "limited-memory");
+    if constexpr (!kExactHessian<Program>)
+        o.SetStringValue("hessian_approximation", "limited-memory");
     if (warm) {
         // Close to a solution already: keep the point and its multipliers
         // nearly where they are, and start the barrier small.

@@ -200,7 +200,8 @@ void SpatialFormulation::Impl::build() {
     if (dof > 3) {
         for (int j = 0; j < m; ++j) {
             for (int h = 0; h < dof - 3; ++h) {
-                const auto& hp = d.pitches[static_cast<std::size_t>(j)][static_cast<std::size_t>(h)];
+                const auto& hp =
+                    d.pitches[static_cast<std::size_t>(j)][static_cast<std::size_t>(h)];
                 for (double v : {hp.start, hp.end}) {
                     lower.push_back(-4.0 * geometry::kPi);
                     upper.push_back(4.0 * geometry::kPi);
@@ -227,8 +228,8 @@ void SpatialFormulation::Impl::add_block(const SpatialPoint& point, const std::v
                                               : pitch_var(point.primitive, h);
             const int to = point.transition ? pitch_var(point.primitive + 1, h)
                                             : pitch_var(point.primitive, h) + 1;
-            b.pitch_locals.push_back({static_cast<int>(b.locals.size()),
-                                      static_cast<int>(b.locals.size()) + 1});
+            b.pitch_locals.push_back(
+                {static_cast<int>(b.locals.size()), static_cast<int>(b.locals.size()) + 1});
             b.locals.push_back(from);
             b.locals.push_back(to);
         }
@@ -280,25 +281,25 @@ std::vector<AD> SpatialFormulation::Impl::local_values(const Block& b, const dou
     const int n = static_cast<int>(b.locals.size());
     std::vector<AD> v;
     v.reserve(b.locals.size());
-    for (int i = 0; i < n; ++i)
-        v.emplace_back(x[b.locals[static_cast<std::size_t>(i)]], n, i);
+    for (int i = 0; i < n; ++i) v.emplace_back(x[b.locals[static_cast<std::size_t>(i)]], n, i);
     return v;
 }
 
 kinematics::YawPitchPose<AD> SpatialFormulation::Impl::pose(const Block& b,
-                                                           const std::vector<AD>& v) const {
+                                                            const std::vector<AD>& v) const {
     kinematics::YawPitchShape<AD> shape;
     shape.base = P3(v[0], v[1], v[2]);
     shape.column = has_column ? v[static_cast<std::size_t>(column_var)] : constant(0.0);
-    for (int k = 0; k < dof - 1; ++k) shape.links.push_back(v[static_cast<std::size_t>(first_link + k)]);
+    for (int k = 0; k < dof - 1; ++k)
+        shape.links.push_back(v[static_cast<std::size_t>(first_link + k)]);
     shape.column_twist = problem.start.arm.column_twist;
     std::vector<AD> pitches;
     for (const auto& [from, to] : b.pitch_locals)
         pitches.push_back(v[static_cast<std::size_t>(from)] +
                           (v[static_cast<std::size_t>(to)] - v[static_cast<std::size_t>(from)]) *
                               constant(b.fraction));
-    const auto& branch = problem.start.branches[static_cast<std::size_t>(
-        task::stroke_of(task, b.point.primitive))];
+    const auto& branch =
+        problem.start.branches[static_cast<std::size_t>(task::stroke_of(task, b.point.primitive))];
     return kinematics::yaw_pitch_pose(shape, constant(b.target), branch, pitches);
 }
 
@@ -468,7 +469,8 @@ std::vector<double> SpatialFormulation::variables(const kinematics::YawPitchDesi
     if (s.dof > 3)
         for (int j = 0; j < static_cast<int>(d.pitches.size()); ++j)
             for (int h = 0; h < s.dof - 3; ++h) {
-                const auto& hp = d.pitches[static_cast<std::size_t>(j)][static_cast<std::size_t>(h)];
+                const auto& hp =
+                    d.pitches[static_cast<std::size_t>(j)][static_cast<std::size_t>(h)];
                 x[static_cast<std::size_t>(s.pitch_var(j, h))] = hp.start;
                 x[static_cast<std::size_t>(s.pitch_var(j, h) + 1)] = hp.end;
             }

@@ -60,9 +60,9 @@ struct SpatialFrontStage::Impl {
     std::vector<z3::expr> pattern_regions;  // the pattern's
     z3::expr up, down, none;                // the pattern's column sign
     z3::expr bx, by, bz, column;
-    std::vector<z3::expr> links;  // a_2, a_3 and the hand's sum
+    std::vector<z3::expr> links;            // a_2, a_3 and the hand's sum
     std::vector<std::vector<Vec3>> points;  // sampled, per primitive
-    int column_twist = 0;  // +-1 when robot.twists allows the pattern
+    int column_twist = 0;                   // +-1 when robot.twists allows the pattern
     std::string unknown;
 
     Impl(const task::SpatialTask& t, int d, const SpatialFrontStageOptions& o)
@@ -81,20 +81,22 @@ struct SpatialFrontStage::Impl {
         set_timeout(relaxation, options.time_limit);
         set_timeout(pattern, options.time_limit);
         const int m = static_cast<int>(task.trajectory.size());
-        const int samples = std::clamp(options.encoded_points / std::max(1, m), 1,
-                                       options.samples_per_primitive);
+        const int samples =
+            std::clamp(options.encoded_points / std::max(1, m), 1, options.samples_per_primitive);
         for (const auto& p : task.trajectory) {
             std::vector<Vec3> v;
             const double len = geometry::length(p);
-            for (int i = 0; i <= samples; ++i) v.push_back(geometry::point_at(p, len * i / samples));
+            for (int i = 0; i <= samples; ++i)
+                v.push_back(geometry::point_at(p, len * i / samples));
             points.push_back(std::move(v));
         }
         const auto& tw = task.robot.twists;
-        const bool has_zero = std::any_of(tw.begin(), tw.end(), [](double a) { return is_angle(a, 0.0); });
+        const bool has_zero =
+            std::any_of(tw.begin(), tw.end(), [](double a) { return is_angle(a, 0.0); });
         for (int sign : {1, -1})
-            if (column_twist == 0 && has_zero &&
-                std::any_of(tw.begin(), tw.end(),
-                            [&](double a) { return std::abs(a - sign * geometry::kPi / 2) <= 1e-9; }))
+            if (column_twist == 0 && has_zero && std::any_of(tw.begin(), tw.end(), [&](double a) {
+                    return std::abs(a - sign * geometry::kPi / 2) <= 1e-9;
+                }))
                 column_twist = sign;
         encode_relaxation();
         if (column_twist != 0) encode_pattern();
@@ -176,9 +178,8 @@ struct SpatialFrontStage::Impl {
         // With every twist 0 or pi, every joint axis is vertical: the EE
         // stays at the base's height plus sum +-d_k.
         const auto& tw = task.robot.twists;
-        if (std::all_of(tw.begin(), tw.end(), [](double a) {
-                return is_angle(a, 0.0) || is_angle(a, geometry::kPi);
-            })) {
+        if (std::all_of(tw.begin(), tw.end(),
+                        [](double a) { return is_angle(a, 0.0) || is_angle(a, geometry::kPi); })) {
             const z3::expr h = ctx.real_const("ee_height");
             const double tol = options.height_tolerance + options.slack;
             for (std::size_t j = 0; j < points.size(); ++j) {
@@ -326,7 +327,8 @@ std::vector<SpatialSkeleton> SpatialFrontStage::skeletons(int limit) {
     Impl& m = *impl_;
     std::vector<SpatialSkeleton> out;
     if (m.column_twist == 0) return out;
-    const int regions = m.task.base_regions.empty() ? 1 : static_cast<int>(m.task.base_regions.size());
+    const int regions =
+        m.task.base_regions.empty() ? 1 : static_cast<int>(m.task.base_regions.size());
     for (int column : {1, -1, 0}) {
         for (int r = 0; r < regions && static_cast<int>(out.size()) < limit; ++r) {
             if (m.expired()) return out;
@@ -334,7 +336,8 @@ std::vector<SpatialSkeleton> SpatialFrontStage::skeletons(int limit) {
             const z3::expr chosen = column > 0 ? m.up : column < 0 ? m.down : m.none;
             for (const z3::expr& sign : {m.up, m.down, m.none})
                 a.push_back(z3::eq(sign, chosen) ? sign : !sign);
-            if (!m.pattern_regions.empty()) a.push_back(m.pattern_regions[static_cast<std::size_t>(r)]);
+            if (!m.pattern_regions.empty())
+                a.push_back(m.pattern_regions[static_cast<std::size_t>(r)]);
             m.set_timeout(m.pattern, m.options.time_limit);
             if (m.pattern.check(a) != z3::sat) continue;
             const z3::model model = m.pattern.get_model();

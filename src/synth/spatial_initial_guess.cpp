@@ -27,8 +27,8 @@ struct ScoringPoint {
 /// Points every `spacing` m (wider past max_points), per stroke, in an
 /// order that visits the path coarsely first, so that an unclear candidate
 /// is usually caught within its first few points.
-std::vector<std::vector<ScoringPoint>> scoring_points(const task::SpatialTask& task,
-                                                      double spacing, int max_points) {
+std::vector<std::vector<ScoringPoint>> scoring_points(const task::SpatialTask& task, double spacing,
+                                                      int max_points) {
     double total = 0.0;
     for (const auto& p : task.trajectory) total += geometry::length(p);
     spacing = std::max(spacing, total / std::max(1, max_points));
@@ -79,7 +79,8 @@ public:
                 worst = std::min(worst, geometry::segment_segment(a, b, c, e) - d - m_.self);
             }
             if (k + 1 < n)
-                worst = std::min(worst, geometry::point_segment(pose.points.back(), a, b) - d - m_.self);
+                worst = std::min(worst,
+                                 geometry::point_segment(pose.points.back(), a, b) - d - m_.self);
         }
         if (worst < cutoff || task_.obstacles.empty()) return worst;
         for (const auto& part :
@@ -87,7 +88,8 @@ public:
             const auto& [a, b] = segs[static_cast<std::size_t>(part.segment)];
             const Vec3 from = a + part.from * (b - a), to = a + part.to * (b - a);
             for (const auto& o : task_.obstacles) {
-                worst = std::min(worst, geometry::segment_gap(from, to, o) - d / 2.0 - m_.clearance);
+                worst =
+                    std::min(worst, geometry::segment_gap(from, to, o) - d / 2.0 - m_.clearance);
                 if (worst < cutoff) return worst;
             }
         }
@@ -196,7 +198,8 @@ double design_margin(const task::SpatialTask& task, const kinematics::YawPitchDe
     const auto strokes = scoring_points(task, spacing, max_points);
     double worst = kInf;
     for (std::size_t s = 0; s < strokes.size(); ++s)
-        worst = std::min(worst, stroke_margin(scorer, design, strokes[s], design.branches[s], -kInf));
+        worst =
+            std::min(worst, stroke_margin(scorer, design, strokes[s], design.branches[s], -kInf));
     return worst;
 }
 
@@ -215,7 +218,8 @@ std::vector<ScoredDesign> spatial_initial_guesses(const task::SpatialTask& task,
     std::vector<Vec3> probe;
     Vec3 pmin = Vec3::Constant(kInf), pmax = Vec3::Constant(-kInf);
     for (const auto& stroke : strokes)
-        for (std::size_t i = 0; i < stroke.size(); i += std::max<std::size_t>(1, stroke.size() / 48)) {
+        for (std::size_t i = 0; i < stroke.size();
+             i += std::max<std::size_t>(1, stroke.size() / 48)) {
             probe.push_back(stroke[i].p);
             pmin = pmin.cwiseMin(stroke[i].p);
             pmax = pmax.cwiseMax(stroke[i].p);
@@ -271,7 +275,8 @@ std::vector<ScoredDesign> spatial_initial_guesses(const task::SpatialTask& task,
         const double need = std::max(2.0 * lo, 1.01 * far - (hands > 0 ? u(rng) * hand : 0.0));
         const double sum = std::min(2.0 * hi, need + u(rng) * std::max(0.02, 0.5 * need));
         const double diff = (2.0 * u(rng) - 1.0) * std::max(0.0, 0.9 * (close + hand));
-        d.arm.links = {std::clamp(0.5 * (sum + diff), lo, hi), std::clamp(0.5 * (sum - diff), lo, hi)};
+        d.arm.links = {std::clamp(0.5 * (sum + diff), lo, hi),
+                       std::clamp(0.5 * (sum - diff), lo, hi)};
         for (double a : hand_links) d.arm.links.push_back(a);
         d.arm.links.back() = std::max(d.arm.links.back(), std::min(hi, spec.tool_length));
         drawn.push_back(std::move(d));
@@ -291,8 +296,10 @@ std::vector<ScoredDesign> spatial_initial_guesses(const task::SpatialTask& task,
             continue;
         // Below the worst of the unclear ones kept, a candidate is of no use.
         double cutoff = -kInf;
-        if (!clear.empty()) cutoff = 0.0;
-        else if (static_cast<int>(unclear.size()) >= count) cutoff = unclear.back().margin;
+        if (!clear.empty())
+            cutoff = 0.0;
+        else if (static_cast<int>(unclear.size()) >= count)
+            cutoff = unclear.back().margin;
         const double margin = choose_branches(task, scorer, d, strokes, pitch_grid, cutoff);
         if (margin >= 0.0) {
             clear.push_back({d, margin});

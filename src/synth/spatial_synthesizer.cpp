@@ -40,7 +40,10 @@ double chain_length(const kinematics::YawPitchArm& arm) {
 
 std::string describe(const smt::SpatialSkeleton& sk) {
     return text::format("%d joints, column %s, base region %d", sk.dof,
-                        sk.column > 0 ? "up" : sk.column < 0 ? "hanging" : "none", sk.base_region);
+                        sk.column > 0   ? "up"
+                        : sk.column < 0 ? "hanging"
+                                        : "none",
+                        sk.base_region);
 }
 
 std::string describe(const kinematics::YawPitchDesign& d) {
@@ -200,13 +203,15 @@ Solution Search::run() {
             Entry& e = entries[i];
             ++stats_.skeletons;
             const ScoredDesign& g = e.guesses[e.next++];
-            say(describe(e.skeleton) + text::format(": start %s, margin %.4f m",
-                                                    describe(g.design).c_str(), g.margin));
-            if (auto found = refine(e.skeleton, g)) return timed(shorten(entries, i, std::move(*found)));
+            say(describe(e.skeleton) +
+                text::format(": start %s, margin %.4f m", describe(g.design).c_str(), g.margin));
+            if (auto found = refine(e.skeleton, g))
+                return timed(shorten(entries, i, std::move(*found)));
         }
-        tried_.push_back(text::format("%d joints: %zu skeleton(s) refined without a certified "
-                                      "motion",
-                                      dof, entries.size()));
+        tried_.push_back(
+            text::format("%d joints: %zu skeleton(s) refined without a certified "
+                         "motion",
+                         dof, entries.size()));
         for (auto& e : entries) all.push_back(std::move(e));
     }
     // Later passes: more guesses of every skeleton, with further seeds, until
@@ -238,15 +243,16 @@ Solution Search::run() {
             for (const auto& part : c)
                 if (std::find(core.begin(), core.end(), part) == core.end()) core.push_back(part);
         out.explanation.core = core;
-        out.explanation.message = "Proved infeasible: no chain of " +
-                                  std::string(dofs.size() > 1 ? "any allowed joint count" : "the allowed joint count") +
-                                  " meets the conditions every chain must meet: " +
-                                  join(tried_, "; ") + ".";
+        out.explanation.message =
+            "Proved infeasible: no chain of " +
+            std::string(dofs.size() > 1 ? "any allowed joint count" : "the allowed joint count") +
+            " meets the conditions every chain must meet: " + join(tried_, "; ") + ".";
         return out;
     }
     const bool out_of_time = remaining() <= 0.0;
-    out.status = Status(Status::Unknown, stage_,
-                        out_of_time ? "time limit" : "every joint count tried without a certified robot");
+    out.status =
+        Status(Status::Unknown, stage_,
+               out_of_time ? "time limit" : "every joint count tried without a certified robot");
     out.explanation.message = "No certified robot found" +
                               std::string(out_of_time ? " within the time limit" : "") + ": " +
                               join(tried_, "; ") + ".";
@@ -297,7 +303,8 @@ std::optional<Solution> Search::refine(const smt::SpatialSkeleton& skeleton,
         kinematics::YawPitchDesign design = problem.start;
         if (res.usable()) {
             design = f.design(res.x);
-            say(text::format("    refined: %s with %zu points, %d constraints, in %d iterations, "
+            say(
+                text::format("    refined: %s with %zu points, %d constraints, in %d iterations, "
                              "%.3f s",
                              describe(design).c_str(), problem.points.size(), f.num_constraints(),
                              res.iterations, seconds_since(t0)));
@@ -337,11 +344,13 @@ Verdict Search::judge(const kinematics::YawPitchDesign& design) {
             verdict.gave_up = true;  // nothing a path point could fix
             return verdict;
         }
-        verdict.points.push_back(failure.transition
-                                     ? nlp::SpatialPoint{failure.primitive,
-                                                         geometry::length(task_.trajectory[static_cast<std::size_t>(failure.primitive)]),
-                                                         true, failure.s}
-                                     : nlp::SpatialPoint{failure.primitive, failure.s});
+        verdict.points.push_back(
+            failure.transition
+                ? nlp::SpatialPoint{failure.primitive,
+                                    geometry::length(task_.trajectory[static_cast<std::size_t>(
+                                        failure.primitive)]),
+                                    true, failure.s}
+                : nlp::SpatialPoint{failure.primitive, failure.s});
         return verdict;
     }
     const kinematics::DhChain chain = design.chain();
@@ -349,10 +358,10 @@ Verdict Search::judge(const kinematics::YawPitchDesign& design) {
         verify::Certificate cert = verify::certify(task_, chain, *samples, verify_);
         if (cert.ok) {
             stats_.verify_seconds += seconds_since(t0);
-            say(text::format("    certified: %zu samples, clearance margin %.4f m, self-collision "
-                             "margin %.4f m, EE deviation <= %.2e m",
-                             samples->size(), cert.min_clearance, cert.min_self_clearance,
-                             cert.max_deviation));
+            say(text::format(
+                "    certified: %zu samples, clearance margin %.4f m, self-collision "
+                "margin %.4f m, EE deviation <= %.2e m",
+                samples->size(), cert.min_clearance, cert.min_self_clearance, cert.max_deviation));
             Solution s;
             s.task_name = task_.name;
             s.status = Status::Solved;
@@ -363,7 +372,8 @@ Verdict Search::judge(const kinematics::YawPitchDesign& design) {
             return verdict;
         }
         if (!cert.violations.empty()) {
-            say(text::format("    verification: %zu violation(s), first: ", cert.violations.size()) +
+            say(text::format("    verification: %zu violation(s), first: ",
+                             cert.violations.size()) +
                 cert.violations.front().message);
             int added = 0;
             for (const auto& v : cert.violations) {
@@ -371,8 +381,9 @@ Verdict Search::judge(const kinematics::YawPitchDesign& design) {
                 if (added++ >= opt_.counterexamples_per_round) break;
                 const double len =
                     geometry::length(task_.trajectory[static_cast<std::size_t>(v.primitive)]);
-                verdict.points.push_back(v.transition ? nlp::SpatialPoint{v.primitive, len, true, v.s}
-                                                      : nlp::SpatialPoint{v.primitive, v.s});
+                verdict.points.push_back(v.transition
+                                             ? nlp::SpatialPoint{v.primitive, len, true, v.s}
+                                             : nlp::SpatialPoint{v.primitive, v.s});
             }
             if (verdict.points.empty()) verdict.gave_up = true;
             stats_.verify_seconds += seconds_since(t0);

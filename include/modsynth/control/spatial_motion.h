@@ -48,10 +48,9 @@ struct SpatialMotionOptions {
 /// primitive j (index in task.trajectory), on its stroke's branch, at the
 /// hand pitches of that point, unwrapped next to `previous` when given;
 /// std::nullopt when out of reach or near a singularity.
-std::optional<std::vector<double>> spatial_configuration_at(const task::SpatialTask& task,
-                                                            const kinematics::YawPitchDesign& design,
-                                                            int j, double s,
-                                                            const std::vector<double>* previous);
+std::optional<std::vector<double>> spatial_configuration_at(
+    const task::SpatialTask& task, const kinematics::YawPitchDesign& design, int j, double s,
+    const std::vector<double>* previous);
 
 /// The whole motion, stroke after stroke: trace samples of every primitive
 /// from its start to its end, transitions (s = the fraction of the sweep,
