@@ -7,8 +7,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/output/exports.h>
 #include <modsynth/synth/synthesizer.h>
@@ -20,6 +22,7 @@
 #include "module_choice.h"
 #include "number_checks.h"
 #include "planar_task.h"
+#include "spatial_solve.h"
 #include "watchdog.h"
 
 namespace modsynth::app {
@@ -117,7 +120,11 @@ double output_reserve(const task::Task& task, double time_limit) {
 
 int run_solve(const SolveArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
-    const task::Task task = load_planar_task(a.task, "solve");
+    io::TaskDocument doc = io::load_task_document(a.task);
+    if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
+        return run_spatial_solve(
+            *spatial, {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed, a.quiet}, t0);
+    const task::Task task = std::get<task::Task>(std::move(doc));
     const std::optional<hardware::Catalog> catalog = catalog_for(task);
     const auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -96,8 +96,13 @@ void read_solution(const std::string& path, SolveOutcome& o) {
     o.message = s.explanation.message;
     o.core = s.explanation.core;
     if (s.status != synth::Status::Solved) return;
-    o.dof = s.robot.dof();
-    o.total_link_length = s.robot.total_length();
+    if (s.dh_robot) {  // a spatial solution: its chain is in DH rows
+        o.dof = s.dh_robot->dof();
+        o.total_link_length = s.dh_robot->total_length();
+    } else {
+        o.dof = s.robot.dof();
+        o.total_link_length = s.robot.total_length();
+    }
     if (!s.samples.empty()) o.motion_seconds = s.samples.back().t - s.samples.front().t;
     if (parsed.has_certificate && std::isfinite(s.certificate.min_clearance))
         o.clearance_margin = s.certificate.min_clearance;

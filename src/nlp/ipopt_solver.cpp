@@ -1,5 +1,7 @@
 // Ipopt behind modsynth::nlp::minimize: the adapter only delegates to the
-// QuadraticProgram, so no other file sees Ipopt's headers.
+// program (a QuadraticProgram with exact second derivatives, or a
+// SmoothProgram whose second derivatives Ipopt approximates), so no other
+// file sees Ipopt's headers.
 #include <modsynth/nlp/solver.h>
 
 #include <IpIpoptApplication.hpp>
@@ -10,9 +12,11 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <modsynth/nlp/block_ldl.h>
+#include <modsynth/nlp/smooth_program.h>
 #include <modsynth/nlp/warm_start.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -31,9 +35,14 @@ std::chrono::steady_clock::time_point deadline_after(double seconds) {
                std::chrono::duration<double>(seconds));
 }
 
+// Only a QuadraticProgram gives Ipopt exact second derivatives.
+template <class Program>
+constexpr bool kExactHessian = std::is_same_v<Program, QuadraticProgram>;
+
+template <class Program>
 class Adapter : public Ipopt::TNLP {
 public:
-    Adapter(const QuadraticProgram& program, const SolverOptions& options, const WarmStart* warm)
+    Adapter(const Program& program, const SolverOptions& options, const WarmStart* warm)
         : p_(program),
           warm_(warm),
           watch_(options.watch),
@@ -69,7 +78,10 @@ public:
         n = p_.num_variables();
         m = p_.num_constraints();
         nnz_jac = static_cast<Index>(p_.jacobian_structure().size());
-        nnz_hess = static_cast<Index>(p_.hessian_structure().size());
+        if constexpr (kExactHessian<Program>)
+            nnz_hess = static_cast<Index>(p_.hessian_structure().size());
+        else
+            nnz_hess = 0;
         style = C_STYLE;
         return true;
     }
@@ -130,7 +142,9 @@ public:
     }
     bool eval_h(Index, const Number*, bool, Number sigma, Index, const Number* lambda, bool, Index,
                 Index* rows, Index* cols, Number* values) override {
-        if (values == nullptr) {
+        if constexpr (!kExactHessian<Program>) {
+            return false;  // never asked for: the Hessian is approximated
+        } else if (values == nullptr) {
             const auto& s = p_.hessian_structure();
             for (std::size_t k = 0; k < s.size(); ++k) {
                 rows[k] = s[k].row;
@@ -194,7 +208,7 @@ private:
     }
     // Ipopt reads |bound| >= 1e19 as "no bound".
     static Number clip(double v) { return std::clamp(v, -1e19, 1e19); }
-    const QuadraticProgram& p_;
+    const Program& p_;
     const WarmStart* warm_;
     ProgressWatch watch_;
     std::chrono::steady_clock::time_point deadline_;
@@ -203,10 +217,35 @@ private:
 
 // Which constraints keep the last iterate from being feasible, by label
 // (each names its family and the task part it comes from), worst first.
-std::string worst_violations(const QuadraticProgram& program, const std::vector<double>& x,
+struct Violated {
+    int constraint = -1;
+    double amount = 0.0;
+};
+
+// The constraints violated at x by more than `tolerance`, worst first (ties
+// in constraint order, so the report is the same on every run).
+template <class Program>
+std::vector<Violated> violated_at(const Program& program, const std::vector<double>& x,
+                                  double tolerance) {
+    std::vector<double> g(static_cast<std::size_t>(program.num_constraints()));
+    program.eval_constraints(x.data(), g.data());
+    std::vector<Violated> out;
+    for (int m = 0; m < program.num_constraints(); ++m) {
+        const double v = g[static_cast<std::size_t>(m)];
+        const double amount =
+            std::max({0.0, program.constraint_lower(m) - v, v - program.constraint_upper(m)});
+        if (amount > tolerance) out.push_back({m, amount});
+    }
+    std::stable_sort(out.begin(), out.end(),
+                     [](const Violated& a, const Violated& b) { return a.amount > b.amount; });
+    return out;
+}
+
+template <class Program>
+std::string worst_violations(const Program& program, const std::vector<double>& x,
                              const SolverOptions& options) {
     if (x.size() != static_cast<std::size_t>(program.num_variables())) return {};
-    const auto violated = program.violated(x.data(), options.constraint_tolerance);
+    const auto violated = violated_at(program, x, options.constraint_tolerance);
     if (violated.empty()) return "; every constraint holds at the last iterate";
     std::string s = "; at the last iterate ";
     const std::size_t shown =
@@ -219,6 +258,9 @@ std::string worst_violations(const QuadraticProgram& program, const std::vector<
     if (violated.size() > shown) s += text::format(" (%zu violated in all)", violated.size());
     return s;
 }
+
+template <class Program>
+SolverResult solve(const Program& program, const SolverOptions& options, const WarmStart* warm);
 
 }  // namespace
 
@@ -243,12 +285,24 @@ bool SolverOptions::IsValid(std::string* error) const {
 
 SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options,
                       const WarmStart* warm) {
+    return solve(program, options, warm);
+}
+
+SolverResult minimize(const SmoothProgram& program, const SolverOptions& options,
+                      const WarmStart* warm) {
+    return solve(program, options, warm);
+}
+
+namespace {
+
+template <class Program>
+SolverResult solve(const Program& program, const SolverOptions& options, const WarmStart* warm) {
     text::require_valid(options);
     if (warm && (warm->x.size() != static_cast<std::size_t>(program.num_variables()) ||
                  warm->z_lower.size() != warm->x.size() || warm->z_upper.size() != warm->x.size() ||
                  warm->lambda.size() != static_cast<std::size_t>(program.num_constraints())))
         throw std::invalid_argument("nlp::minimize: the warm start does not fit the program");
-    Ipopt::SmartPtr<Adapter> nlp = new Adapter(program, options, warm);
+    Ipopt::SmartPtr<Adapter<Program>> nlp = new Adapter<Program>(program, options, warm);
     Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
     auto& o = *app->Options();
     o.SetStringValue("sb", "yes");
@@ -262,6 +316,8 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
     o.SetNumericValue("max_cpu_time", std::max(0.01, options.time_limit));
     o.SetStringValue("mu_strategy", "adaptive");
     o.SetStringValue("honor_original_bounds", "yes");
+    if constexpr (!kExactHessian<Program>)
+        o.SetStringValue("hessian_approximation", "limited-memory");
     if (warm) {
         // Close to a solution already: keep the point and its multipliers
         // nearly where they are, and start the barrier small.
@@ -283,7 +339,7 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
     auto with_mumps = [&] {
         SolverOptions fallback = options;
         fallback.linear_solver = SolverOptions::LinearSolver::Mumps;
-        return minimize(program, fallback, warm);
+        return solve(program, fallback, warm);
     };
     // An empty name: never read ./ipopt.opt, which would override these silently.
     if (app->Initialize("") != Ipopt::Solve_Succeeded) {
@@ -307,5 +363,7 @@ SolverResult minimize(const QuadraticProgram& program, const SolverOptions& opti
         result.iterations = stats->IterationCount();
     return result;
 }
+
+}  // namespace
 
 }  // namespace modsynth::nlp

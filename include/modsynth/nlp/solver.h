@@ -1,11 +1,12 @@
 #pragma once
-// Minimising a QuadraticProgram. The implementation adapts Ipopt; its headers
-// stay out of this interface.
+// Minimising a QuadraticProgram or a SmoothProgram. The implementation
+// adapts Ipopt; its headers stay out of this interface.
 #include <string>
 #include <vector>
 
 #include <modsynth/nlp/progress_watch.h>
 #include <modsynth/nlp/quadratic_program.h>
+#include <modsynth/nlp/smooth_program.h>
 
 namespace modsynth::nlp {
 
@@ -79,6 +80,10 @@ struct SolverResult {
 /// program's, or std::invalid_argument).
 struct WarmStart;  // warm_start.h
 SolverResult minimize(const QuadraticProgram& program, const SolverOptions& options,
+                      const WarmStart* warm = nullptr);
+/// The same with Ipopt's limited-memory approximation of the second
+/// derivatives.
+SolverResult minimize(const SmoothProgram& program, const SolverOptions& options,
                       const WarmStart* warm = nullptr);
 
 }  // namespace modsynth::nlp

@@ -1,0 +1,97 @@
+#pragma once
+// The spatial front stage (Z3 over nonlinear real arithmetic), for one joint
+// count. Two encodings over few real variables, every constraint family
+// guarded by assumption literals named after the task parts it comes from:
+//
+// - the relaxation: necessary conditions for ANY chain of that joint count
+//   (each sampled path point within 2 n max_link_length of a base in a
+//   base region; with only vertical joint axes, twists 0 and pi, the EE's
+//   height fixed, so that the path's sampled points lie at one height).
+//   Unsat is a proof of infeasibility, and its minimal core names the
+//   conflicting parts;
+// - the pattern: the conditions of the yaw column and pitch links the
+//   search builds (the wrist's annulus |a_2 - a_3| <= |w - S| <= a_2 + a_3
+//   about the shoulder S = base + d_1 z, the path off the column's axis,
+//   the link bounds and the tool), per skeleton: the sign of the column
+//   and the base region. Unsat there only rules the skeleton out.
+//
+// The relaxation does not tell the IK branches apart (the annulus is the
+// same for all four), so the branch of each stroke is left to the initial
+// guesses, which score them.
+#include <chrono>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <modsynth/smt/spatial_skeleton.h>
+#include <modsynth/task/spatial_task.h>
+
+namespace modsynth::smt {
+
+struct SpatialFrontStageOptions {
+    /// Seconds of Z3 time per check; nlsat decides these encodings in
+    /// milliseconds on the planted tasks.
+    double time_limit = 5.0;
+    /// Intervals sampled along each primitive, and sampled points over the
+    /// whole path, at most (fewer per primitive on long paths, never fewer
+    /// than its ends). Every sampled point gives a sound condition.
+    int samples_per_primitive = 8;
+    int encoded_points = 400;
+    /// m: the EE's height may differ from a sampled path point's by this
+    /// much in the height condition: a motion that traces the path within
+    /// formats.md's 1 mm and in steps of at most 5 mm passes within this of
+    /// every point of it.
+    double height_tolerance = 5e-3;
+    /// m: the pattern keeps the path this far off the column's axis, as the
+    /// refinement does (nlp::SpatialMargins::axis).
+    double axis_margin = 0.05;
+    /// Seconds for each check while a core is minimised: the larger of
+    /// these and this factor times what the conflict took.
+    double core_trial_seconds = 0.3;
+    double core_trial_factor = 4.0;
+    /// m (m^2 for squared atoms): every constraint is loosened by this much
+    /// so that the decimal rounding of task numbers never makes the
+    /// relaxation unsound.
+    double slack = 1e-7;
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+
+    /// False (with `error` naming the field) when some value is out of range.
+    bool IsValid(std::string* error) const;
+};
+
+class SpatialFrontStage {
+public:
+    enum class Result { Sat, Unsat, Unknown };
+
+    /// Throws std::invalid_argument when the options are not valid.
+    SpatialFrontStage(const task::SpatialTask& task, int dof,
+                      const SpatialFrontStageOptions& options = {});
+    ~SpatialFrontStage();
+    SpatialFrontStage(const SpatialFrontStage&) = delete;
+    SpatialFrontStage& operator=(const SpatialFrontStage&) = delete;
+
+    /// The relaxation for any chain of this joint count: Unsat is a proof.
+    Result check();
+    /// After Unsat: the conflicting task parts, shrunk by deletion (a
+    /// conflict, if not a minimal one, when the time runs out).
+    std::vector<std::string> minimal_core();
+    /// Whether these parts alone are proved to conflict.
+    bool conflicts(const std::vector<std::string>& parts);
+    /// Whether robot.twists allows the pattern (a twist of 0 and one of
+    /// +-pi/2); without it there are no skeletons.
+    bool pattern_allowed() const;
+    /// The skeletons whose pattern conditions hold, column up first, then
+    /// hanging, then none; base regions in the task's order; at most
+    /// `limit`. Skeletons ruled out are not a proof.
+    std::vector<SpatialSkeleton> skeletons(int limit = 1 << 30);
+    /// Why the last check answered Unknown.
+    std::string reason_unknown() const;
+    /// Both encodings as SMT-LIB2 scripts, for regression suites.
+    std::string smtlib() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace modsynth::smt

@@ -1,0 +1,106 @@
+#include "spatial_solve.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include <modsynth/io/solution_io.h>
+#include <modsynth/synth/spatial_synthesizer.h>
+#include <modsynth/text/format.h>
+#include <modsynth/text/printable.h>
+
+#include "command.h"
+#include "watchdog.h"
+
+namespace modsynth::app {
+namespace {
+
+// Past the time limit by this much, the watchdog answers for the run.
+constexpr double kWatchdogMargin = 0.6;
+
+std::string chain_summary(const kinematics::DhChain& c) {
+    std::string rows;
+    for (const auto& r : c.rows)
+        rows += text::format(
+            rows.empty() ? "(a %.4f, alpha %+.4f, d %.4f)" : " (a %.4f, alpha %+.4f, d %.4f)", r.a,
+            r.alpha, r.d);
+    return text::format("%d joints, base (%.4f, %.4f, %.4f), DH ", c.dof(), c.base.x(), c.base.y(),
+                        c.base.z()) +
+           rows + text::format(", chain %.4f m", c.total_length());
+}
+
+void print_summary(const task::SpatialTask& task, const synth::Solution& solution, double seconds,
+                   const synth::SynthesisStats& stats, const std::string& output) {
+    const std::string status = synth::to_string(solution.status);
+    std::printf("%s: %s in %.3f s (front stage %.3f s, refinement %.3f s, verification %.3f s)\n",
+                text::printable(task.name, 80).c_str(), status.c_str(), seconds,
+                stats.front_seconds, stats.refine_seconds, stats.verify_seconds);
+    if (solution.status != synth::Status::Solved) {
+        std::printf("  %s\n", solution.explanation.message.c_str());
+        if (!solution.explanation.core.empty()) {
+            std::printf("  core:");
+            for (const auto& c : solution.explanation.core) std::printf(" %s", c.c_str());
+            std::printf("\n");
+        }
+        return;
+    }
+    std::printf("  robot: %s\n", chain_summary(*solution.dh_robot).c_str());
+    const auto& c = solution.certificate;
+    const std::string clearance = std::isfinite(c.min_clearance)
+                                      ? text::format("clearance margin %.4f m", c.min_clearance)
+                                      : std::string("no obstacles");
+    std::printf(
+        "  certified over the whole motion: %s, self-collision margin %.4f m, EE deviation <= "
+        "%.2e m\n",
+        clearance.c_str(), c.min_self_clearance, c.max_deviation);
+    std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
+                solution.samples.back().t, output.c_str());
+}
+
+}  // namespace
+
+int run_spatial_solve(const task::SpatialTask& task, const SpatialSolveRequest& a,
+                      std::chrono::steady_clock::time_point t0) {
+    const auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
+    Watchdog watchdog(a.time_limit + kWatchdogMargin - elapsed(), [&] {
+        synth::Solution unknown;
+        unknown.task_name = task.name;
+        unknown.status =
+            synth::Status(synth::Status::Unknown, text::printable(watchdog.stage(), 200),
+                          text::format("time limit (%.3g s)", a.time_limit));
+        unknown.explanation.message = "No certified robot found within the " +
+                                      unknown.status.reason +
+                                      "; the last stage reached: " + unknown.status.stage + ".";
+        io::write_solution(unknown, a.output);
+        print_summary(task, unknown, elapsed(), {}, a.output);
+        return int{kUnknown};
+    });
+    synth::SpatialSynthesisOptions options;
+    options.time_limit = std::max(0.0, a.time_limit - elapsed());
+    options.seed = a.seed;
+    options.retime.ee_speed = a.ee_speed;
+    options.retime.joint_speed = a.joint_speed;
+    options.progress = [&](const std::string& line) {
+        watchdog.set_stage(line.size() > 11 ? line.substr(11) : line);  // without the clock
+        if (!a.quiet) std::cerr << line << std::endl;
+    };
+    synth::SynthesisStats stats;
+    synth::Solution solution = synth::synthesize(task, options, &stats);
+    const double seconds = elapsed();
+    watchdog.claim();
+    io::write_solution(solution, a.output);
+    print_summary(task, solution, seconds, stats, a.output);
+    switch (solution.status) {
+        case synth::Status::Solved:
+            return kOk;
+        case synth::Status::Infeasible:
+            return kInfeasible;
+        case synth::Status::Unknown:
+            return kUnknown;
+    }
+    return kInternal;
+}
+
+}  // namespace modsynth::app

@@ -1,0 +1,270 @@
+#include <modsynth/control/spatial_motion.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <modsynth/control/spatial_samples.h>
+#include <modsynth/geometry/primitive3.h>
+#include <modsynth/kinematics/dh_motion_bound.h>
+#include <modsynth/kinematics/kinematics.h>
+#include <modsynth/task/spatial_strokes.h>
+#include <modsynth/text/format.h>
+#include <modsynth/text/option_check.h>
+
+namespace modsynth::control {
+namespace {
+
+double largest_change(const std::vector<double>& a, const std::vector<double>& b) {
+    double m = 0.0;
+    for (std::size_t k = 0; k < a.size(); ++k) m = std::max(m, std::abs(b[k] - a[k]));
+    return m;
+}
+
+void unwrap(std::vector<double>& q, const std::vector<double>* previous) {
+    if (!previous) return;
+    for (std::size_t k = 0; k < q.size(); ++k) q[k] = kinematics::unwrap_near(q[k], (*previous)[k]);
+}
+
+std::vector<double> lerp(const std::vector<double>& a, const std::vector<double>& b, double t) {
+    std::vector<double> out(a.size());
+    for (std::size_t k = 0; k < a.size(); ++k) out[k] = a[k] + t * (b[k] - a[k]);
+    return out;
+}
+
+/// The hand pitches of the transition after primitive j at fraction t of
+/// its sweep.
+std::vector<double> transition_pitches(const kinematics::YawPitchDesign& design, int j, double t) {
+    return lerp(design.hand_pitches_at(j, 1.0), design.hand_pitches_at(j + 1, 0.0), t);
+}
+
+bool has_sweep(const kinematics::YawPitchDesign& design, int j) {
+    const auto a = design.hand_pitches_at(j, 1.0);
+    const auto b = design.hand_pitches_at(j + 1, 0.0);
+    return largest_change(a, b) > 1e-12;
+}
+
+std::optional<std::vector<double>> transition_configuration(
+    const task::SpatialTask& task, const kinematics::YawPitchDesign& design, int j, double t,
+    const std::vector<double>* previous) {
+    const auto& branch = design.branches[static_cast<std::size_t>(task::stroke_of(task, j))];
+    auto q = kinematics::yaw_pitch_ik(design.arm, geometry::end_point(task.trajectory[j]), branch,
+                                      transition_pitches(design, j, t));
+    if (q) unwrap(*q, previous);
+    return q;
+}
+
+class Walker {
+public:
+    Walker(const kinematics::YawPitchDesign& design, const SpatialMotionOptions& options,
+           std::vector<Sample>& out)
+        : opt_(options), chain_(design.chain()), total_(chain_.total_length()), out_(out) {}
+
+    /// Whether the step from the last sample to q is short enough.
+    bool fits(const std::vector<double>& q, double* change) const {
+        const std::vector<double>& last = out_.back().q;
+        *change = largest_change(last, q);
+        if (*change > opt_.max_joint_step) return false;
+        std::vector<double> dq(q.size());
+        for (std::size_t k = 0; k < q.size(); ++k) dq[k] = q[k] - last[k];
+        return kinematics::chord_gap(chain_, dq, 0, chain_.dof(), total_) <= opt_.max_chord_gap;
+    }
+
+    // Walks a parameter from `from` to `to`, each step as long as the
+    // limits allow, appending a sample per step (the first one excluded).
+    // On failure *failed_at is the parameter that could not be reached;
+    // *gave_up is set at the sample cap or the deadline.
+    template <typename ConfigAt>
+    bool walk(double from, double to, double first_step, Phase phase, int primitive, int stroke,
+              double* failed_at, bool* gave_up, ConfigAt config_at) {
+        double u = from, du = first_step;
+        while (to - u > 1e-12) {
+            if (out_.size() >= opt_.max_samples ||
+                (out_.size() % 1024 == 0 && std::chrono::steady_clock::now() >= opt_.deadline)) {
+                *gave_up = true;
+                *failed_at = u;
+                return false;
+            }
+            du = std::min(2.0 * du, first_step);
+            std::optional<std::vector<double>> next;
+            double candidate = u;
+            for (int attempt = 0; attempt < opt_.step_attempts; ++attempt) {
+                candidate = to - u <= du ? to : u + du;
+                next = config_at(candidate, &out_.back().q);
+                if (!next) break;
+                double change = 0.0;
+                if (fits(*next, &change)) break;
+                // The chord bound is quadratic in the step, the joint step
+                // linear: shrinking by the joint ratio alone may not be enough,
+                // so at least a tenth goes every time.
+                du *= std::clamp(0.9 * opt_.max_joint_step / std::max(change, 1e-300), 0.1, 0.7);
+                next.reset();
+                if (du < 1e-10) break;
+            }
+            if (!next) {
+                *failed_at = candidate;
+                return false;
+            }
+            u = candidate;
+            out_.push_back({0.0, phase, primitive, u, *next, stroke});
+        }
+        return true;
+    }
+
+private:
+    const SpatialMotionOptions& opt_;
+    kinematics::DhChain chain_;
+    double total_;
+    std::vector<Sample>& out_;
+};
+
+void check_fits(const task::SpatialTask& task, const kinematics::YawPitchDesign& design) {
+    const auto m = task.trajectory.size();
+    if (design.branches.size() != static_cast<std::size_t>(task::stroke_count(task)))
+        throw std::invalid_argument("plan_spatial_motion: one IK branch per stroke is needed");
+    if (design.hand_links() > 0 &&
+        (design.pitches.size() != m ||
+         std::any_of(design.pitches.begin(), design.pitches.end(), [&](const auto& p) {
+             return static_cast<int>(p.size()) != design.hand_links();
+         })))
+        throw std::invalid_argument(
+            "plan_spatial_motion: one pitch per hand link and primitive is needed");
+}
+
+}  // namespace
+
+bool SpatialMotionOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("SpatialMotionOptions", error)
+        .greater("max_joint_step", max_joint_step, 0.0)
+        .greater("max_ee_step", max_ee_step, 0.0)
+        .greater("max_chord_gap", max_chord_gap, 0.0)
+        .holds("max_samples", max_samples >= 2, "must be at least 2")
+        .at_least("step_attempts", step_attempts, 1)
+        .ok();
+}
+
+std::optional<std::vector<double>> spatial_configuration_at(
+    const task::SpatialTask& task, const kinematics::YawPitchDesign& design, int j, double s,
+    const std::vector<double>* previous) {
+    const geometry::Primitive3& prim = task.trajectory[static_cast<std::size_t>(j)];
+    const double length = geometry::length(prim);
+    const auto& branch = design.branches[static_cast<std::size_t>(task::stroke_of(task, j))];
+    auto q = kinematics::yaw_pitch_ik(design.arm, geometry::point_at(prim, s), branch,
+                                      design.hand_pitches_at(j, length > 0.0 ? s / length : 0.0));
+    if (q) unwrap(*q, previous);
+    return q;
+}
+
+std::optional<std::vector<Sample>> plan_spatial_motion(const task::SpatialTask& task,
+                                                       const kinematics::YawPitchDesign& design,
+                                                       const SpatialMotionOptions& options,
+                                                       MotionFailure* failure) {
+    text::require_valid(options);
+    check_fits(task, design);
+    std::vector<Sample> out;
+    Walker walker(design, options, out);
+    double failed_at = 0.0;
+    bool gave_up = false;
+    auto fail = [&](int j, bool transition, double s,
+                    bool travel = false) -> std::optional<std::vector<Sample>> {
+        if (failure) {
+            const std::string name = task::part_name(task, j);
+            *failure = {j,
+                        transition,
+                        travel,
+                        s,
+                        gave_up,
+                        transition ? "the transition after " + name
+                        : travel   ? "the travel after " + name
+                                   : name + text::format(" at %.4f m from its start", s)};
+            if (gave_up)
+                failure->message =
+                    out.size() >= options.max_samples
+                        ? text::format("%zu samples, the most a motion may have", out.size())
+                        : std::string("the time limit");
+        }
+        return std::nullopt;
+    };
+    const int m = static_cast<int>(task.trajectory.size());
+    for (int j = 0; j < m; ++j) {
+        const int stroke = task::stroke_of(task, j);
+        const int k = j - task::stroke_first(task, stroke);
+        std::optional<std::vector<double>> q;
+        if (k > 0 && has_sweep(design, j - 1)) {
+            // The EE holds the join while the hand pitches sweep linearly to
+            // the next primitive's.
+            const std::size_t before = out.size();
+            const bool ok =
+                walker.walk(0.0, 1.0, 1.0, Phase::Transition, k - 1, stroke, &failed_at, &gave_up,
+                            [&](double t, const std::vector<double>* prev) {
+                                return transition_configuration(task, design, j - 1, t, prev);
+                            });
+            if (!ok) return fail(j - 1, true, failed_at);
+            if (out.size() > before) out.pop_back();  // the last pose is the next trace's first
+        } else if (j > 0 && k == 0) {
+            // A new stroke: a straight joint-space line, each joint the short
+            // way round, to the pose that starts it.
+            q = spatial_configuration_at(task, design, j, 0.0, &out.back().q);
+            if (!q) return fail(j, false, 0.0);
+            const std::vector<double> from = out.back().q;
+            const int steps =
+                static_cast<int>(std::ceil(largest_change(from, *q) / options.max_joint_step));
+            const int last =
+                task::stroke_last(task, stroke - 1) - task::stroke_first(task, stroke - 1);
+            for (int i = 1; i < steps; ++i)
+                out.push_back({0.0, Phase::Travel, last, 0.0,
+                               lerp(from, *q, static_cast<double>(i) / steps), stroke - 1});
+        }
+        if (!q)
+            q = spatial_configuration_at(task, design, j, 0.0,
+                                         out.empty() ? nullptr : &out.back().q);
+        if (!q) return fail(j, false, 0.0);
+        out.push_back({0.0, Phase::Trace, k, 0.0, *q, stroke});
+        const double length = geometry::length(task.trajectory[static_cast<std::size_t>(j)]);
+        const bool ok =
+            walker.walk(0.0, length, options.max_ee_step, Phase::Trace, k, stroke, &failed_at,
+                        &gave_up, [&](double s, const std::vector<double>* prev) {
+                            return spatial_configuration_at(task, design, j, s, prev);
+                        });
+        if (!ok) return fail(j, false, failed_at);
+        out.back().s = length;  // exactly, as the verifier checks the end
+    }
+    return out;
+}
+
+bool refine_spatial_motion(const task::SpatialTask& task, const kinematics::YawPitchDesign& design,
+                           std::vector<Sample>& samples, const std::vector<int>& pairs) {
+    std::vector<int> sorted = pairs;
+    std::sort(sorted.rbegin(), sorted.rend());  // back to front keeps indices valid
+    for (int i : sorted) {
+        const Sample& a = samples[static_cast<std::size_t>(i)];
+        const Sample& b = samples[static_cast<std::size_t>(i) + 1];
+        std::optional<Sample> mid;
+        if (a.phase == Phase::Travel || b.phase == Phase::Travel || a.stroke != b.stroke) {
+            mid = Sample{a.t, Phase::Travel, a.primitive, 0.0, lerp(a.q, b.q, 0.5), a.stroke};
+            if (a.phase != Phase::Travel) {  // the travel is tagged by the stroke it leaves
+                mid->primitive =
+                    task::stroke_last(task, a.stroke) - task::stroke_first(task, a.stroke);
+            }
+        } else if (a.phase == Phase::Trace && b.phase == Phase::Trace &&
+                   a.primitive == b.primitive) {
+            const double s = 0.5 * (a.s + b.s);
+            if (auto q = spatial_configuration_at(task, design, primitive_index(task, a), s, &a.q))
+                mid = Sample{a.t, Phase::Trace, a.primitive, s, *q, a.stroke};
+        } else if (a.phase == Phase::Transition || b.phase == Phase::Transition) {
+            // Trace end -> transition (t from 0), transition -> next trace
+            // start (t to 1).
+            const Sample& t = a.phase == Phase::Transition ? a : b;
+            const double ta = a.phase == Phase::Transition ? a.s : 0.0;
+            const double tb = b.phase == Phase::Transition ? b.s : 1.0;
+            const double tm = 0.5 * (ta + tb);
+            if (auto q = transition_configuration(task, design, primitive_index(task, t), tm, &a.q))
+                mid = Sample{a.t, Phase::Transition, t.primitive, tm, *q, t.stroke};
+        }
+        if (!mid) return false;
+        samples.insert(samples.begin() + i + 1, *mid);
+    }
+    return true;
+}
+
+}  // namespace modsynth::control
