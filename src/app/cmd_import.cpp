@@ -241,8 +241,7 @@ Command add_import(CLI::App& parent) {
     sub->add_option(
         "--obstacles-from", a->obstacle_layer,
         "layer (SVG group id or inkscape:label, DXF layer) whose circles are obstacles");
-    sub->add_option("--layers", a->layers, "A,B: import only these DXF layers")
-        ->delimiter(',');
+    sub->add_option("--layers", a->layers, "A,B: import only these DXF layers")->delimiter(',');
     sub->add_flag("--strict", a->strict,
                   "refuse what cannot be traced (text without a font, hatches, dimensions, "
                   "points, images, 3D solids, degenerate pieces) instead of skipping it");

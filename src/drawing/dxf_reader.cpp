@@ -71,11 +71,10 @@ public:
                     list += (list.empty() ? "" : ", ") + name +
                             (s.count > 1 ? " (" + std::to_string(s.count) + "x)" : "");
                 }
-                throw InputError("(document)", "entities that cannot be drawn: " + list +
-                                                   " (--strict)");
+                throw InputError("(document)",
+                                 "entities that cannot be drawn: " + list + " (--strict)");
             }
-            drawing_.warnings.push_back("skipped what cannot be traced: " +
-                                        listed(unsupported_));
+            drawing_.warnings.push_back("skipped what cannot be traced: " + listed(unsupported_));
         }
         if (!degenerate_.empty())
             drawing_.warnings.push_back("skipped degenerate pieces: " + listed(degenerate_));
@@ -200,7 +199,8 @@ public:
                  std::to_string(kMaxSplineDegree));
         }
         if (d.nControl > kMaxSplineControlPoints) fail("too many control points");
-        spline_ = OpenSpline{label_, layer_, BSpline{static_cast<int>(d.degree), {}, {}, {}}, d.nFit};
+        spline_ =
+            OpenSpline{label_, layer_, BSpline{static_cast<int>(d.degree), {}, {}, {}}, d.nFit};
     }
     void addControlPoint(const DL_ControlPointData& d) override {
         if (!spline_) return;
@@ -258,15 +258,13 @@ public:
         whole += d.text;
         TextLayout layout = text_style(d.style, d.height);
         if (!layout_ok(layout)) return;
-        layout.line_spacing *= d.lineSpacingFactor > 0.0 && d.lineSpacingFactor <= 4.0
-                                   ? d.lineSpacingFactor
-                                   : 1.0;
+        layout.line_spacing *=
+            d.lineSpacingFactor > 0.0 && d.lineSpacingFactor <= 4.0 ? d.lineSpacingFactor : 1.0;
         // The direction vector, when given, decides the rotation (dxflib
         // turns one pointing left half a turn wrong).
         layout.rotation = d.dirx != 0.0 || d.diry != 0.0 ? std::atan2(d.diry, d.dirx) : d.angle;
-        const int attachment = d.attachmentPoint >= 1 && d.attachmentPoint <= 9
-                                   ? d.attachmentPoint - 1
-                                   : 0;
+        const int attachment =
+            d.attachmentPoint >= 1 && d.attachmentPoint <= 9 ? d.attachmentPoint - 1 : 0;
         layout.vertical = attachment / 3 == 0   ? TextLayout::Vertical::Top
                           : attachment / 3 == 1 ? TextLayout::Vertical::Middle
                                                 : TextLayout::Vertical::Bottom;
@@ -309,13 +307,13 @@ private:
     /// else is written in the simplex sans serif.
     static std::string hershey_font_for(const std::string& file) {
         static const std::map<std::string, std::string, std::less<>> kNear = {
-            {"romans", "rowmans"},     {"romand", "rowmand"},    {"romant", "rowmant"},
-            {"romanc", "timesr"},      {"italicc", "timesi"},    {"italic", "timesi"},
-            {"italict", "timesi"},     {"scripts", "scripts"},   {"scriptc", "scriptc"},
-            {"greeks", "greeks"},      {"greekc", "greekc"},     {"gothice", "gothiceng"},
-            {"gothicg", "gothicger"},  {"gothici", "gothicita"}, {"cyrillic", "cyrillic"},
+            {"romans", "rowmans"},    {"romand", "rowmand"},    {"romant", "rowmant"},
+            {"romanc", "timesr"},     {"italicc", "timesi"},    {"italic", "timesi"},
+            {"italict", "timesi"},    {"scripts", "scripts"},   {"scriptc", "scriptc"},
+            {"greeks", "greeks"},     {"greekc", "greekc"},     {"gothice", "gothiceng"},
+            {"gothicg", "gothicger"}, {"gothici", "gothicita"}, {"cyrillic", "cyrillic"},
             {"cyriltlc", "cyrilc_1"}, {"times", "timesr"},      {"timesbd", "timesrb"},
-            {"timesi", "timesi"},      {"timesbi", "timesib"}};
+            {"timesi", "timesi"},     {"timesbi", "timesib"}};
         const auto found = kNear.find(file);
         return found == kNear.end() ? kDefaultFont : found->second;
     }
@@ -369,9 +367,9 @@ private:
             }
         } else if (h != 0 || v != 0) {
             at = Vec2(d.apx, d.apy);
-            layout.horizontal = h == 1 || h == 4   ? TextLayout::Horizontal::Center
-                                : h == 2           ? TextLayout::Horizontal::Right
-                                                   : TextLayout::Horizontal::Left;
+            layout.horizontal = h == 1 || h == 4 ? TextLayout::Horizontal::Center
+                                : h == 2         ? TextLayout::Horizontal::Right
+                                                 : TextLayout::Horizontal::Left;
             layout.vertical = h == 4 || v == 2 ? TextLayout::Vertical::Middle
                               : v == 1         ? TextLayout::Vertical::Bottom
                               : v == 3         ? TextLayout::Vertical::Top
@@ -419,7 +417,10 @@ private:
                     continue;
                 }
                 if (code == '%' || code == 'd' || code == 'p' || code == 'c') {
-                    out += code == '%' ? "%" : code == 'd' ? "\xC2\xB0" : code == 'p' ? "\xC2\xB1" : "\xC3\x98";
+                    out += code == '%'   ? "%"
+                           : code == 'd' ? "\xC2\xB0"
+                           : code == 'p' ? "\xC2\xB1"
+                                         : "\xC3\x98";
                     i += 2;
                     continue;
                 }
@@ -470,11 +471,18 @@ private:
                 case '}':
                     out += k;
                     break;
-                case 'L': case 'l': case 'O': case 'o': case 'K': case 'k': case 'N':
+                case 'L':
+                case 'l':
+                case 'O':
+                case 'o':
+                case 'K':
+                case 'k':
+                case 'N':
                     break;
                 case 'S': {
                     const std::size_t end = in.find(';', i);
-                    std::string stacked = in.substr(i + 1, end == std::string::npos ? std::string::npos : end - i - 1);
+                    std::string stacked = in.substr(
+                        i + 1, end == std::string::npos ? std::string::npos : end - i - 1);
                     std::replace(stacked.begin(), stacked.end(), '^', '/');
                     std::replace(stacked.begin(), stacked.end(), '#', '/');
                     out += stacked;
@@ -484,7 +492,8 @@ private:
                 case 'U':
                     if (in.compare(i + 1, 1, "+") == 0 && i + 6 <= in.size()) {
                         unsigned code = 0;
-                        const auto [p, ec] = std::from_chars(in.data() + i + 2, in.data() + i + 6, code, 16);
+                        const auto [p, ec] =
+                            std::from_chars(in.data() + i + 2, in.data() + i + 6, code, 16);
                         if (ec == std::errc() && p == in.data() + i + 6) {
                             append_utf8(out, code);
                             i += 5;
@@ -575,9 +584,8 @@ private:
         if (std::find(stack.begin(), stack.end(), d.name) != stack.end()) {
             std::string chain;
             for (const std::string& n : stack) chain += text::printable(n) + " -> ";
-            throw InputError(r.label, "block '" + text::printable(d.name) +
-                                          "' inserts itself (" + chain +
-                                          text::printable(d.name) + ")");
+            throw InputError(r.label, "block '" + text::printable(d.name) + "' inserts itself (" +
+                                          chain + text::printable(d.name) + ")");
         }
         for (double v : {d.ipx, d.ipy, d.sx, d.sy, d.angle, d.colSp, d.rowSp}) {
             if (!std::isfinite(v) || std::abs(v) > kMaxDrawingCoordinate)
@@ -875,7 +883,7 @@ private:
     std::size_t block_count_ = 0;
     std::vector<InsertRef> model_inserts_;
     std::size_t instances_ = 0;
-    std::string layer_;  ///< the layer of the entity being read
+    std::string layer_;                          ///< the layer of the entity being read
     std::map<std::string, std::string> styles_;  ///< text style -> Hershey font
     std::string mtext_chunks_;
     bool layer_seen_ = false;

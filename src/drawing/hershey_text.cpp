@@ -55,10 +55,9 @@ double glyph_extreme(hershey_font* f, unsigned char c, bool top) {
 }
 
 bool valid_font_name(const std::string& name) {
-    return !name.empty() && name.size() <= 64 &&
-           std::all_of(name.begin(), name.end(), [](char c) {
-               return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
-           });
+    return !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    });
 }
 
 /// Fonts are loaded once per process and kept: a drawing names a few.
@@ -71,12 +70,12 @@ const Font& font(const std::string& name, const std::string& part) {
     std::error_code ec;
     if (!valid_font_name(name) || !std::filesystem::is_regular_file(file, ec)) {
         std::string installed;
-        for (const std::string& f : hershey_fonts()) installed += (installed.empty() ? "" : ", ") + f;
-        throw InputError(part, "no Hershey font '" + text::printable(name) + "' (installed in " +
-                                   kFontFolder.string() + ": " +
-                                   (installed.empty() ? "none; install hershey-fonts-data"
-                                                      : installed) +
-                                   ")");
+        for (const std::string& f : hershey_fonts())
+            installed += (installed.empty() ? "" : ", ") + f;
+        throw InputError(
+            part, "no Hershey font '" + text::printable(name) + "' (installed in " +
+                      kFontFolder.string() + ": " +
+                      (installed.empty() ? "none; install hershey-fonts-data" : installed) + ")");
     }
     Font f;
     f.glyphs.reset(hershey_jhf_font_load(file.c_str()));

@@ -571,9 +571,9 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
                            list);
     }
     if (state.curves.empty()) {
-        throw InputError("(document)", "empty drawing: nothing to draw" +
-                                           (warnings.empty() ? std::string()
-                                                             : " (" + warnings[0] + ")"));
+        throw InputError("(document)",
+                         "empty drawing: nothing to draw" +
+                             (warnings.empty() ? std::string() : " (" + warnings[0] + ")"));
     }
 
     // Outer viewport pixels, y down -> millimetres, y up from the page's

@@ -187,9 +187,8 @@ TEST_CASE("DXF: a POLYLINE's VERTEX entities are its vertices", "[drawing][dxf]"
         vertices += "0\nVERTEX\n8\n0\n10\n" + std::to_string(xs[i]) + "\n20\n" +
                     std::to_string(ys[i]) + "\n30\n0\n" + (i == 1 ? "42\n1\n" : "");
     }
-    const std::string closed =
-        dxf("0\nPOLYLINE\n8\n0\n66\n1\n10\n0\n20\n0\n30\n0\n70\n1\n" + vertices + "0\nSEQEND\n8\n0\n" +
-            kLine);
+    const std::string closed = dxf("0\nPOLYLINE\n8\n0\n66\n1\n10\n0\n20\n0\n30\n0\n70\n1\n" +
+                                   vertices + "0\nSEQEND\n8\n0\n" + kLine);
     const Drawing d = read_dxf(closed);
     REQUIRE(d.curves.size() == 2);
     CHECK(d.curves[0].source.rfind("POLYLINE #1", 0) == 0);
@@ -203,8 +202,9 @@ TEST_CASE("DXF: a POLYLINE's VERTEX entities are its vertices", "[drawing][dxf]"
     REQUIRE(read_dxf(open).curves.size() == 1);
     CHECK(read_dxf(open).curves[0].segments.size() == 3);
     CHECK_THAT(message_of([&] {
-                   read_dxf(dxf("0\nPOLYLINE\n8\n0\n66\n1\n70\n0\n0\nVERTEX\n8\n0\n10\n1\n20\n1\n"
-                                "0\nSEQEND\n"));
+                   read_dxf(
+                       dxf("0\nPOLYLINE\n8\n0\n66\n1\n70\n0\n0\nVERTEX\n8\n0\n10\n1\n20\n1\n"
+                           "0\nSEQEND\n"));
                }),
                Catch::Contains("POLYLINE #1") && Catch::Contains("at least 2 vertices"));
 }
@@ -250,7 +250,8 @@ TEST_CASE("DXF: --layers reads only those layers and the layers are counted", "[
         entities += std::string("0\nLINE\n8\n") + layer + "\n10\n0\n20\n0\n11\n10\n21\n0\n";
     const Drawing all = read_dxf(dxf(entities));
     CHECK(all.curves.size() == 4);
-    CHECK(all.layers == std::map<std::string, std::size_t>{{"doors", 1}, {"text", 1}, {"walls", 2}});
+    CHECK(all.layers ==
+          std::map<std::string, std::size_t>{{"doors", 1}, {"text", 1}, {"walls", 2}});
     ReadOptions o;
     o.layers = {"walls", "doors"};
     const Drawing some = read_dxf(dxf(entities), o);
@@ -294,8 +295,8 @@ TEST_CASE("DXF: INSERT draws its block, placed, scaled, turned and arrayed", "[d
     CHECK((end_point(s) - Vec2(10, 2)).norm() < 1e-12);
     CHECK_THAT(one.curves[0].source, Catch::Contains("LINE #1 of block bar in INSERT #1"));
     // A 3 x 2 array, 5 apart in columns and 7 in rows.
-    const Drawing array = read_dxf(dxf_with_blocks(
-        blocks, insert("bar", "10\n0\n20\n0\n70\n3\n71\n2\n44\n5\n45\n7\n")));
+    const Drawing array = read_dxf(
+        dxf_with_blocks(blocks, insert("bar", "10\n0\n20\n0\n70\n3\n71\n2\n44\n5\n45\n7\n")));
     REQUIRE(array.curves.size() == 6);
     CHECK((start_point(array.curves[5].segments[0]) - Vec2(10, 7)).norm() < 1e-12);
     // Nested: a block of two bars, inserted twice.
@@ -333,8 +334,8 @@ TEST_CASE("DXF: TEXT and MTEXT are written in a Hershey font", "[drawing][dxf][t
     CHECK(left >= 100.0);
     CHECK(left < 102.0);
     // MTEXT: two paragraphs, its formatting codes not drawn.
-    const Drawing m = read_dxf(dxf(
-        "0\nMTEXT\n8\n0\n10\n0\n20\n0\n40\n10\n71\n1\n1\n{\\fArial|b0;\\H1.5x;I}\\PI\n"));
+    const Drawing m = read_dxf(
+        dxf("0\nMTEXT\n8\n0\n10\n0\n20\n0\n40\n10\n71\n1\n1\n{\\fArial|b0;\\H1.5x;I}\\PI\n"));
     REQUIRE(m.curves.size() == 2);
     // Attachment 1 (top left): the first line's capitals hang below the point.
     CHECK(std::max(start_point(m.curves[0].segments[0]).y(),
@@ -343,8 +344,8 @@ TEST_CASE("DXF: TEXT and MTEXT are written in a Hershey font", "[drawing][dxf][t
     const Drawing deg = read_dxf(dxf("0\nTEXT\n8\n0\n10\n0\n20\n0\n40\n10\n1\n90%%d\n"));
     CHECK(!deg.curves.empty());
     REQUIRE(deg.warnings.size() == 1);
-    CHECK_THAT(deg.warnings[0], Catch::Contains("TEXT #1 (layer 0)") &&
-                                    Catch::Contains("('\xC2\xB0')"));
+    CHECK_THAT(deg.warnings[0],
+               Catch::Contains("TEXT #1 (layer 0)") && Catch::Contains("('\xC2\xB0')"));
 }
 
 TEST_CASE("import: a piece smaller than the fitting resolves is skipped among others",

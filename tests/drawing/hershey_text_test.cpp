@@ -78,8 +78,8 @@ TEST_CASE("text: what a font cannot write is said", "[drawing][text]") {
         FAIL("no error");
     } catch (const modsynth::task::InputError& e) {
         CHECK(e.part() == "--font");
-        CHECK_THAT(std::string(e.what()), Catch::Contains("no Hershey font 'nosuchfont'") &&
-                                              Catch::Contains("futural"));
+        CHECK_THAT(std::string(e.what()),
+                   Catch::Contains("no Hershey font 'nosuchfont'") && Catch::Contains("futural"));
     }
     layout.font = "../etc/passwd";
     CHECK_THROWS_AS(text_curves("a", Vec2::Zero(), layout, "t"), modsynth::task::InputError);

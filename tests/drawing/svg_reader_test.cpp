@@ -122,10 +122,10 @@ TEST_CASE("SVG: dots are skipped with a warning, or refused with strict", "[draw
     const Drawing d = read_svg(svg);
     CHECK(d.curves.size() == 2);  // the stem, and "h.01" (0.01 px long: not zero)
     REQUIRE(d.warnings.size() == 1);
-    CHECK_THAT(d.warnings[0], Catch::Contains("skipped dots") &&
-                                  Catch::Contains("path#dot2 (line 4)"));
+    CHECK_THAT(d.warnings[0],
+               Catch::Contains("skipped dots") && Catch::Contains("path#dot2 (line 4)"));
     ReadOptions strict;
     strict.strict = true;
-    CHECK_THROWS_WITH(read_svg(svg, strict), Catch::Contains("path#dot2 (line 4)") &&
-                                                 Catch::Contains("zero-length"));
+    CHECK_THROWS_WITH(read_svg(svg, strict),
+                      Catch::Contains("path#dot2 (line 4)") && Catch::Contains("zero-length"));
 }

@@ -16,9 +16,9 @@ inline constexpr const char* kDefaultFont = "futural";
 
 struct TextLayout {
     std::string font = kDefaultFont;
-    double height = 1.0;        ///< of a capital letter, drawing units
-    double rotation = 0.0;      ///< radians, counter-clockwise
-    double width_factor = 1.0;  ///< horizontal stretch of every glyph
+    double height = 1.0;              ///< of a capital letter, drawing units
+    double rotation = 0.0;            ///< radians, counter-clockwise
+    double width_factor = 1.0;        ///< horizontal stretch of every glyph
     double line_spacing = 5.0 / 3.0;  ///< baseline to baseline, in heights
     enum class Horizontal { Left, Center, Right } horizontal = Horizontal::Left;
     /// Which line of the text block lies on the alignment point: the first
