@@ -153,9 +153,23 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
         }
         FittedCurve f =
             fit_curve(placed, options.tolerance, task::kMaxPrimitives - total, options.deadline);
-        for (const geometry::Primitive& p : f.primitives) {
+        // An arc so nearly straight that its centre lies beyond reach of
+        // any task is its chord, when the chord strays from it (by its
+        // sagitta) within what the tolerance leaves.
+        double straightened = 0.0;
+        for (geometry::Primitive& p : f.primitives) {
+            if (p.kind == geometry::PrimitiveKind::Arc &&
+                !(p.center.cwiseAbs().maxCoeff() <= task::kMaxCoordinate) &&
+                std::abs(p.sweep) < geometry::kPi) {
+                const double sagitta = p.radius * (1.0 - std::cos(p.sweep / 2.0));
+                if (f.deviation + sagitta <= options.tolerance) {
+                    p = geometry::make_line(p.start, p.end);
+                    straightened = std::max(straightened, sagitta);
+                }
+            }
             check(p.center, c.source + " (an arc's center)");
         }
+        f.deviation += straightened;
         total += f.primitives.size();
         if (total > task::kMaxPrimitives) {
             throw InputError(c.source, "the drawing needs more than " +

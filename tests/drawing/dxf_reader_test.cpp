@@ -362,3 +362,22 @@ TEST_CASE("import: a piece smaller than the fitting resolves is skipped among ot
     CHECK_THAT(message_of([&] { import_drawing(text, DrawingFormat::Dxf, o); }),
                Catch::Contains("ELLIPSE #2 (layer 0)"));
 }
+
+TEST_CASE("import: an arc nearly straight, its centre beyond reach, is its chord",
+          "[drawing][dxf]") {
+    // Radius 999.9 m (kept as an arc), its centre 1000.1 m out once placed,
+    // 0.004 degrees of it: 70 mm long, 0.6 um from its chord.
+    const std::string text =
+        dxf("0\nARC\n8\n0\n10\n0\n20\n-1000100\n40\n999900\n50\n89.998\n51\n90.002\n");
+    ImportOptions o;
+    const ImportResult r = import_drawing(text, DrawingFormat::Dxf, o);
+    REQUIRE(r.strokes.size() == 1);
+    REQUIRE(r.strokes[0].size() == 1);
+    CHECK(r.strokes[0][0].kind == modsynth::geometry::PrimitiveKind::Line);
+    CHECK(r.deviation == Approx(6.09e-7).epsilon(0.01));
+    CHECK((r.strokes[0][0].end - r.strokes[0][0].start).norm() == Approx(0.0698).epsilon(1e-3));
+    // Where the chord would stray beyond the tolerance, the centre is refused.
+    o.tolerance = 1e-7;
+    CHECK_THAT(message_of([&] { import_drawing(text, DrawingFormat::Dxf, o); }),
+               Catch::Contains("beyond 1000 m"));
+}
