@@ -1,6 +1,9 @@
 #include <modsynth/io/solution_io.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -85,7 +88,78 @@ void add_witnesses(const synth::Explanation& e, nlohmann::json& out) {
     if (e.geodesic) out["geodesic"] = to_json(*e.geodesic);
 }
 
-nlohmann::json to_json(const synth::Solution& s) {
+namespace {
+
+const char* phase_name(control::Phase phase) {
+    switch (phase) {
+        case control::Phase::Trace:
+            return "trace";
+        case control::Phase::Transition:
+            return "transition";
+        case control::Phase::Travel:
+            return "travel";
+    }
+    return "trace";
+}
+
+// Numbers exactly as nlohmann's serializer writes them (shortest
+// round-trip text, "1.0" for integral values, null for non-finite ones).
+void append_number(std::string& out, double v) {
+    if (!std::isfinite(v)) {
+        out += "null";
+        return;
+    }
+    std::array<char, 64> buf{};
+    char* end = nlohmann::detail::to_chars(buf.data(), buf.data() + buf.size(), v);
+    out.append(buf.data(), end);
+}
+
+void append_array(std::string& out, const char* key, const std::vector<double>& values) {
+    out += "\n   \"";
+    out += key;
+    out += "\": [";
+    if (values.empty()) {
+        out += "]";
+        return;
+    }
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        out += i ? ",\n    " : "\n    ";
+        append_number(out, values[i]);
+    }
+    out += "\n   ]";
+}
+
+/// The samples as the members of `to_json(solution).dump(1)`'s "samples"
+/// array (keys in nlohmann's sorted order).
+void append_samples(std::string& out, const std::vector<control::Sample>& samples) {
+    const bool strokes = std::any_of(samples.begin(), samples.end(),
+                                     [](const control::Sample& x) { return x.stroke != 0; });
+    out.reserve(out.size() + samples.size() * 160);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const auto& x = samples[i];
+        out += i ? ",\n  {" : "\n  {";
+        out += "\n   \"phase\": \"";
+        out += phase_name(x.phase);
+        out += "\",\n   \"primitive\": ";
+        out += std::to_string(x.primitive);
+        out += ",";
+        append_array(out, "q", x.q);
+        if (!x.qd.empty()) {
+            out += ",";
+            append_array(out, "qd", x.qd);
+        }
+        if (!x.qdd.empty()) {
+            out += ",";
+            append_array(out, "qdd", x.qdd);
+        }
+        if (strokes) out += ",\n   \"stroke\": " + std::to_string(x.stroke);
+        out += ",\n   \"t\": ";
+        append_number(out, x.t);
+        out += "\n  }";
+    }
+}
+
+nlohmann::json document(const synth::Solution& s, bool with_samples) {
     nlohmann::json doc;
     doc["format"] = "modsynth-solution/1";
     doc["task"] = s.task_name;
@@ -96,7 +170,7 @@ nlohmann::json to_json(const synth::Solution& s) {
         return doc;
     }
     if (s.dh_robot) {
-        doc["robot"] = to_json(*s.dh_robot);
+        doc["robot"] = io::to_json(*s.dh_robot);
     } else {
         const auto& r = s.robot;
         doc["robot"] = {{"dof", r.dof()},
@@ -110,16 +184,15 @@ nlohmann::json to_json(const synth::Solution& s) {
     const bool strokes = std::any_of(s.samples.begin(), s.samples.end(),
                                      [](const control::Sample& x) { return x.stroke != 0; });
     nlohmann::json samples = nlohmann::json::array();
-    for (const auto& x : s.samples) {
-        const char* phase = x.phase == control::Phase::Trace        ? "trace"
-                            : x.phase == control::Phase::Transition ? "transition"
-                                                                    : "travel";
-        nlohmann::json sample = {
-            {"t", x.t}, {"phase", phase}, {"primitive", x.primitive}, {"q", x.q}};
-        if (!x.qd.empty()) sample["qd"] = x.qd;
-        if (!x.qdd.empty()) sample["qdd"] = x.qdd;
-        if (strokes) sample["stroke"] = x.stroke;
-        samples.push_back(std::move(sample));
+    if (with_samples) {
+        for (const auto& x : s.samples) {
+            nlohmann::json sample = {
+                {"t", x.t}, {"phase", phase_name(x.phase)}, {"primitive", x.primitive}, {"q", x.q}};
+            if (!x.qd.empty()) sample["qd"] = x.qd;
+            if (!x.qdd.empty()) sample["qdd"] = x.qdd;
+            if (strokes) sample["stroke"] = x.stroke;
+            samples.push_back(std::move(sample));
+        }
     }
     doc["samples"] = std::move(samples);
     const auto& c = s.certificate;
@@ -131,8 +204,25 @@ nlohmann::json to_json(const synth::Solution& s) {
     return doc;
 }
 
+}  // namespace
+
+nlohmann::json to_json(const synth::Solution& s) { return document(s, true); }
+
 void write_solution(const synth::Solution& solution, const std::string& path) {
-    write_file_atomically(path, to_json(solution).dump(1) + '\n');
+    // A motion has up to ~10^6 samples: building a JSON value per sample
+    // took longer than the rest of a solve on long tasks, past the time
+    // limit. The samples are written straight into the text that
+    // `to_json(solution).dump(1)` gives, byte for byte.
+    std::string text = document(solution, false).dump(1);
+    const std::string empty = "\n \"samples\": []";
+    const std::size_t at = text.find(empty);
+    if (at == std::string::npos || solution.samples.empty())
+        return write_file_atomically(path, text + '\n');
+    std::string samples = "\n \"samples\": [";
+    append_samples(samples, solution.samples);
+    samples += "\n ]";
+    text.replace(at, empty.size(), samples);
+    write_file_atomically(path, text + '\n');
 }
 
 }  // namespace modsynth::io

@@ -60,7 +60,8 @@ Frame fit_frame(const task::Task& task, const synth::Solution& solution, double 
 }
 
 std::string n2(double v) {
-    const std::string s = text::format("%.2f", v);
+    std::string s;
+    text::append_fixed(s, v, 2);
     return s == "-0.00" ? "0.00" : s;
 }
 

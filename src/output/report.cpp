@@ -288,10 +288,16 @@ std::string controls(bool comparison) {
 
 /// The motion for the script: numbers only, so it can sit in a script element.
 std::string motion_data(const task::Task& task, const synth::Solution& s, const Frame& f) {
-    const auto list = [](const auto& values, const char* format) {
+    // One number per sample and joint: formatted without printf's cost.
+    const auto list = [](const auto& values, char style, int digits) {
         std::string out = "[";
-        for (std::size_t i = 0; i < values.size(); ++i)
-            out += (i ? "," : "") + text::format(format, values[i]);
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            if (i) out += ',';
+            if (style == 'f')
+                text::append_fixed(out, values[i], digits);
+            else
+                text::append_general(out, values[i], digits);
+        }
         return out + "]";
     };
     std::vector<double> t, q, ph, pr;
@@ -314,12 +320,12 @@ std::string motion_data(const task::Task& task, const synth::Solution& s, const 
     }
     return "<script type=\"application/json\" id=\"motion-data\">{\"base\":[" +
            text::format("%.9g", s.robot.base.x()) + "," + text::format("%.9g", s.robot.base.y()) +
-           "],\"L\":" + list(s.robot.link_lengths, "%.9g") +
+           "],\"L\":" + list(s.robot.link_lengths, 'g', 9) +
            ",\"f\":{\"x0\":" + text::format("%.9g", f.min.x()) +
            ",\"y1\":" + text::format("%.9g", f.max.y()) +
            ",\"s\":" + text::format("%.9g", f.scale) + ",\"p\":" + text::format("%.9g", f.pad) +
-           "},\"t\":" + list(t, "%.6f") + ",\"q\":" + list(q, "%.6f") +
-           ",\"ph\":" + list(ph, "%.0f") + ",\"pr\":" + list(pr, "%.0f") + names + "}</script>\n";
+           "},\"t\":" + list(t, 'f', 6) + ",\"q\":" + list(q, 'f', 6) +
+           ",\"ph\":" + list(ph, 'f', 0) + ",\"pr\":" + list(pr, 'f', 0) + names + "}</script>\n";
 }
 
 std::string header(const task::Task& task, const synth::Solution& s) {

@@ -1,5 +1,7 @@
 #include <modsynth/text/format.h>
 
+#include <array>
+#include <charconv>
 #include <cstdarg>
 #include <cstdio>
 
@@ -16,6 +18,26 @@ std::string format(const char* pattern, ...) {
     if (n > 0) std::vsnprintf(out.data(), out.size() + 1, pattern, again);
     va_end(again);
     return out;
+}
+
+void append_fixed(std::string& out, double v, int digits) {
+    std::array<char, 512> buf{};
+    const auto r =
+        std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::fixed, digits);
+    if (r.ec == std::errc{})
+        out.append(buf.data(), r.ptr);
+    else
+        out += format("%.*f", digits, v);
+}
+
+void append_general(std::string& out, double v, int digits) {
+    std::array<char, 64> buf{};
+    const auto r =
+        std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, digits);
+    if (r.ec == std::errc{})
+        out.append(buf.data(), r.ptr);
+    else
+        out += format("%.*g", digits, v);
 }
 
 }  // namespace modsynth::text

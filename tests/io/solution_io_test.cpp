@@ -1,7 +1,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 
 #include <nlohmann/json.hpp>
 
@@ -267,4 +270,29 @@ TEST_CASE("a spatial solution's DH robot round-trips and is checked", "[io]") {
     CHECK(part_of(with("/robot/dh/1/alpha", "flat")) == "robot.dh[1].alpha");
     CHECK(part_of(with("/robot/link_diameter", 0)) == "robot.link_diameter");
     CHECK(part_of(with("/samples/0/q", json::array({0.1, 0.2}))) == "samples[0].q");
+}
+
+TEST_CASE("a written solution file is the JSON document's text", "[output]") {
+    // write_solution writes the samples without building a JSON value per
+    // sample; the file must still be to_json(solution).dump(1), byte for byte.
+    const auto task = testing::three_joint_task();
+    Solution a = testing::three_joint_solution(task);
+    REQUIRE(a.samples.size() >= 3);
+    a.samples[0].qd = {0.0, -1.5, 2.0};
+    a.samples[0].qdd = {1e-7, 3.0, -0.0};
+    a.samples[1].qd = {std::nan(""), 1e300, -2.25};
+    a.samples[1].stroke = 1;
+    a.samples[2].phase = modsynth::control::Phase::Travel;
+    a.samples[2].t = 1.0 / 3.0;
+    const auto dir = std::filesystem::temp_directory_path() / "modsynth-solution-text-test";
+    std::filesystem::create_directories(dir);
+    for (const auto& s : {a, Solution{}}) {
+        const std::string path = (dir / "solution.json").string();
+        modsynth::io::write_solution(s, path);
+        std::ifstream in(path, std::ios::binary);
+        const std::string text((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+        CHECK(text == to_json(s).dump(1) + "\n");
+    }
+    std::filesystem::remove_all(dir);
 }

@@ -15,6 +15,22 @@ TEST_CASE("format writes printf patterns of any length") {
     CHECK(format("<%s>", long_text.c_str()) == "<" + long_text + ">");
 }
 
+TEST_CASE("append_fixed and append_general write what printf writes") {
+    using modsynth::text::append_fixed;
+    using modsynth::text::append_general;
+    using modsynth::text::format;
+    for (double v : {0.0, -0.0, 1.0, -2.5, 0.125, 1.0 / 3.0, 1e-7, -1e-300, 123456.789, 1e21,
+                     -1.7e308, 0.0049999, 2.675, 1e300}) {
+        for (int digits : {0, 2, 6, 9}) {
+            std::string fixed, general;
+            append_fixed(fixed, v, digits);
+            append_general(general, v, digits);
+            CHECK(fixed == format("%.*f", digits, v));
+            CHECK(general == format("%.*g", digits, v));
+        }
+    }
+}
+
 TEST_CASE("markdown_literal shows markup as the characters it is") {
     CHECK(markdown_literal("rose") == "rose");
     CHECK(markdown_literal("*bold* _x_ [a](b)") == "\\*bold\\* \\_x\\_ \\[a\\]\\(b\\)");

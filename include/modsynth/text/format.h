@@ -8,4 +8,12 @@ namespace modsynth::text {
 
 std::string format(const char* pattern, ...) __attribute__((format(printf, 1, 2)));
 
+/// `v` with `digits` decimals appended to `out`, the text of
+/// format("%.*f", digits, v) without printf's cost: reports write one
+/// number per sample and joint.
+void append_fixed(std::string& out, double v, int digits);
+
+/// The text of format("%.9g", v), appended to `out`.
+void append_general(std::string& out, double v, int digits);
+
 }  // namespace modsynth::text
