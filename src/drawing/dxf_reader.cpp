@@ -630,6 +630,11 @@ private:
                         c.segments.push_back(transformed(seg, world));
                     add_model_curve(std::move(c));
                 }
+                // Copies of a block of many skipped entities count as much.
+                instances_ += block.skips.size();
+                if (instances_ > kMaxInstances)
+                    throw InputError(r.label, "more than " + std::to_string(kMaxInstances) +
+                                                  " block copies and entities: too many to draw");
                 for (const BlockSkip& skip : block.skips)
                     skipped_piece(skip.degenerate, skip.kind, skip.label + " in " + r.label);
                 for (const InsertRef& inner : block.inserts) expand(inner, world, layer, stack);

@@ -313,6 +313,12 @@ TEST_CASE("DXF: a block that inserts itself is refused by name", "[drawing][dxf]
                Catch::Contains("block 'A' inserts itself (A -> B -> A)"));
     CHECK_THAT(message_of([&] { read_dxf(dxf_with_blocks(blocks, insert("C", "") + kLine)); }),
                Catch::Contains("INSERT #1 (layer 0)") && Catch::Contains("no block named 'C'"));
+    // Arrays of a block of things not drawn cannot take long either.
+    std::string points;
+    for (int i = 0; i < 10; ++i) points += "0\nPOINT\n8\n0\n10\n1\n20\n1\n";
+    const std::string many = dxf_with_blocks(
+        block("P", 0, 0, points), kLine + insert("P", "10\n0\n20\n0\n70\n200\n71\n100\n"));
+    CHECK_THAT(message_of([&] { read_dxf(many); }), Catch::Contains("too many to draw"));
 }
 
 TEST_CASE("DXF: TEXT and MTEXT are written in a Hershey font", "[drawing][dxf][text]") {
