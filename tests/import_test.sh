@@ -130,8 +130,17 @@ echo '{"format": "modsynth-task/1"}' >"$tmp/notsvg.svg"
 expect_error "$tmp/notsvg.svg" "not an SVG file"
 echo 'hello' >"$tmp/notdxf.dxf"
 expect_error "$tmp/notdxf.dxf" "not a DXF file"
-printf '0\nSECTION\n2\nENTITIES\n0\nTEXT\n8\n0\n10\n0\n20\n0\n40\n1\n1\nHi\n0\nENDSEC\n0\nEOF\n' >"$tmp/text.dxf"
-expect_error "$tmp/text.dxf" "TEXT"
+printf '0\nSECTION\n2\nENTITIES\n0\nHATCH\n8\n0\n10\n0\n20\n0\n0\nENDSEC\n0\nEOF\n' >"$tmp/hatch.dxf"
+expect_error "$tmp/hatch.dxf" "nothing to draw" "HATCH #1 (layer 0)"
+# With --strict, what cannot be traced is refused even beside what can.
+printf '0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n0\n10\n0\n20\n0\n11\n100\n21\n0\n0\nHATCH\n8\n0\n0\nENDSEC\n0\nEOF\n' >"$tmp/hatchline.dxf"
+"$bin" import "$tmp/hatchline.dxf" --scale 0.001 -o "$tmp/hl.json" >"$tmp/out" 2>"$tmp/err" ||
+  fail "hatchline.dxf: not imported: $(cat "$tmp/err")"
+grep -qF "warning: skipped what cannot be traced: HATCH #2 (layer 0)" "$tmp/err" ||
+  fail "hatchline.dxf: no warning: $(cat "$tmp/err")"
+"$bin" import "$tmp/hatchline.dxf" --strict --scale 0.001 -o "$tmp/hl.json" >"$tmp/out" 2>"$tmp/err"
+[ $? -eq 2 ] && grep -qF "entities that cannot be drawn: HATCH" "$tmp/err" ||
+  fail "hatchline.dxf --strict: not refused: $(cat "$tmp/err")"
 # A few bytes that declare 200 million vertices or knots: refused at once,
 # before the DXF library sizes its arrays from them.
 printf '0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n90\n200000000\n10\n0\n20\n0\n10\n1\n20\n1\n0\nENDSEC\n0\nEOF\n' >"$tmp/vertices.dxf"
@@ -162,5 +171,18 @@ for drawing in sketch.svg bracket.dxf; do
             --expect solved >"$tmp/grade" 2>&1 || fail "imported $drawing: $(tail -2 "$tmp/grade")"
     fi
 done
+
+# Text in a single-stroke font: a task that solves and passes the grader.
+"$bin" import --text "Hi" --height 0.05 -o "$tmp/solve-text.json" --at 0.3,0.1 \
+    --base -0.1,-0.1,0.1,0.1 >"$tmp/out" 2>&1 || fail "import --text: $(cat "$tmp/out")"
+grep -q "^--text -> .*: [0-9]* strokes" "$tmp/out" || fail "import --text: $(cat "$tmp/out")"
+timeout 120 "$bin" solve "$tmp/solve-text.json" -o "$tmp/solve-text.sol.json" --quiet \
+    >"$tmp/out" 2>&1 || fail "solve the text: exit $?: $(tail -3 "$tmp/out")"
+if [ -f "$grader_py" ]; then
+    python3 "$grader_py" "$tmp/solve-text.json" "$tmp/solve-text.sol.json" --expect solved \
+        >"$tmp/grade" 2>&1 || fail "text: $(tail -2 "$tmp/grade")"
+fi
+"$bin" import --text "Hi" --font nosuch -o "$tmp/t.json" >"$tmp/out" 2>"$tmp/err"
+[ $? -eq 2 ] && grep -qF "no Hershey font 'nosuch'" "$tmp/err" || fail "--font nosuch: $(cat "$tmp/err")"
 
 finish import

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/drawing/hershey_text.h>
 #include <modsynth/drawing/import.h>
 #include <modsynth/drawing/svg_writer.h>
 #include <modsynth/io/atomic_file.h>
@@ -19,6 +20,7 @@
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/printable.h>
 
 #include "command.h"
 #include "imported_task.h"
@@ -35,11 +37,15 @@ using task::InputError;
 
 struct ImportArgs {
     std::string input, output, name, reply;
+    std::string text, font = drawing::kDefaultFont;
+    double height = 0.03;
     double width = 0.0, scale = 0.0, rotate = 0.0, tolerance = 1e-4;
     double time_limit = 60.0;
     std::vector<double> at;
     std::vector<std::vector<double>> bases;
     std::string obstacle_layer;
+    std::vector<std::string> layers;
+    bool strict = false;
     std::vector<int> dof;
     double link_diameter = -1.0;
     bool keep_order = false;
@@ -67,6 +73,24 @@ void write_error_reply(const ImportArgs& a, const std::string& message, const st
     io::write_file_atomically(a.reply, body.dump() + "\n");
 }
 
+/// --text: the text in a Hershey font, its capitals --height metres tall,
+/// the first line's baseline starting at the origin.
+drawing::Drawing text_drawing(const ImportArgs& a) {
+    drawing::TextLayout layout;
+    layout.font = a.font;
+    layout.height = a.height;
+    drawing::TextCurves t = drawing::text_curves(a.text, Vec2::Zero(), layout, "--text", "--font");
+    if (!t.missing.empty()) {
+        throw InputError("--text", "the font '" + a.font + "' has no glyph for '" +
+                                       text::printable(t.missing, 40) + "'");
+    }
+    if (t.curves.empty()) throw InputError("--text", "nothing to draw");
+    drawing::Drawing d;
+    d.curves = std::move(t.curves);
+    d.metres_per_unit = 1.0;
+    return d;
+}
+
 // Past the time limit by this much, the watchdog answers for the import.
 constexpr double kWatchdogMargin = 0.6;
 
@@ -85,9 +109,13 @@ int run_import(ImportArgs& a) {
     // even inside a library call that does not return.
     Watchdog watchdog(a.time_limit + kWatchdogMargin,
                       [&] { return timed_out("the import did not stop at its deadline"); });
-    if (a.name.empty()) a.name = file_stem(a.input);
+    const bool from_text = !a.text.empty();
+    if (from_text) a.input = "--text";
+    if (a.name.empty()) a.name = from_text ? "text" : file_stem(a.input);
     drawing::ImportOptions options;
     options.read.obstacle_layer = a.obstacle_layer;
+    options.read.layers = a.layers;
+    options.read.strict = a.strict;
     if (a.width > 0.0) options.placement.width = a.width;
     if (a.scale > 0.0) options.placement.scale = a.scale;
     if (!a.at.empty()) options.placement.at = Vec2(a.at[0], a.at[1]);
@@ -98,10 +126,15 @@ int run_import(ImportArgs& a) {
     drawing::ImportResult r;
     nlohmann::json doc, reply;
     try {
-        const drawing::DrawingFormat format = drawing::format_of(a.input);
-        const std::string text = io::read_input_file(a.input, "drawing", drawing::kMaxDrawingBytes);
         try {
-            r = drawing::import_drawing(text, format, options);
+            if (from_text) {
+                r = drawing::import_drawing(text_drawing(a), options);
+            } else {
+                const drawing::DrawingFormat format = drawing::format_of(a.input);
+                const std::string text =
+                    io::read_input_file(a.input, "drawing", drawing::kMaxDrawingBytes);
+                r = drawing::import_drawing(text, format, options);
+            }
         } catch (const InputError& e) {
             // Name the file too: "drawing.svg: path#p3 (line 12): ...".
             write_error_reply(a, e.what(), e.part());
@@ -140,6 +173,14 @@ int run_import(ImportArgs& a) {
     std::printf("deviation: %.3g m (tolerance %.3g m)\n", r.deviation, a.tolerance);
     std::printf("primitives per stroke: %s\n", counts.c_str());
     std::printf("travel: %.6g m\n", r.travel);
+    if (!r.layers.empty()) {
+        std::string layers;
+        for (const auto& [name, count] : r.layers)
+            layers += (layers.empty() ? "" : ", ") + text::printable(name) + " (" +
+                      std::to_string(count) + ")";
+        std::printf("layers (entities): %s\n", layers.c_str());
+    }
+    for (const std::string& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     return kOk;
 }
 
@@ -161,7 +202,18 @@ Command add_import(CLI::App& parent) {
     auto a = std::make_shared<ImportArgs>();
     CLI::App* sub = parent.add_subcommand(
         "import", "Make a task from a drawing (SVG or DXF): its curves as lines and arcs");
-    sub->add_option("DRAWING", a->input, "drawing.svg or drawing.dxf")->required();
+    auto* input = sub->add_option("DRAWING", a->input, "drawing.svg or drawing.dxf");
+    auto* text = sub->add_option("--text", a->text,
+                                 "write this text (instead of a drawing) in a single-stroke font")
+                     ->excludes(input);
+    input->excludes(text);
+    sub->add_option("--font", a->font,
+                    std::string("Hershey font of --text (default ") + drawing::kDefaultFont +
+                        "; any of /usr/share/hershey-fonts)")
+        ->needs(text);
+    sub->add_option("--height", a->height, "capital height of --text, metres (default 0.03)")
+        ->check(within(1e-6, 1e3))
+        ->needs(text);
     sub->add_option("-o,--output", a->output, "task file to write")->required();
     auto* width =
         sub->add_option("--width", a->width, "drawing width in metres")->check(positive());
@@ -189,6 +241,10 @@ Command add_import(CLI::App& parent) {
     sub->add_option(
         "--obstacles-from", a->obstacle_layer,
         "layer (SVG group id or inkscape:label, DXF layer) whose circles are obstacles");
+    sub->add_option("--layers", a->layers, "A,B: import only these DXF layers")->delimiter(',');
+    sub->add_flag("--strict", a->strict,
+                  "refuse what cannot be traced (text without a font, hatches, dimensions, "
+                  "points, images, 3D solids, degenerate pieces) instead of skipping it");
     sub->add_option("--name", a->name, "task name (default: the file name)");
     sub->add_option("--dof", a->dof, "allowed joint counts, e.g. 2,3")->delimiter(',');
     sub->add_option("--link-diameter", a->link_diameter, "tube diameter, metres")
@@ -199,6 +255,8 @@ Command add_import(CLI::App& parent) {
     // its error) as JSON. Not for users: no help line.
     sub->add_option("--reply", a->reply)->group("");
     return {sub, [a] {
+                if (a->input.empty() && a->text.empty())
+                    throw InputError("DRAWING", "give a drawing file or --text");
                 for (const auto& b : a->bases) {
                     if (b.size() != 4 || !(b[0] <= b[2]) || !(b[1] <= b[3])) {
                         throw InputError("--base", "expected xmin,ymin,xmax,ymax with min <= max");

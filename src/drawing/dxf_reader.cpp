@@ -17,6 +17,7 @@
 #include <dxflib/dl_creationadapter.h>
 #include <dxflib/dl_dxf.h>
 
+#include <modsynth/drawing/hershey_text.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/text/printable.h>
 
@@ -59,49 +60,92 @@ public:
 
     Drawing finish() {
         close_open();
+        for (const InsertRef& r : model_inserts_) {
+            std::vector<std::string> stack;
+            expand(r, Affine{}, r.layer, stack);
+        }
         if (!unsupported_.empty()) {
-            std::string list;
-            for (const auto& [name, count] : unsupported_) {
-                list += (list.empty() ? "" : ", ") + name +
-                        (count > 1 ? " (" + std::to_string(count) + "x)" : "");
+            if (options_.strict) {
+                std::string list;
+                for (const auto& [name, s] : unsupported_) {
+                    list += (list.empty() ? "" : ", ") + name +
+                            (s.count > 1 ? " (" + std::to_string(s.count) + "x)" : "");
+                }
+                throw InputError("(document)",
+                                 "entities that cannot be drawn: " + list + " (--strict)");
             }
-            throw InputError("(document)", "entities that cannot be drawn: " + list);
+            drawing_.warnings.push_back("skipped what cannot be traced: " + listed(unsupported_));
+        }
+        if (!degenerate_.empty())
+            drawing_.warnings.push_back("skipped degenerate pieces: " + listed(degenerate_));
+        for (const std::string& layer : options_.layers) {
+            if (!drawing_.layers.count(layer)) {
+                std::string found;
+                for (const auto& [name, count] : drawing_.layers) {
+                    found += (found.empty() ? "" : ", ") + text::printable(name) + " (" +
+                             std::to_string(count) + ")";
+                }
+                throw InputError("--layers", "no layer '" + text::printable(layer) +
+                                                 "' in the drawing; its layers: " + found);
+            }
         }
         if (!options_.obstacle_layer.empty() && !layer_seen_) {
             throw InputError("(document)", "no layer '" + text::printable(options_.obstacle_layer) +
                                                "' (--obstacles-from)");
         }
-        if (drawing_.curves.empty())
-            throw InputError("(document)", "empty drawing: nothing to draw");
+        if (drawing_.curves.empty()) {
+            throw InputError("(document)",
+                             "empty drawing: nothing to draw" +
+                                 (drawing_.warnings.empty() ? std::string()
+                                                            : " (" + drawing_.warnings[0] + ")"));
+        }
         drawing_.metres_per_unit = metres_per_insunit(insunits_);
         return std::move(drawing_);
     }
 
-    /// Entities dxflib does not read at all, counted before it ran.
-    void add_unread(const std::map<std::string, int>& unread) {
-        for (const auto& [name, count] : unread) unsupported_[name] += count;
+    /// Entities dxflib does not read at all, found before it ran, with the
+    /// lines they begin on.
+    void add_unread(const std::map<std::string, std::vector<std::size_t>>& unread) {
+        for (const auto& [name, lines] : unread) {
+            for (std::size_t line : lines)
+                note(unsupported_, name, name + " (line " + std::to_string(line) + ")");
+        }
     }
 
     void setVariableInt(const std::string& key, int value, int) override {
         if (key == "$INSUNITS") insunits_ = value;
     }
 
-    // Entities inside a block are drawn only where an INSERT places them,
-    // which is not supported: they are not part of the drawing itself.
-    void addBlock(const DL_BlockData&) override {
+    // Entities inside a block are drawn only where an INSERT places them:
+    // they are kept with the block, and drawn as finish() expands the
+    // inserts.
+    void addBlock(const DL_BlockData& d) override {
         close_open();
         in_block_ = true;
+        block_name_ = d.name;
+        block_count_ = 0;
+        block_ = &blocks_[d.name];
+        *block_ = Block{Vec2(d.bpx, d.bpy), {}, {}, {}};
     }
-    void endBlock() override { in_block_ = false; }
-    void endSection() override { close_open(); }
+    void endBlock() override {
+        close_open();
+        in_block_ = false;
+        block_ = nullptr;
+    }
+    // dxflib calls endSection() after every entity, a POLYLINE's header
+    // included: its VERTEX entities come after it. A polyline ends where
+    // its vertices do (endEntity: after an LWPOLYLINE's last vertex or a
+    // POLYLINE's last VERTEX; endSequence: its SEQEND).
+    void endSection() override { close_spline(); }
+    void endEntity() override { close_open(); }
+    void endSequence() override { close_open(); }
 
     void addLine(const DL_LineData& d) override {
         if (!begin("LINE")) return;
         add_curve({LineSegment{Vec2(d.x1, d.y1), Vec2(d.x2, d.y2)}});
     }
     void addArc(const DL_ArcData& d) override {
-        if (!begin("ARC")) return;
-        require_positive_radius(d.radius);
+        if (!begin("ARC") || !positive_radius(d.radius)) return;
         // Counter-clockwise from angle1 to angle2, less than a turn apart
         // (equal angles: a full turn), whatever multiples of 360 they hold.
         const double a1 = std::fmod(d.angle1, 360.0);
@@ -110,11 +154,10 @@ public:
                                    a1 * kDegree, (a1 + sweep) * kDegree})});
     }
     void addCircle(const DL_CircleData& d) override {
-        if (!begin("CIRCLE")) return;
-        require_positive_radius(d.radius);
+        if (!begin("CIRCLE") || !positive_radius(d.radius)) return;
         const EllipticArc circle{Vec2(d.cx, d.cy), Vec2(d.radius, 0.0), Vec2(0.0, d.radius), 0.0,
                                  geometry::kTau};
-        if (on_obstacle_layer()) {
+        if (!in_block_ && on_obstacle_layer()) {
             const EllipticArc c = std::get<EllipticArc>(ocs(circle));
             check_point(c.center);
             drawing_.obstacles.push_back({c.center, d.radius});
@@ -135,8 +178,14 @@ public:
                                a1 + sweep}});
     }
     void addPolyline(const DL_PolylineData& d) override {
-        if (!begin("LWPOLYLINE")) return;
-        polyline_ = OpenPolyline{label_, (d.flags & 1) != 0, {}};
+        // A polygon or polyface mesh is a 3D surface, its vertices faces.
+        if (d.flags & (16 | 64)) {
+            unsupported("POLYLINE (3D mesh)");
+            return;
+        }
+        // Only an LWPOLYLINE counts its vertices (group 90).
+        if (!begin(d.number > 0 ? "LWPOLYLINE" : "POLYLINE")) return;
+        polyline_ = OpenPolyline{label_, layer_, (d.flags & 1) != 0, {}};
     }
     void addVertex(const DL_VertexData& d) override {
         if (!polyline_) return;
@@ -150,7 +199,8 @@ public:
                  std::to_string(kMaxSplineDegree));
         }
         if (d.nControl > kMaxSplineControlPoints) fail("too many control points");
-        spline_ = OpenSpline{label_, BSpline{static_cast<int>(d.degree), {}, {}, {}}, d.nFit};
+        spline_ =
+            OpenSpline{label_, layer_, BSpline{static_cast<int>(d.degree), {}, {}, {}}, d.nFit};
     }
     void addControlPoint(const DL_ControlPointData& d) override {
         if (!spline_) return;
@@ -168,17 +218,60 @@ public:
     }
 
     // What cannot be drawn, by name.
+    // A point is a dot, which a stroke of the tool cannot make.
     void addPoint(const DL_PointData&) override { unsupported("POINT"); }
     void addXLine(const DL_XLineData&) override { unsupported("XLINE"); }
     void addRay(const DL_RayData&) override { unsupported("RAY"); }
-    void addInsert(const DL_InsertData&) override { unsupported("INSERT (block reference)"); }
+    void addInsert(const DL_InsertData& d) override {
+        if (!begin("INSERT")) return;
+        InsertRef r{d, layer_, label_, extrusion_negative_};
+        if (block_) {
+            block_->inserts.push_back(std::move(r));
+        } else {
+            model_inserts_.push_back(std::move(r));
+        }
+    }
     void addTrace(const DL_TraceData&) override { unsupported("TRACE"); }
     void add3dFace(const DL_3dFaceData&) override { unsupported("3DFACE"); }
     void addSolid(const DL_SolidData&) override { unsupported("SOLID"); }
-    void addMText(const DL_MTextData&) override { unsupported("MTEXT (explode text first)"); }
-    void addText(const DL_TextData&) override { unsupported("TEXT (explode text first)"); }
-    void addAttribute(const DL_AttributeData&) override {
-        unsupported("ATTRIB (explode text first)");
+    // Text, in the Hershey font nearest the style's (hershey_text.h).
+    void addTextStyle(const DL_StyleData& d) override {
+        std::string file = d.primaryFontFile;
+        std::transform(file.begin(), file.end(), file.begin(),
+                       [](unsigned char c) { return std::tolower(c); });
+        file = file.substr(0, file.rfind('.'));
+        styles_[d.name] = hershey_font_for(file);
+    }
+    void addText(const DL_TextData& d) override {
+        if (begin("TEXT")) add_text(d);
+    }
+    void addAttribute(const DL_AttributeData& d) override {
+        if (begin("ATTRIB")) add_text(d);
+    }
+    void addMTextChunk(const std::string& chunk) override {
+        if (mtext_chunks_.size() + chunk.size() <= kMaxTextBytes) mtext_chunks_ += chunk;
+    }
+    void addMText(const DL_MTextData& d) override {
+        std::string whole = std::move(mtext_chunks_);
+        mtext_chunks_.clear();
+        if (!begin("MTEXT")) return;
+        whole += d.text;
+        TextLayout layout = text_style(d.style, d.height);
+        if (!layout_ok(layout)) return;
+        layout.line_spacing *=
+            d.lineSpacingFactor > 0.0 && d.lineSpacingFactor <= 4.0 ? d.lineSpacingFactor : 1.0;
+        // The direction vector, when given, decides the rotation (dxflib
+        // turns one pointing left half a turn wrong).
+        layout.rotation = d.dirx != 0.0 || d.diry != 0.0 ? std::atan2(d.diry, d.dirx) : d.angle;
+        const int attachment =
+            d.attachmentPoint >= 1 && d.attachmentPoint <= 9 ? d.attachmentPoint - 1 : 0;
+        layout.vertical = attachment / 3 == 0   ? TextLayout::Vertical::Top
+                          : attachment / 3 == 1 ? TextLayout::Vertical::Middle
+                                                : TextLayout::Vertical::Bottom;
+        layout.horizontal = attachment % 3 == 0   ? TextLayout::Horizontal::Left
+                            : attachment % 3 == 1 ? TextLayout::Horizontal::Center
+                                                  : TextLayout::Horizontal::Right;
+        draw_text(mtext_plain(whole), Vec2(d.ipx, d.ipy), layout);
     }
     void addArcAlignedText(const DL_ArcAlignedTextData&) override { unsupported("ARCALIGNEDTEXT"); }
     void addDimAlign(const DL_DimensionData&, const DL_DimAlignedData&) override {
@@ -207,17 +300,389 @@ public:
     void addImage(const DL_ImageData&) override { unsupported("IMAGE"); }
 
 private:
+    static constexpr std::size_t kMaxTextBytes = 1u << 16;
+
+    /// The Hershey font for an SHX or TrueType font's name: AutoCAD's
+    /// roman, script, greek and gothic SHX fonts are Hershey's; anything
+    /// else is written in the simplex sans serif.
+    static std::string hershey_font_for(const std::string& file) {
+        static const std::map<std::string, std::string, std::less<>> kNear = {
+            {"romans", "rowmans"},    {"romand", "rowmand"},    {"romant", "rowmant"},
+            {"romanc", "timesr"},     {"italicc", "timesi"},    {"italic", "timesi"},
+            {"italict", "timesi"},    {"scripts", "scripts"},   {"scriptc", "scriptc"},
+            {"greeks", "greeks"},     {"greekc", "greekc"},     {"gothice", "gothiceng"},
+            {"gothicg", "gothicger"}, {"gothici", "gothicita"}, {"cyrillic", "cyrillic"},
+            {"cyriltlc", "cyrilc_1"}, {"times", "timesr"},      {"timesbd", "timesrb"},
+            {"timesi", "timesi"},     {"timesbi", "timesib"}};
+        const auto found = kNear.find(file);
+        return found == kNear.end() ? kDefaultFont : found->second;
+    }
+
+    TextLayout text_style(const std::string& style, double height) const {
+        TextLayout layout;
+        const auto found = styles_.find(style);
+        if (found != styles_.end()) layout.font = found->second;
+        layout.height = height;
+        return layout;
+    }
+
+    /// A text of no height draws nothing; one of a height beyond the
+    /// drawing's range is malformed.
+    bool layout_ok(const TextLayout& layout) {
+        if (layout.height == 0.0) {
+            degenerate(label_, "zero text height");
+            return false;
+        }
+        if (!(layout.height > 0.0) || layout.height > kMaxDrawingCoordinate)
+            fail("text height " + text::compact(layout.height) + ": it must be positive");
+        return true;
+    }
+
+    /// TEXT and ATTRIB: one line, placed by its justification (group codes
+    /// 72 and 73/74) at the insertion point or the alignment point.
+    void add_text(const DL_TextData& d) {
+        TextLayout layout = text_style(d.style, d.height);
+        if (!layout_ok(layout)) return;
+        layout.rotation = d.angle;
+        if (std::isfinite(d.xScaleFactor) && d.xScaleFactor > 0.0 && d.xScaleFactor <= 100.0)
+            layout.width_factor = d.xScaleFactor;
+        if (d.textGenerationFlags & 2) layout.width_factor = -layout.width_factor;  // mirrored
+        Vec2 at(d.ipx, d.ipy);
+        const std::string line = text_plain(d.text);
+        const int h = d.hJustification, v = d.vJustification;
+        if (h == 3 || h == 5) {
+            // Aligned (3) or fit (5) between the two points: the baseline
+            // runs from one to the other; aligned keeps the proportions.
+            const Vec2 along = Vec2(d.apx, d.apy) - at;
+            if (along.norm() > 0.0) {
+                layout.rotation = std::atan2(along.y(), along.x());
+                const double natural = text_width(line, layout);
+                if (natural > 0.0) {
+                    if (h == 5) {
+                        layout.width_factor *= along.norm() / natural;
+                    } else {
+                        layout.height *= along.norm() / natural;
+                    }
+                }
+            }
+        } else if (h != 0 || v != 0) {
+            at = Vec2(d.apx, d.apy);
+            layout.horizontal = h == 1 || h == 4 ? TextLayout::Horizontal::Center
+                                : h == 2         ? TextLayout::Horizontal::Right
+                                                 : TextLayout::Horizontal::Left;
+            layout.vertical = h == 4 || v == 2 ? TextLayout::Vertical::Middle
+                              : v == 1         ? TextLayout::Vertical::Bottom
+                              : v == 3         ? TextLayout::Vertical::Top
+                                               : TextLayout::Vertical::Baseline;
+        }
+        draw_text(line, at, layout);
+    }
+
+    double text_width(const std::string& line, const TextLayout& layout) const {
+        TextLayout flat = layout;
+        flat.rotation = 0.0;
+        double lo = 0.0, hi = 0.0;
+        bool any = false;
+        for (const Curve& c : text_curves(line, Vec2::Zero(), flat, label_).curves) {
+            for (const Segment& s : c.segments) {
+                for (const Vec2& p : {start_point(s), end_point(s)}) {
+                    lo = any ? std::min(lo, p.x()) : p.x();
+                    hi = any ? std::max(hi, p.x()) : p.x();
+                    any = true;
+                }
+            }
+        }
+        return hi - lo;
+    }
+
+    void draw_text(const std::string& text, const Vec2& at, const TextLayout& layout) {
+        TextCurves t = text_curves(text, at, layout, label_, label_);
+        if (!t.missing.empty())
+            note(unsupported_, "characters without a glyph",
+                 label_ + " ('" + text::printable(t.missing, 40) + "')");
+        for (Curve& c : t.curves) add_curve(std::move(c.segments));
+    }
+
+    /// DXF's control codes in a TEXT: %%d, %%p and %%c are the degree,
+    /// plus-minus and diameter signs (which a Hershey ASCII font lacks:
+    /// they are reported), %%u and %%o toggle under- and overlining
+    /// (not drawn), %%% is a percent sign.
+    static std::string text_plain(const std::string& in) {
+        std::string out;
+        for (std::size_t i = 0; i < in.size(); ++i) {
+            if (in.compare(i, 2, "%%") == 0 && i + 2 < in.size()) {
+                const char code = static_cast<char>(std::tolower(in[i + 2]));
+                if (code == 'u' || code == 'o') {
+                    i += 2;
+                    continue;
+                }
+                if (code == '%' || code == 'd' || code == 'p' || code == 'c') {
+                    out += code == '%'   ? "%"
+                           : code == 'd' ? "\xC2\xB0"
+                           : code == 'p' ? "\xC2\xB1"
+                                         : "\xC3\x98";
+                    i += 2;
+                    continue;
+                }
+            }
+            out += in[i];
+        }
+        return out;
+    }
+
+    static void append_utf8(std::string& out, unsigned code) {
+        if (code < 0x80) {
+            out += static_cast<char>(code);
+        } else if (code < 0x800) {
+            out += static_cast<char>(0xC0 | (code >> 6));
+            out += static_cast<char>(0x80 | (code & 0x3F));
+        } else {
+            out += static_cast<char>(0xE0 | (code >> 12));
+            out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+            out += static_cast<char>(0x80 | (code & 0x3F));
+        }
+    }
+
+    /// MTEXT's inline formatting reduced to its text: \P breaks the line,
+    /// \~ is a space, \S stacks a fraction (written a/b), \U+XXXX is a
+    /// character; font, height, colour, width, tracking, slant and
+    /// alignment codes (\f..; \H..; \C..; ...), the underline and
+    /// overline toggles and the {} groups are formatting only.
+    static std::string mtext_plain(const std::string& in) {
+        std::string out;
+        for (std::size_t i = 0; i < in.size(); ++i) {
+            const char c = in[i];
+            if (c == '{' || c == '}') continue;
+            if (c != '\\' || i + 1 >= in.size()) {
+                out += c;
+                continue;
+            }
+            const char k = in[++i];
+            switch (k) {
+                case 'P':
+                case 'X':
+                    out += '\n';
+                    break;
+                case '~':
+                    out += ' ';
+                    break;
+                case '\\':
+                case '{':
+                case '}':
+                    out += k;
+                    break;
+                case 'L':
+                case 'l':
+                case 'O':
+                case 'o':
+                case 'K':
+                case 'k':
+                case 'N':
+                    break;
+                case 'S': {
+                    const std::size_t end = in.find(';', i);
+                    std::string stacked = in.substr(
+                        i + 1, end == std::string::npos ? std::string::npos : end - i - 1);
+                    std::replace(stacked.begin(), stacked.end(), '^', '/');
+                    std::replace(stacked.begin(), stacked.end(), '#', '/');
+                    out += stacked;
+                    i = end == std::string::npos ? in.size() : end;
+                    break;
+                }
+                case 'U':
+                    if (in.compare(i + 1, 1, "+") == 0 && i + 6 <= in.size()) {
+                        unsigned code = 0;
+                        const auto [p, ec] =
+                            std::from_chars(in.data() + i + 2, in.data() + i + 6, code, 16);
+                        if (ec == std::errc() && p == in.data() + i + 6) {
+                            append_utf8(out, code);
+                            i += 5;
+                            break;
+                        }
+                    }
+                    out += k;
+                    break;
+                default: {
+                    // \f, \F, \H, \C, \c, \A, \W, \Q, \T, \p: up to ';'
+                    const std::size_t end = in.find(';', i);
+                    i = end == std::string::npos ? in.size() : end;
+                    break;
+                }
+            }
+        }
+        return text_plain(out);
+    }
+
+    /// What was skipped, of one kind: how many, and the first few by name.
+    struct Skipped {
+        std::size_t count = 0;
+        std::vector<std::string> where;
+    };
+    static constexpr std::size_t kNamedSkips = 3;
+
+    static void note(std::map<std::string, Skipped>& to, const std::string& kind,
+                     const std::string& where) {
+        Skipped& s = to[kind];
+        ++s.count;
+        if (s.where.size() < kNamedSkips) s.where.push_back(where);
+    }
+
+    /// "HATCH #4 (layer 0), HATCH #9 (layer 0) and 3 more; POINT #2 (layer 0)"
+    static std::string listed(const std::map<std::string, Skipped>& skipped) {
+        std::string out;
+        for (const auto& [kind, s] : skipped) {
+            std::string these;
+            for (const std::string& w : s.where) these += (these.empty() ? "" : ", ") + w;
+            if (s.count > s.where.size())
+                these += " and " + std::to_string(s.count - s.where.size()) + " more";
+            out += (out.empty() ? "" : "; ") + these;
+        }
+        return out;
+    }
+
+    /// A block's own curves with their layers ("0": the layer of the
+    /// INSERT that places them), the blocks it inserts, and what it holds
+    /// that cannot be traced, reported where it is inserted.
+    struct BlockCurve {
+        Curve curve;
+        std::string layer;
+    };
+    struct InsertRef {
+        DL_InsertData data;
+        std::string layer;
+        std::string label;
+        bool mirrored = false;
+    };
+    struct BlockSkip {
+        bool degenerate = false;
+        std::string kind, label;
+    };
+    struct Block {
+        Vec2 base = Vec2::Zero();
+        std::vector<BlockCurve> curves;
+        std::vector<InsertRef> inserts;
+        std::vector<BlockSkip> skips;
+    };
+    /// Block instances drawn, whatever they hold: nested arrays of empty
+    /// blocks would otherwise take as long as they multiply.
+    static constexpr std::size_t kMaxInstances = 100000;
+
+    bool layer_chosen(const std::string& layer) const {
+        return options_.layers.empty() || layer == options_.obstacle_layer ||
+               std::find(options_.layers.begin(), options_.layers.end(), layer) !=
+                   options_.layers.end();
+    }
+
+    /// Draws an INSERT: the block's curves through its transform, once per
+    /// cell of its column and row array, nested inserts within.
+    void expand(const InsertRef& r, const Affine& outer, const std::string& outer_layer,
+                std::vector<std::string>& stack) {
+        const DL_InsertData& d = r.data;
+        const auto found = blocks_.find(d.name);
+        if (found == blocks_.end())
+            throw InputError(r.label, "no block named '" + text::printable(d.name) + "'");
+        if (std::find(stack.begin(), stack.end(), d.name) != stack.end()) {
+            std::string chain;
+            for (const std::string& n : stack) chain += text::printable(n) + " -> ";
+            throw InputError(r.label, "block '" + text::printable(d.name) + "' inserts itself (" +
+                                          chain + text::printable(d.name) + ")");
+        }
+        for (double v : {d.ipx, d.ipy, d.sx, d.sy, d.angle, d.colSp, d.rowSp}) {
+            if (!std::isfinite(v) || std::abs(v) > kMaxDrawingCoordinate)
+                throw InputError(r.label, "a placement value out of range");
+        }
+        if (d.sx == 0.0 || d.sy == 0.0) {
+            skipped_piece(true, "zero scale", r.label);
+            return;
+        }
+        const long long cols = std::max(1, d.cols), rows = std::max(1, d.rows);
+        if (cols * rows > static_cast<long long>(kMaxInstances))
+            throw InputError(r.label, "an array of " + std::to_string(cols * rows) +
+                                          " copies: too many to draw");
+        const Block& block = found->second;
+        const std::string layer = r.layer == "0" ? outer_layer : r.layer;
+        const double a = d.angle * kDegree;
+        Eigen::Matrix2d rotation;
+        rotation << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+        const Eigen::Matrix2d m = rotation * Eigen::Vector2d(d.sx, d.sy).asDiagonal();
+        stack.push_back(d.name);
+        for (long long row = 0; row < rows; ++row) {
+            for (long long col = 0; col < cols; ++col) {
+                if (++instances_ > kMaxInstances)
+                    throw InputError(r.label, "more than " + std::to_string(kMaxInstances) +
+                                                  " block copies: too many to draw");
+                Affine local;
+                local.m = m;
+                local.offset = Vec2(d.ipx, d.ipy) +
+                               rotation * Vec2(double(col) * d.colSp, double(row) * d.rowSp) -
+                               m * block.base;
+                if (r.mirrored) {
+                    Affine mirror;
+                    mirror.m << -1.0, 0.0, 0.0, 1.0;
+                    local = mirror.after(local);
+                }
+                const Affine world = outer.after(local);
+                for (const BlockCurve& bc : block.curves) {
+                    if (!layer_chosen(bc.layer == "0" ? layer : bc.layer)) continue;
+                    Curve c;
+                    c.source = bc.curve.source + " in " + r.label;
+                    for (const Segment& seg : bc.curve.segments)
+                        c.segments.push_back(transformed(seg, world));
+                    add_model_curve(std::move(c));
+                }
+                // Copies of a block of many skipped entities count as much.
+                instances_ += block.skips.size();
+                if (instances_ > kMaxInstances)
+                    throw InputError(r.label, "more than " + std::to_string(kMaxInstances) +
+                                                  " block copies and entities: too many to draw");
+                for (const BlockSkip& skip : block.skips)
+                    skipped_piece(skip.degenerate, skip.kind, skip.label + " in " + r.label);
+                for (const InsertRef& inner : block.inserts) expand(inner, world, layer, stack);
+            }
+        }
+        stack.pop_back();
+    }
+
+    void skipped_piece(bool is_degenerate, const std::string& kind, const std::string& label) {
+        if (is_degenerate) {
+            if (options_.strict) throw InputError(label, kind);
+            note(degenerate_, kind, label + " (" + kind + ")");
+        } else {
+            note(unsupported_, kind, label);
+        }
+    }
+
+    /// A curve of the drawing itself, within the caps.
+    void add_model_curve(Curve c) {
+        for (const Segment& s : c.segments) {
+            for (const Vec2& p : {start_point(s), end_point(s)}) {
+                if (!std::isfinite(p.x()) || !std::isfinite(p.y()) ||
+                    p.cwiseAbs().maxCoeff() > kMaxDrawingCoordinate) {
+                    throw InputError(c.source, "coordinate out of range (beyond 1e9 units)");
+                }
+            }
+        }
+        if (drawing_.curves.size() >= kMaxCurves) {
+            throw InputError(c.source, "more than " + std::to_string(kMaxCurves) +
+                                           " curves: too large for a drawing");
+        }
+        total_segments_ += c.segments.size();
+        if (total_segments_ > kMaxSegments)
+            throw InputError(c.source, "too many segments in the drawing");
+        drawing_.curves.push_back(std::move(c));
+    }
+
     struct Vertex {
         Vec2 p;
         double bulge = 0.0;
     };
     struct OpenPolyline {
-        std::string label;
+        std::string label, layer;
         bool closed = false;
         std::vector<Vertex> vertices;
     };
     struct OpenSpline {
-        std::string label;
+        std::string label, layer;
         BSpline spline;
         unsigned fit_points = 0;
     };
@@ -226,19 +691,31 @@ private:
     /// a block definition (skipped).
     bool begin(const char* type) {
         close_open();
-        if (in_block_) return false;
+        extrusion_negative_ = getExtrusion() && getExtrusion()->getDirection()[2] < 0.0;
+        if (in_block_) {
+            layer_ = getAttributes().getLayer();
+            label_ = std::string(type) + " #" + std::to_string(++block_count_) + " of block " +
+                     text::printable(block_name_);
+            return block_ != nullptr;
+        }
         ++count_;
         const DL_Attributes a = getAttributes();
+        ++drawing_.layers[a.getLayer()];
+        if (!options_.layers.empty() && a.getLayer() != options_.obstacle_layer &&
+            std::find(options_.layers.begin(), options_.layers.end(), a.getLayer()) ==
+                options_.layers.end()) {
+            return false;
+        }
         if (!options_.obstacle_layer.empty() && a.getLayer() == options_.obstacle_layer) {
             layer_seen_ = true;
         }
+        layer_ = a.getLayer();
         label_ = std::string(type) + " #" + std::to_string(count_) + " (layer " +
                  text::printable(a.getLayer()) + ")";
         if (drawing_.curves.size() >= kMaxCurves) {
             throw InputError(label_, "more than " + std::to_string(kMaxCurves) +
                                          " entities: too large for a drawing");
         }
-        extrusion_negative_ = getExtrusion() && getExtrusion()->getDirection()[2] < 0.0;
         return true;
     }
 
@@ -248,15 +725,35 @@ private:
     }
 
     void unsupported(const std::string& what) {
-        close_open();
-        if (!in_block_) ++unsupported_[what];
+        if (!begin(what.c_str())) return;
+        if (block_) {
+            block_->skips.push_back({false, what, label_});
+        } else {
+            note(unsupported_, what, label_);
+        }
+    }
+
+    /// A piece that draws nothing (zero length, zero radius): skipped, or
+    /// refused with --strict.
+    void degenerate(const std::string& label, const std::string& why) {
+        if (block_) {
+            block_->skips.push_back({true, why, label});
+        } else {
+            skipped_piece(true, why, label);
+        }
     }
 
     [[noreturn]] void fail(const std::string& problem) const { throw InputError(label_, problem); }
 
-    /// A negative radius would draw the arc turned half a turn.
-    void require_positive_radius(double radius) const {
+    /// A negative radius would draw the arc turned half a turn; a zero one
+    /// draws nothing (false).
+    bool positive_radius(double radius) {
+        if (radius == 0.0) {
+            degenerate(label_, "zero radius");
+            return false;
+        }
         if (!(radius > 0.0)) fail("radius " + text::compact(radius) + ": it must be positive");
+        return true;
     }
 
     /// An angle difference as a sweep in (0, turn]: 0 is a whole turn.
@@ -282,9 +779,10 @@ private:
         }
     }
 
-    void add_curve(std::vector<Segment> segments, const std::string* label = nullptr) {
+    void add_curve(std::vector<Segment> segments, const std::string* label = nullptr,
+                   const std::string* layer = nullptr) {
         const std::string& name = label ? *label : label_;
-        if (on_obstacle_layer() && !label) {
+        if (!in_block_ && on_obstacle_layer() && !label) {
             throw InputError(name, "only circles can be obstacles (layer " +
                                        text::printable(options_.obstacle_layer) + ")");
         }
@@ -299,14 +797,23 @@ private:
             }
             if (approximate_length(s, 8) > 0.0) c.segments.push_back(s);
         }
-        if (c.segments.empty()) throw InputError(name, "zero-length curve");
-        total_segments_ += c.segments.size();
-        if (total_segments_ > kMaxSegments)
-            throw InputError(name, "too many segments in the drawing");
-        drawing_.curves.push_back(std::move(c));
+        if (c.segments.empty()) {
+            degenerate(name, "zero-length curve");
+            return;
+        }
+        if (block_) {
+            block_->curves.push_back({std::move(c), layer ? *layer : layer_});
+            return;
+        }
+        add_model_curve(std::move(c));
     }
 
     void close_open() {
+        close_polyline();
+        close_spline();
+    }
+
+    void close_polyline() {
         if (polyline_) {
             OpenPolyline p = std::move(*polyline_);
             polyline_.reset();
@@ -326,8 +833,11 @@ private:
                     segments.push_back(ocs(LineSegment{a.p, b}));
                 }
             }
-            add_curve(std::move(segments), &p.label);
+            add_curve(std::move(segments), &p.label, &p.layer);
         }
+    }
+
+    void close_spline() {
         if (spline_) {
             OpenSpline s = std::move(*spline_);
             spline_.reset();
@@ -357,13 +867,14 @@ private:
                 if (!(w > 0.0) || !std::isfinite(w))
                     throw InputError(s.label, "weights must be positive");
             }
-            add_curve({b}, &s.label);
+            add_curve({b}, &s.label, &s.layer);
         }
     }
 
     const ReadOptions& options_;
     Drawing drawing_;
-    std::map<std::string, int> unsupported_;
+    std::map<std::string, Skipped> unsupported_;
+    std::map<std::string, Skipped> degenerate_;
     std::optional<OpenPolyline> polyline_;
     std::optional<OpenSpline> spline_;
     std::string label_;
@@ -371,6 +882,15 @@ private:
     std::size_t total_segments_ = 0;
     int insunits_ = 0;
     bool in_block_ = false;
+    std::map<std::string, Block> blocks_;
+    Block* block_ = nullptr;  ///< the block being defined
+    std::string block_name_;
+    std::size_t block_count_ = 0;
+    std::vector<InsertRef> model_inserts_;
+    std::size_t instances_ = 0;
+    std::string layer_;                          ///< the layer of the entity being read
+    std::map<std::string, std::string> styles_;  ///< text style -> Hershey font
+    std::string mtext_chunks_;
     bool layer_seen_ = false;
     bool extrusion_negative_ = false;
 };
@@ -514,8 +1034,8 @@ const std::set<std::string, std::less<>> kEntitiesRead = {
 struct CheckedGroups {
     std::string text;  ///< the groups to hand dxflib
     /// Entity types of the ENTITIES section that dxflib does not read, and
-    /// how many of each.
-    std::map<std::string, int> unread;
+    /// the lines where they begin.
+    std::map<std::string, std::vector<std::size_t>> unread;
 };
 
 /// The file's groups as dxflib is to read them, after every check dxflib
@@ -598,7 +1118,7 @@ CheckedGroups checked_groups(std::string_view text) {
                 in_section = false;
                 section.clear();
             } else if (section == "ENTITIES" && !kEntitiesRead.count(name)) {
-                ++checked.unread[text::printable(name)];
+                checked.unread[text::printable(name)].push_back(value_number);
             }
             context = Context{};
             context.name = text::printable(name);

@@ -12,6 +12,7 @@
 #include <modsynth/drawing/svg_reader.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/limits.h>
+#include <modsynth/text/printable.h>
 
 namespace modsynth::drawing {
 
@@ -36,6 +37,15 @@ Box bounding_box(const Drawing& d) {
         }
     }
     return b;
+}
+
+/// The larger side of the curve's bounding box (sampled).
+double size_across(const Curve& c) {
+    Box b;
+    for (const Segment& s : c.segments) {
+        for (int i = 0; i <= 32; ++i) b.add(point(s, i / 32.0));
+    }
+    return (b.max - b.min).maxCoeff();
 }
 
 }  // namespace
@@ -82,8 +92,17 @@ ImportResult import_drawing(std::string_view text, DrawingFormat format,
     const Drawing drawing =
         format == DrawingFormat::Svg ? read_svg(text, options.read) : read_dxf(text, options.read);
     check_deadline(options.deadline, "reading the drawing");
+    return import_drawing(drawing, options);
+}
+
+ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options) {
+    if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance)) {
+        throw InputError("--tolerance", "must be a positive number of metres");
+    }
     const Affine map = placement_map(drawing, options.placement);
     ImportResult result;
+    result.warnings = drawing.warnings;
+    result.layers = drawing.layers;
     result.placement = map;
     result.page_size = drawing.page_size;
     result.page_to_task = map.after(drawing.page_to_units);
@@ -96,14 +115,36 @@ ImportResult import_drawing(std::string_view text, DrawingFormat format,
                                  " m of the origin once placed: check --width, --scale, --at");
         }
     };
-    std::vector<Chain> chains;
-    std::size_t total = 0;
+    std::vector<Curve> all_placed;
+    std::size_t drawable = 0;
     for (const Curve& c : drawing.curves) {
         Curve placed{c.source, {}};
         for (const Segment& s : c.segments) {
             placed.segments.push_back(transformed(s, map));
             check(start_point(placed.segments.back()), c.source);
             check(end_point(placed.segments.back()), c.source);
+        }
+        if (size_across(placed) >= kMinPiece) ++drawable;
+        all_placed.push_back(std::move(placed));
+    }
+    // A curve smaller than the fitting resolves (an ellipse of 1e-15 m, a
+    // CAD program's leftover) among others is a degenerate piece: skipped
+    // with a warning. A drawing made only of such curves is refused by the
+    // fitting (a --scale far too small).
+    std::vector<std::string> tiny;
+    std::size_t tiny_count = 0;
+    std::vector<Chain> chains;
+    std::size_t total = 0;
+    for (Curve& placed : all_placed) {
+        const Curve& c = placed;
+        if (drawable > 0 && !(size_across(placed) >= kMinPiece)) {
+            if (options.read.strict) {
+                throw InputError(c.source, "less than " + text::compact(kMinPiece) +
+                                               " m across once placed (--strict)");
+            }
+            if (tiny.size() < 3) tiny.push_back(c.source);
+            ++tiny_count;
+            continue;
         }
         if (total >= task::kMaxPrimitives) {
             throw InputError(c.source, "the drawing needs more than " +
@@ -112,9 +153,23 @@ ImportResult import_drawing(std::string_view text, DrawingFormat format,
         }
         FittedCurve f =
             fit_curve(placed, options.tolerance, task::kMaxPrimitives - total, options.deadline);
-        for (const geometry::Primitive& p : f.primitives) {
+        // An arc so nearly straight that its centre lies beyond reach of
+        // any task is its chord, when the chord strays from it (by its
+        // sagitta) within what the tolerance leaves.
+        double straightened = 0.0;
+        for (geometry::Primitive& p : f.primitives) {
+            if (p.kind == geometry::PrimitiveKind::Arc &&
+                !(p.center.cwiseAbs().maxCoeff() <= task::kMaxCoordinate) &&
+                std::abs(p.sweep) < geometry::kPi) {
+                const double sagitta = p.radius * (1.0 - std::cos(p.sweep / 2.0));
+                if (f.deviation + sagitta <= options.tolerance) {
+                    p = geometry::make_line(p.start, p.end);
+                    straightened = std::max(straightened, sagitta);
+                }
+            }
             check(p.center, c.source + " (an arc's center)");
         }
+        f.deviation += straightened;
         total += f.primitives.size();
         if (total > task::kMaxPrimitives) {
             throw InputError(c.source, "the drawing needs more than " +
@@ -123,6 +178,14 @@ ImportResult import_drawing(std::string_view text, DrawingFormat format,
         }
         result.deviation = std::max(result.deviation, f.deviation);
         chains.push_back(std::move(f.primitives));
+    }
+    if (tiny_count > 0) {
+        std::string list;
+        for (const std::string& t : tiny) list += (list.empty() ? "" : ", ") + t;
+        if (tiny_count > tiny.size())
+            list += " and " + std::to_string(tiny_count - tiny.size()) + " more";
+        result.warnings.push_back("skipped pieces less than " + text::compact(kMinPiece) +
+                                  " m across once placed: " + list);
     }
     for (const geometry::Disc& d : drawing.obstacles) {
         const geometry::Disc placed{map(d.center), d.radius * result.metres_per_unit};

@@ -163,6 +163,10 @@ struct SvgState {
     std::set<XmlElement> not_drawn;
     std::vector<Curve> curves;  ///< in the outer viewport's pixels, y down
     std::vector<geometry::Disc> obstacles;
+    /// Subpaths of zero length (an icon's dots, drawn by round caps),
+    /// skipped: a stroke of the tool cannot make a dot.
+    std::vector<std::string> dots;
+    std::size_t dot_count = 0;
     std::size_t segments = 0;
     double page_width = 0.0, page_height = 0.0;  ///< the outer viewport, px
     bool have_page = false;
@@ -326,7 +330,12 @@ private:
             if (approximate_length(s, 8) > 0.0) c.segments.push_back(transformed(s, ctm_));
         }
         pending_.clear();
-        if (c.segments.empty()) throw InputError(label_, "zero-length curve");
+        if (c.segments.empty()) {
+            if (state_->options->strict) throw InputError(label_, "zero-length curve");
+            if (state_->dots.size() < 3) state_->dots.push_back(label_);
+            ++state_->dot_count;
+            return;
+        }
         state_->curves.push_back(std::move(c));
     }
 
@@ -486,6 +495,8 @@ std::string quoted(const std::string& value) { return "'" + text::printable(valu
 }  // namespace
 
 Drawing read_svg(std::string_view text, const ReadOptions& options) {
+    if (!options.layers.empty())
+        throw InputError("--layers", "layers are chosen in DXF files only, not in an SVG");
     if (text.size() > kMaxDrawingBytes) {
         throw InputError("(document)", "the file is larger than " +
                                            std::to_string(kMaxDrawingBytes >> 20) + " MB");
@@ -550,7 +561,20 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
         }
         throw InputError(part, text::printable(e.what(), 200));
     }
-    if (state.curves.empty()) throw InputError("(document)", "empty drawing: nothing to draw");
+    std::vector<std::string> warnings;
+    if (state.dot_count > 0) {
+        std::string list;
+        for (const std::string& d : state.dots) list += (list.empty() ? "" : ", ") + d;
+        if (state.dot_count > state.dots.size())
+            list += " and " + std::to_string(state.dot_count - state.dots.size()) + " more";
+        warnings.push_back("skipped dots (zero-length subpaths, which a stroke cannot draw): " +
+                           list);
+    }
+    if (state.curves.empty()) {
+        throw InputError("(document)",
+                         "empty drawing: nothing to draw" +
+                             (warnings.empty() ? std::string() : " (" + warnings[0] + ")"));
+    }
 
     // Outer viewport pixels, y down -> millimetres, y up from the page's
     // bottom-left corner.
@@ -561,6 +585,7 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
     out.metres_per_unit = 1e-3;
     out.page_size = Vec2(state.page_width, state.page_height);
     out.page_to_units = to_mm;
+    out.warnings = std::move(warnings);
     for (Curve& c : state.curves) {
         for (Segment& s : c.segments) s = transformed(s, to_mm);
         out.curves.push_back(std::move(c));

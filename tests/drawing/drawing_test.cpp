@@ -212,9 +212,10 @@ TEST_CASE("DXF: the fixture's entities, exact bulges, clamped spline ends", "[dr
     CHECK((point(spline, 0.0) - Vec2(15, 45)).norm() <= 1e-12);
     CHECK((point(spline, 1.0) - Vec2(65, 45)).norm() <= 1e-12);
     CHECK_THAT(message_of([] { read_dxf("hello"); }), Catch::Contains("not a DXF file"));
-    const std::string text =
-        "0\nSECTION\n2\nENTITIES\n0\nTEXT\n8\n0\n10\n0\n20\n0\n40\n1\n1\nHi\n0\nENDSEC\n0\nEOF\n";
-    CHECK_THAT(message_of([&] { read_dxf(text); }), Catch::Contains("TEXT"));
+    const std::string hatch =
+        "0\nSECTION\n2\nENTITIES\n0\nHATCH\n8\n0\n10\n0\n20\n0\n0\nENDSEC\n0\nEOF\n";
+    CHECK_THAT(message_of([&] { read_dxf(hatch); }),
+               Catch::Contains("nothing to draw") && Catch::Contains("HATCH #1"));
 }
 
 TEST_CASE("import: placement, stroke order, and the SVG round trip", "[drawing]") {

@@ -157,8 +157,16 @@ TEST_CASE("DXF: entities dxflib does not know are named, not skipped", "[drawing
     // dxflib skips an entity type it does not know without a word.
     const std::string text = dxf(kLine + "0\nREGION\n8\n0\n0\nREGION\n8\n0\n0\n3DSOLID\n8\n0\n" +
                                  "0\nATTDEF\n8\n0\n0\nVIEWPORT\n8\n0\n");
-    CHECK_THAT(message_of([&] { read_dxf(text); }),
+    ReadOptions strict;
+    strict.strict = true;
+    CHECK_THAT(message_of([&] { read_dxf(text, strict); }),
                Catch::Contains("entities that cannot be drawn: 3DSOLID, ATTDEF, REGION (2x)"));
+    // Without --strict they are skipped, by name and line, and the rest drawn.
+    const Drawing d = read_dxf(text);
+    CHECK(d.curves.size() == 1);
+    REQUIRE(d.warnings.size() == 1);
+    CHECK_THAT(d.warnings[0], Catch::Contains("3DSOLID (line 36)") &&
+                                  Catch::Contains("REGION (line 28), REGION (line 32)"));
     // Inside a block they are the block's (drawn only where inserted).
     const std::string block =
         "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n8\n0\n2\nB\n0\nREGION\n8\n0\n0\nENDBLK\n8\n0\n0\nENDSEC"
@@ -168,4 +176,214 @@ TEST_CASE("DXF: entities dxflib does not know are named, not skipped", "[drawing
     CHECK(read_dxf(blocks_first).curves.size() == 1);
     // An entity's name with spaces around it is the entity.
     CHECK(read_dxf(dxf("0\n LINE \n8\n0\n10\n0\n20\n0\n11\n100\n21\n0\n")).curves.size() == 1);
+}
+
+TEST_CASE("DXF: a POLYLINE's VERTEX entities are its vertices", "[drawing][dxf]") {
+    // The classic (R12) form: the header, one VERTEX entity per vertex, SEQEND.
+    std::string vertices;
+    const double xs[] = {0, 10, 10, 0};
+    const double ys[] = {0, 0, 10, 10};
+    for (int i = 0; i < 4; ++i) {
+        vertices += "0\nVERTEX\n8\n0\n10\n" + std::to_string(xs[i]) + "\n20\n" +
+                    std::to_string(ys[i]) + "\n30\n0\n" + (i == 1 ? "42\n1\n" : "");
+    }
+    const std::string closed = dxf("0\nPOLYLINE\n8\n0\n66\n1\n10\n0\n20\n0\n30\n0\n70\n1\n" +
+                                   vertices + "0\nSEQEND\n8\n0\n" + kLine);
+    const Drawing d = read_dxf(closed);
+    REQUIRE(d.curves.size() == 2);
+    CHECK(d.curves[0].source.rfind("POLYLINE #1", 0) == 0);
+    REQUIRE(d.curves[0].segments.size() == 4);
+    // The bulge of 1 at the second vertex: a half circle from (10,0) to (10,10).
+    CHECK(std::holds_alternative<EllipticArc>(d.curves[0].segments[1]));
+    CHECK((end_point(d.curves[0].segments[3]) - Vec2(0, 0)).norm() < 1e-12);
+    // Open, and the last entity of its section.
+    const std::string open =
+        dxf("0\nPOLYLINE\n8\n0\n66\n1\n10\n0\n20\n0\n30\n0\n70\n0\n" + vertices + "0\nSEQEND\n");
+    REQUIRE(read_dxf(open).curves.size() == 1);
+    CHECK(read_dxf(open).curves[0].segments.size() == 3);
+    CHECK_THAT(message_of([&] {
+                   read_dxf(
+                       dxf("0\nPOLYLINE\n8\n0\n66\n1\n70\n0\n0\nVERTEX\n8\n0\n10\n1\n20\n1\n"
+                           "0\nSEQEND\n"));
+               }),
+               Catch::Contains("POLYLINE #1") && Catch::Contains("at least 2 vertices"));
+}
+
+TEST_CASE("DXF: what cannot be traced is skipped with one warning, or refused with strict",
+          "[drawing][dxf]") {
+    std::string entities = kLine;
+    for (int i = 0; i < 5; ++i) entities += "0\nHATCH\n8\nfill\n10\n0\n20\n0\n";
+    entities += "0\nPOINT\n8\n0\n10\n5\n20\n5\n";
+    entities += "0\nDIMENSION\n8\ndim\n70\n0\n";
+    // One zero-length line among the rest, and a circle of radius 0.
+    entities += "0\nLINE\n8\n0\n10\n7\n20\n7\n11\n7\n21\n7\n";
+    entities += "0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n0\n";
+    entities += kLine;
+    const Drawing d = read_dxf(dxf(entities));
+    CHECK(d.curves.size() == 2);
+    REQUIRE(d.warnings.size() == 2);
+    CHECK_THAT(d.warnings[0],
+               Catch::StartsWith("skipped what cannot be traced: ") &&
+                   Catch::Contains("HATCH #2 (layer fill), HATCH #3 (layer fill), HATCH #4 "
+                                   "(layer fill) and 2 more") &&
+                   Catch::Contains("POINT #7 (layer 0)") &&
+                   Catch::Contains("DIMENSION #8 (layer dim)"));
+    CHECK_THAT(d.warnings[1], Catch::Contains("LINE #9 (layer 0) (zero-length curve)") &&
+                                  Catch::Contains("CIRCLE #10 (layer 0) (zero radius)"));
+    ReadOptions strict;
+    strict.strict = true;
+    // A degenerate piece is refused where it is read; what cannot be
+    // traced, all together at the end.
+    CHECK_THAT(message_of([&] { read_dxf(dxf(entities), strict); }),
+               Catch::Contains("LINE #9 (layer 0): zero-length curve"));
+    const std::string untraceable = entities.substr(0, entities.find("0\nLINE\n8\n0\n10\n7"));
+    CHECK_THAT(message_of([&] { read_dxf(dxf(untraceable), strict); }),
+               Catch::Contains("DIMENSION, HATCH (5x), POINT"));
+    // Nothing left to draw is an error that says what was skipped.
+    CHECK_THAT(message_of([&] { read_dxf(dxf("0\nHATCH\n8\n0\n")); }),
+               Catch::Contains("nothing to draw") && Catch::Contains("HATCH #1"));
+}
+
+TEST_CASE("DXF: --layers reads only those layers and the layers are counted", "[drawing][dxf]") {
+    std::string entities;
+    for (const char* layer : {"walls", "walls", "doors", "text"})
+        entities += std::string("0\nLINE\n8\n") + layer + "\n10\n0\n20\n0\n11\n10\n21\n0\n";
+    const Drawing all = read_dxf(dxf(entities));
+    CHECK(all.curves.size() == 4);
+    CHECK(all.layers ==
+          std::map<std::string, std::size_t>{{"doors", 1}, {"text", 1}, {"walls", 2}});
+    ReadOptions o;
+    o.layers = {"walls", "doors"};
+    const Drawing some = read_dxf(dxf(entities), o);
+    CHECK(some.curves.size() == 3);
+    CHECK(some.layers.size() == 3);
+    o.layers = {"wall"};
+    CHECK_THAT(message_of([&] { read_dxf(dxf(entities), o); }),
+               Catch::Contains("no layer 'wall'") && Catch::Contains("walls (2)"));
+}
+
+namespace {
+
+/// A DXF whose BLOCKS section holds `blocks` and ENTITIES `entities`.
+std::string dxf_with_blocks(const std::string& blocks, const std::string& entities) {
+    return "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nBLOCKS\n" +
+           blocks + "0\nENDSEC\n0\nSECTION\n2\nENTITIES\n" + entities + "0\nENDSEC\n0\nEOF\n";
+}
+
+std::string block(const std::string& name, double bx, double by, const std::string& body) {
+    return "0\nBLOCK\n8\n0\n2\n" + name + "\n70\n0\n10\n" + std::to_string(bx) + "\n20\n" +
+           std::to_string(by) + "\n3\n" + name + "\n" + body + "0\nENDBLK\n8\n0\n";
+}
+
+std::string insert(const std::string& name, const std::string& groups) {
+    return "0\nINSERT\n8\n0\n2\n" + name + "\n" + groups;
+}
+
+}  // namespace
+
+TEST_CASE("DXF: INSERT draws its block, placed, scaled, turned and arrayed", "[drawing][dxf]") {
+    // A unit line from the block's base point (1,1) to (2,1).
+    const std::string blocks =
+        block("bar", 1, 1, "0\nLINE\n8\n0\n10\n1\n20\n1\n11\n2\n21\n1\n") +
+        block("pair", 0, 0, insert("bar", "10\n0\n20\n0\n") + insert("bar", "10\n0\n20\n5\n"));
+    // Scaled by 2 and turned a quarter turn about the insertion point (10,0).
+    const Drawing one =
+        read_dxf(dxf_with_blocks(blocks, insert("bar", "10\n10\n20\n0\n41\n2\n42\n2\n50\n90\n")));
+    REQUIRE(one.curves.size() == 1);
+    const Segment& s = one.curves[0].segments[0];
+    CHECK((start_point(s) - Vec2(10, 0)).norm() < 1e-12);
+    CHECK((end_point(s) - Vec2(10, 2)).norm() < 1e-12);
+    CHECK_THAT(one.curves[0].source, Catch::Contains("LINE #1 of block bar in INSERT #1"));
+    // A 3 x 2 array, 5 apart in columns and 7 in rows.
+    const Drawing array = read_dxf(
+        dxf_with_blocks(blocks, insert("bar", "10\n0\n20\n0\n70\n3\n71\n2\n44\n5\n45\n7\n")));
+    REQUIRE(array.curves.size() == 6);
+    CHECK((start_point(array.curves[5].segments[0]) - Vec2(10, 7)).norm() < 1e-12);
+    // Nested: a block of two bars, inserted twice.
+    const Drawing nested = read_dxf(dxf_with_blocks(
+        blocks, insert("pair", "10\n0\n20\n0\n") + insert("pair", "10\n100\n20\n0\n")));
+    REQUIRE(nested.curves.size() == 4);
+    CHECK((start_point(nested.curves[3].segments[0]) - Vec2(100, 5)).norm() < 1e-12);
+}
+
+TEST_CASE("DXF: a block that inserts itself is refused by name", "[drawing][dxf]") {
+    const std::string blocks = block("A", 0, 0, insert("B", "10\n1\n20\n0\n")) +
+                               block("B", 0, 0, kLine + insert("A", "10\n1\n20\n0\n"));
+    CHECK_THAT(message_of([&] { read_dxf(dxf_with_blocks(blocks, insert("A", ""))); }),
+               Catch::Contains("block 'A' inserts itself (A -> B -> A)"));
+    CHECK_THAT(message_of([&] { read_dxf(dxf_with_blocks(blocks, insert("C", "") + kLine)); }),
+               Catch::Contains("INSERT #1 (layer 0)") && Catch::Contains("no block named 'C'"));
+    // Arrays of a block of things not drawn cannot take long either.
+    std::string points;
+    for (int i = 0; i < 10; ++i) points += "0\nPOINT\n8\n0\n10\n1\n20\n1\n";
+    const std::string many = dxf_with_blocks(
+        block("P", 0, 0, points), kLine + insert("P", "10\n0\n20\n0\n70\n200\n71\n100\n"));
+    CHECK_THAT(message_of([&] { read_dxf(many); }), Catch::Contains("too many to draw"));
+}
+
+TEST_CASE("DXF: TEXT and MTEXT are written in a Hershey font", "[drawing][dxf][text]") {
+    // "HI" 10 units tall at (100, 50), then turned a quarter turn.
+    const Drawing d = read_dxf(dxf("0\nTEXT\n8\n0\n10\n100\n20\n50\n40\n10\n1\nHI\n"));
+    REQUIRE(d.curves.size() == 4);  // H: three strokes, I: one
+    double top = -1e9, bottom = 1e9, left = 1e9;
+    for (const Curve& c : d.curves) {
+        for (const Segment& s : c.segments) {
+            for (const Vec2& p : {start_point(s), end_point(s)}) {
+                top = std::max(top, p.y());
+                bottom = std::min(bottom, p.y());
+                left = std::min(left, p.x());
+            }
+        }
+    }
+    CHECK(top == Approx(60.0));
+    CHECK(bottom == Approx(50.0));
+    CHECK(left >= 100.0);
+    CHECK(left < 102.0);
+    // MTEXT: two paragraphs, its formatting codes not drawn.
+    const Drawing m = read_dxf(
+        dxf("0\nMTEXT\n8\n0\n10\n0\n20\n0\n40\n10\n71\n1\n1\n{\\fArial|b0;\\H1.5x;I}\\PI\n"));
+    REQUIRE(m.curves.size() == 2);
+    // Attachment 1 (top left): the first line's capitals hang below the point.
+    CHECK(std::max(start_point(m.curves[0].segments[0]).y(),
+                   end_point(m.curves[0].segments[0]).y()) == Approx(0.0).margin(1e-9));
+    // A character the font has no glyph for is reported, the rest drawn.
+    const Drawing deg = read_dxf(dxf("0\nTEXT\n8\n0\n10\n0\n20\n0\n40\n10\n1\n90%%d\n"));
+    CHECK(!deg.curves.empty());
+    REQUIRE(deg.warnings.size() == 1);
+    CHECK_THAT(deg.warnings[0],
+               Catch::Contains("TEXT #1 (layer 0)") && Catch::Contains("('\xC2\xB0')"));
+}
+
+TEST_CASE("import: a piece smaller than the fitting resolves is skipped among others",
+          "[drawing][dxf]") {
+    // As LibreCAD's library holds them: an ellipse 1e-12 mm across.
+    const std::string text =
+        dxf(kLine + "0\nELLIPSE\n8\n0\n10\n5\n20\n5\n11\n1e-12\n21\n0\n40\n0.5\n41\n0\n42\n1\n");
+    ImportOptions o;
+    const ImportResult r = import_drawing(text, DrawingFormat::Dxf, o);
+    CHECK(r.strokes.size() == 1);
+    REQUIRE(r.warnings.size() == 1);
+    CHECK_THAT(r.warnings[0], Catch::Contains("ELLIPSE #2 (layer 0)"));
+    o.read.strict = true;
+    CHECK_THAT(message_of([&] { import_drawing(text, DrawingFormat::Dxf, o); }),
+               Catch::Contains("ELLIPSE #2 (layer 0)"));
+}
+
+TEST_CASE("import: an arc nearly straight, its centre beyond reach, is its chord",
+          "[drawing][dxf]") {
+    // Radius 999.9 m (kept as an arc), its centre 1000.1 m out once placed,
+    // 0.004 degrees of it: 70 mm long, 0.6 um from its chord.
+    const std::string text =
+        dxf("0\nARC\n8\n0\n10\n0\n20\n-1000100\n40\n999900\n50\n89.998\n51\n90.002\n");
+    ImportOptions o;
+    const ImportResult r = import_drawing(text, DrawingFormat::Dxf, o);
+    REQUIRE(r.strokes.size() == 1);
+    REQUIRE(r.strokes[0].size() == 1);
+    CHECK(r.strokes[0][0].kind == modsynth::geometry::PrimitiveKind::Line);
+    CHECK(r.deviation == Approx(6.09e-7).epsilon(0.01));
+    CHECK((r.strokes[0][0].end - r.strokes[0][0].start).norm() == Approx(0.0698).epsilon(1e-3));
+    // Where the chord would stray beyond the tolerance, the centre is refused.
+    o.tolerance = 1e-7;
+    CHECK_THAT(message_of([&] { import_drawing(text, DrawingFormat::Dxf, o); }),
+               Catch::Contains("beyond 1000 m"));
 }

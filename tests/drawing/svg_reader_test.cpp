@@ -112,3 +112,20 @@ TEST_CASE("SVG: names from the file are printed escaped", "[drawing][svg]") {
     CHECK_THAT(m, Catch::Contains("path#p\\x1B[2J"));
     CHECK(m.find('\x1b') == std::string::npos);
 }
+
+TEST_CASE("SVG: dots are skipped with a warning, or refused with strict", "[drawing][svg]") {
+    // As stroke icon sets draw them: a zero-length subpath with round caps.
+    const std::string svg =
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 24 24\">\n"
+        "<path id=\"i\" d=\"M12 8v8\"/>\n<path id=\"dot\" d=\"M12 4h.01\"/>\n"
+        "<path id=\"dot2\" d=\"M6 4l0 0\"/></svg>";
+    const Drawing d = read_svg(svg);
+    CHECK(d.curves.size() == 2);  // the stem, and "h.01" (0.01 px long: not zero)
+    REQUIRE(d.warnings.size() == 1);
+    CHECK_THAT(d.warnings[0],
+               Catch::Contains("skipped dots") && Catch::Contains("path#dot2 (line 4)"));
+    ReadOptions strict;
+    strict.strict = true;
+    CHECK_THROWS_WITH(read_svg(svg, strict),
+                      Catch::Contains("path#dot2 (line 4)") && Catch::Contains("zero-length"));
+}

@@ -2,6 +2,7 @@
 // What a drawing file holds once read: its curves and the circles of its
 // obstacle layer, in the drawing's own units with y pointing up.
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,11 +24,21 @@ struct Drawing {
     /// format has no page (DXF).
     Vec2 page_size = Vec2::Zero();
     Affine page_to_units;
+    /// What was read but not drawn, one line per reason: entities that
+    /// cannot be traced, degenerate pieces (ReadOptions::strict refuses
+    /// them instead).
+    std::vector<std::string> warnings;
+    /// The drawing's layers (DXF) and how many entities each holds.
+    std::map<std::string, std::size_t> layers;
 };
 
 /// What a reader accepts: which layer's circles are obstacles ("" none).
 struct ReadOptions {
     std::string obstacle_layer;
+    /// The layers to read (DXF); empty: all of them.
+    std::vector<std::string> layers;
+    /// Refuse, rather than skip with a warning, what cannot be traced.
+    bool strict = false;
 };
 
 /// The sizes a reader refuses beyond (a drawing for a robot arm has

@@ -2,6 +2,7 @@
 // A drawing file to the strokes of a task: read it, place it in the task
 // plane (scale, rotation, position), fit every curve with primitives within
 // the tolerance, and order the strokes.
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -50,12 +51,19 @@ struct ImportResult {
     /// it to task metres: placement after Drawing::page_to_units.
     Vec2 page_size = Vec2::Zero();
     Affine page_to_task;
+    /// What the reader skipped (Drawing::warnings), one line each.
+    std::vector<std::string> warnings;
+    /// The drawing's layers and their entity counts (DXF).
+    std::map<std::string, std::size_t> layers;
 };
 
 /// Throws task::InputError naming the offending element or option, and
 /// ImportTimeout once options.deadline has passed.
 ImportResult import_drawing(std::string_view text, DrawingFormat format,
                             const ImportOptions& options);
+
+/// The same for a drawing already read (or made, as text is).
+ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options);
 
 /// The affine map from drawing units to task metres that the placement
 /// gives for this drawing.
