@@ -2,15 +2,18 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 
+#include <modsynth/hardware/select_dh_modules.h>
 #include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/output/exports.h>
 #include <modsynth/output/recertify.h>
+#include <modsynth/synth/spatial_module_choice.h>
 
 #include "command.h"
 #include "module_choice.h"
-#include "planar_task.h"
 
 namespace modsynth::app {
 namespace {
@@ -20,6 +23,28 @@ struct ExportArgs {
     output::ExportPaths exports;
 };
 
+/// A spatial task: re-verified as in the plane, modules chosen, and each
+/// file written by the spatial writers.
+int export_spatial(const ExportArgs& a, const task::SpatialTask& task) {
+    std::string note;
+    const std::optional<hardware::Catalog> catalog = hardware::spatial_catalog(task, &note);
+    if (!note.empty()) std::fprintf(stderr, "note: %s\n", note.c_str());
+    io::ParsedSolution parsed = io::load_solution(a.solution);
+    output::ReportFigures figures;
+    figures.certificate_note = output::recertify(task, parsed);
+    synth::choose_modules(task, catalog, parsed.solution);
+    const synth::Solution& s = parsed.solution;
+    if (s.modules && s.modules->checked && !s.modules->carried())
+        std::fprintf(stderr, "warning: the certified robot overloads its modules: %s\n",
+                     s.modules->message.c_str());
+    if (s.status == synth::Status::Solved && !s.certificate.ok)
+        std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),
+                     output::uncertified_reason(s.certificate).c_str());
+    const auto skipped = output::write_exports(task, parsed.solution, a.exports, figures);
+    for (const auto& line : skipped) std::fprintf(stderr, "error: %s\n", line.c_str());
+    return skipped.empty() ? kOk : kInvalid;
+}
+
 int run_export(const ExportArgs& a) {
     if (!a.exports.any()) {
         std::fprintf(stderr,
@@ -27,7 +52,10 @@ int run_export(const ExportArgs& a) {
                      "--joint-trajectory and/or --build-sheet\n");
         return kInvalid;
     }
-    const task::Task task = load_planar_task(a.task, "export");
+    const io::TaskDocument doc = io::load_task_document(a.task);
+    if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
+        return export_spatial(a, *spatial);
+    const task::Task& task = std::get<task::Task>(doc);
     const std::optional<hardware::Catalog> catalog = catalog_for(task);
     io::ParsedSolution parsed = io::load_solution(a.solution);
     output::ReportFigures figures;
@@ -64,7 +92,7 @@ Command add_export(CLI::App& parent) {
     CLI::App* sub = parent.add_subcommand(
         "export",
         "Write the report, URDF, CSV, joint trajectory or build sheet of a saved solution");
-    sub->add_option("TASK", a->task, "modsynth-task/1 JSON file the solution is for")->required();
+    sub->add_option("TASK", a->task, "modsynth-task/1 JSON file the solution is for (planar or spatial)")->required();
     sub->add_option("SOLUTION", a->solution, "modsynth-solution/1 JSON file")->required();
     add_export_options(*sub, a->exports);
     return {sub, [a] { return run_export(*a); }};
