@@ -2,7 +2,9 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include <modsynth/hardware/select_dh_modules.h>
 #include <modsynth/io/solution_io.h>
@@ -21,7 +23,37 @@ namespace {
 struct ExportArgs {
     std::string task, solution;
     output::ExportPaths exports;
+    bool write_uncertified = false;
 };
+
+/// Warns of a solved motion that is not certified and, unless the user
+/// asked for them, takes its controller files (CSV, joint trajectory) out of
+/// `paths`: a controller commands what these files say, so a motion that
+/// fails verification is not handed to one. Returns a line per file left out.
+std::vector<std::string> refuse_uncertified(const ExportArgs& a, const synth::Solution& s,
+                                            output::ExportPaths& paths) {
+    std::vector<std::string> refused;
+    if (s.status != synth::Status::Solved || s.certificate.ok) return refused;
+    std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),
+                 output::uncertified_reason(s.certificate).c_str());
+    if (a.write_uncertified) return refused;
+    for (auto [path, option] : {std::pair{&paths.csv, "--csv"},
+                                std::pair{&paths.joint_trajectory, "--joint-trajectory"}}) {
+        if (path->empty()) continue;
+        refused.push_back(std::string(option) + " " + *path +
+                          ": not written; the motion is not certified (give "
+                          "--write-uncertified to write it anyway)");
+        path->clear();
+    }
+    return refused;
+}
+
+/// Prints the files not written; exit 2 when there are any.
+int report_skipped(std::vector<std::string> skipped, const std::vector<std::string>& refused) {
+    skipped.insert(skipped.end(), refused.begin(), refused.end());
+    for (const auto& line : skipped) std::fprintf(stderr, "error: %s\n", line.c_str());
+    return skipped.empty() ? kOk : kInvalid;
+}
 
 /// A spatial task: re-verified as in the plane, modules chosen, and each
 /// file written by the spatial writers.
@@ -37,12 +69,9 @@ int export_spatial(const ExportArgs& a, const task::SpatialTask& task) {
     if (s.modules && s.modules->checked && !s.modules->carried())
         std::fprintf(stderr, "warning: the certified robot overloads its modules: %s\n",
                      s.modules->message.c_str());
-    if (s.status == synth::Status::Solved && !s.certificate.ok)
-        std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),
-                     output::uncertified_reason(s.certificate).c_str());
-    const auto skipped = output::write_exports(task, parsed.solution, a.exports, figures);
-    for (const auto& line : skipped) std::fprintf(stderr, "error: %s\n", line.c_str());
-    return skipped.empty() ? kOk : kInvalid;
+    output::ExportPaths paths = a.exports;
+    const std::vector<std::string> refused = refuse_uncertified(a, s, paths);
+    return report_skipped(output::write_exports(task, parsed.solution, paths, figures), refused);
 }
 
 int run_export(const ExportArgs& a) {
@@ -65,12 +94,9 @@ int run_export(const ExportArgs& a) {
     if (was_solved && parsed.solution.status != synth::Status::Solved)
         std::fprintf(stderr, "error: %s\n", parsed.solution.explanation.message.c_str());
     const synth::Solution& s = parsed.solution;
-    if (s.status == synth::Status::Solved && !s.certificate.ok)
-        std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),
-                     output::uncertified_reason(s.certificate).c_str());
-    const auto skipped = output::write_exports(task, parsed.solution, a.exports, figures);
-    for (const auto& s : skipped) std::fprintf(stderr, "error: %s\n", s.c_str());
-    return skipped.empty() ? kOk : kInvalid;
+    output::ExportPaths paths = a.exports;
+    const std::vector<std::string> refused = refuse_uncertified(a, s, paths);
+    return report_skipped(output::write_exports(task, parsed.solution, paths, figures), refused);
 }
 
 }  // namespace
@@ -95,6 +121,9 @@ Command add_export(CLI::App& parent) {
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file the solution is for (planar or spatial)")->required();
     sub->add_option("SOLUTION", a->solution, "modsynth-solution/1 JSON file")->required();
     add_export_options(*sub, a->exports);
+    sub->add_flag("--write-uncertified", a->write_uncertified,
+                  "write --csv and --joint-trajectory even for a motion that fails "
+                  "verification again (by default they are not written, and the exit code is 2)");
     return {sub, [a] { return run_export(*a); }};
 }
 

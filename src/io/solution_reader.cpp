@@ -7,6 +7,7 @@
 
 #include <modsynth/io/input.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/task/limits.h>
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/printable.h>
@@ -256,10 +257,19 @@ control::Phase parse_phase(const json& j, const std::string& part) {
                                text::printable(p) + "\"");
 }
 
+/// Seconds: no motion a robot executes lasts longer (32 years), and a ROS 2
+/// Duration holds its whole seconds in 32 bits.
+constexpr double kLongestMotion = 1e9;
+
 control::Sample parse_sample(const json& j, const std::string& part, int dof) {
     require_object(j, part);
     control::Sample s;
     s.t = finite_number(required(j, part, "t"), member(part, "t"));
+    if (!(s.t >= 0.0 && s.t <= kLongestMotion)) {
+        throw InputError(member(part, "t"), text::compact(s.t) +
+                                                " s: a motion's times lie within 0 to " +
+                                                text::compact(kLongestMotion) + " s");
+    }
     s.phase = parse_phase(required(j, part, "phase"), member(part, "phase"));
     s.primitive = integer(required(j, part, "primitive"), member(part, "primitive"), 0,
                           std::numeric_limits<int>::max());
@@ -374,7 +384,7 @@ ParsedSolution parse_solution_text(std::string_view text) {
 }
 
 ParsedSolution load_solution(const std::string& path) {
-    return parse_solution_text(read_input_file(path, "solution"));
+    return parse_solution_text(read_input_file(path, "solution", task::kMaxSolutionBytes));
 }
 
 void check_solution_fits(const task::Task& task, const synth::Solution& solution) {

@@ -668,13 +668,7 @@ SpatialTask parse_spatial_task_text(std::string_view text) {
 }
 
 SpatialTask load_spatial_task(const std::string& path) {
-    std::error_code ec;
-    const auto bytes = std::filesystem::file_size(path, ec);
-    if (!ec && bytes > task::kMaxTaskBytes)
-        throw InputError(path, std::to_string(bytes) + " bytes, more than the " +
-                                   std::to_string(task::kMaxTaskBytes) +
-                                   " allowed for a task file");
-    SpatialTask task = parse_spatial_task_text(read_input_file(path, "task"));
+    SpatialTask task = parse_spatial_task_text(read_input_file(path, "task", task::kMaxTaskBytes));
     if (task.name.empty()) task.name = std::filesystem::path(path).stem().string();
     return task;
 }

@@ -31,13 +31,7 @@ TaskDocument parse_task_document_text(std::string_view text) {
 }
 
 TaskDocument load_task_document(const std::string& path) {
-    std::error_code ec;
-    const auto bytes = std::filesystem::file_size(path, ec);
-    if (!ec && bytes > task::kMaxTaskBytes)
-        throw task::InputError(path, std::to_string(bytes) + " bytes, more than the " +
-                                         std::to_string(task::kMaxTaskBytes) +
-                                         " allowed for a task file");
-    TaskDocument doc = parse_task_document_text(read_input_file(path, "task"));
+    TaskDocument doc = parse_task_document_text(read_input_file(path, "task", task::kMaxTaskBytes));
     std::visit(
         [&](auto& t) {
             if (t.name.empty()) t.name = std::filesystem::path(path).stem().string();

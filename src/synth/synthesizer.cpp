@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
 
 #include <modsynth/control/joint_limits.h>
 #include <modsynth/control/motion.h>
+#include <modsynth/control/path_corners.h>
 #include <modsynth/control/retime.h>
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/farthest_reach.h>
@@ -126,6 +128,7 @@ public:
 
     Solution run();
     Solution timed(Solution solution);
+    double motion_seconds(const Solution& solution) const;
 
 private:
     double remaining() const { return opt_.time_limit - seconds_since(start_); }
@@ -280,9 +283,10 @@ Solution Search::run() {
     out.status =
         Status(Status::Unknown, stage_,
                out_of_time ? "time limit" : "every joint count tried without a certified robot");
-    out.explanation.message = "No certified robot found" +
-                              std::string(out_of_time ? " within the time limit" : "") + ": " +
-                              join(tried_, "; ") + ".";
+    out.explanation.message =
+        "No certified robot found" + std::string(out_of_time ? " within the time limit" : "") +
+        (tried_.empty() ? std::string(": the time ran out before any robot was tried.")
+                        : ": " + join(tried_, "; ") + ".");
     for (const auto& c : cores)
         for (const auto& part : c)
             if (std::find(out.explanation.core.begin(), out.explanation.core.end(), part) ==
@@ -296,12 +300,23 @@ Solution Search::run() {
 Solution Search::timed(Solution solution) {
     const auto t0 = Clock::now();
     control::RetimeStats timing;
-    solution.samples = control::retime(std::move(solution.samples),
-                                       control::joint_limits_for(task_, solution.robot.dof()),
-                                       opt_.retime, &timing);
+    solution.samples = control::retime_for(task_, std::move(solution.samples),
+                                           control::joint_limits_for(task_, solution.robot.dof()),
+                                           opt_.retime, &timing);
     say(text::format("timed: %.3f s of motion, %d rests, %d passes, in %.1f ms", timing.duration,
                      timing.rests, timing.passes, 1e3 * seconds_since(t0)));
+    stats_.timing = std::move(timing);
     return solution;
+}
+
+// s the certified motion of a candidate takes, timed as the one returned
+// will be.
+double Search::motion_seconds(const Solution& solution) const {
+    control::RetimeStats timing;
+    control::retime_for(task_, solution.samples,
+                        control::joint_limits_for(task_, solution.robot.dof()), opt_.retime,
+                        &timing);
+    return timing.duration;
 }
 
 // Every skeleton the front stage offered, again and again with initial
@@ -357,9 +372,18 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
     double shortest = certified.front().solution.robot.total_length();
     const auto chosen = [&] {
         std::vector<DesignMerit> merits;
-        for (const Certified& c : certified)
-            merits.push_back(
-                {c.solution.robot.total_length(), c.solution.certificate.min_clearance});
+        // Every candidate's motion is timed (a few milliseconds each) when
+        // there is a choice: among robots tied in length and clearance, the
+        // quicker motion wins.
+        for (const Certified& c : certified) {
+            merits.push_back({c.solution.robot.total_length(), c.solution.certificate.min_clearance,
+                              certified.size() > 1 ? motion_seconds(c.solution)
+                                                   : std::numeric_limits<double>::infinity()});
+            if (certified.size() > 1)
+                say(text::format("%d joints: elbow %+d, total length %.4f m: %.3f s of motion",
+                                 found.dof, c.solution.robot.elbow, merits.back().total_length,
+                                 merits.back().motion_time));
+        }
         Certified& c = certified[choose_design(merits, opt_.length_tie)];
         stats_.certified_by = c.by;
         return std::move(c.solution);

@@ -10,9 +10,11 @@
 namespace modsynth::control {
 
 /// Per joint, rad/s and rad/s^2; both lists as long as the robot's q.
+/// `jerk` (rad/s^3) is as long too, or empty: no jerk limit.
 struct JointLimits {
     std::vector<double> velocity;
     std::vector<double> acceleration;
+    std::vector<double> jerk{};
 
     int dof() const { return static_cast<int>(velocity.size()); }
 };
@@ -42,7 +44,7 @@ JointLimits joint_limits_for(const task::Task& task, int dof);
 JointLimits joint_limits_for(const task::SpatialTask& task, int dof);
 
 /// False (with `error` saying which joint) when some limit is not a finite
-/// positive number or the lists' lengths differ.
+/// positive number or the lists' lengths differ (an empty jerk list aside).
 bool valid(const JointLimits& limits, std::string* error);
 
 }  // namespace modsynth::control

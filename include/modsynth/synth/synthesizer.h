@@ -152,6 +152,9 @@ struct SynthesisStats {
     /// not converge, or its candidate failed verification and the rounds
     /// went on with lines.
     int fallbacks = 0;
+    /// How the returned motion was timed (solved only): its duration, its
+    /// stops, where the EE runs slower than options.retime.ee_speed.
+    control::RetimeStats timing;
 };
 
 /// The motion options a run plans `task` with: options.motion, with its EE
