@@ -140,6 +140,14 @@ expect_exit 0 "export an edited spatial solution" "$bin" export "$fixtures/s3-00
 grep -q "not certified" "$tmp/err" || fail "export of an edited solution does not warn: $(cat "$tmp/err")"
 grep -q "<strong>not certified</strong>" "$tmp/edited.html" || fail "the report of an edited solution claims a certificate"
 grep -q "Warning:\*\* not certified" "$tmp/edited.md" || fail "the build sheet of an edited solution claims a certificate"
+# A controller gets no uncertified motion unless asked for it.
+expect_exit 2 "export the CSV of an edited spatial solution" "$bin" export "$fixtures/s3-0001.task.json" \
+    "$tmp/edited.json" --csv "$tmp/edited.csv" --joint-trajectory "$tmp/edited.yaml"
+[ ! -e "$tmp/edited.csv" ] && [ ! -e "$tmp/edited.yaml" ] || fail "an uncertified spatial motion was written for a controller"
+grep -q -- "--write-uncertified" "$tmp/err" || fail "export does not say how to write it anyway: $(cat "$tmp/err")"
+expect_exit 0 "export the CSV of an edited spatial solution when asked" "$bin" export "$fixtures/s3-0001.task.json" \
+    "$tmp/edited.json" --csv "$tmp/edited.csv" --write-uncertified
+[ -s "$tmp/edited.csv" ] || fail "--write-uncertified wrote no CSV"
 # A module the catalog lacks is named; an overloaded joint is a warning.
 python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["robot"]["modules"] = ["X5-1", "X9-99"]; json.dump(d, open(sys.argv[2], "w"))' \
     "$fixtures/s3-0001.task.json" "$tmp/modules.task.json"

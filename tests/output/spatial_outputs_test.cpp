@@ -3,6 +3,8 @@
 // written together by write_exports as solve and export do.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -12,6 +14,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/control/path_corners.h>
+#include <modsynth/control/spatial_samples.h>
+#include <modsynth/geometry/primitive3.h>
 #include <modsynth/hardware/catalog.h>
 #include <modsynth/hardware/dh_stack.h>
 #include <modsynth/hardware/select_dh_modules.h>
@@ -167,6 +172,42 @@ TEST_CASE("spatial report of an edited motion says it is not certified", "[outpu
     CHECK(has(html, "Uncertified min. clearance"));
     const std::string sheet = output::build_sheet(c.task, parsed.solution);
     CHECK(has(sheet, "**Warning:** not certified"));
+}
+
+TEST_CASE("a spatial motion saved without rates is timed to a stop at its path's corners",
+          "[output]") {
+    // Where the tangent turns at a junction the tool cannot keep its speed
+    // and stay on the path; where it does not, it need not stop.
+    int corners = 0, smooth = 0;
+    for (const char* name : {"s3-0001", "s3-0004", "s3-0017", "s4-0010"}) {
+        const testing::SpatialCase c = testing::planted_case(name);
+        const auto& samples = c.solution.samples;
+        REQUIRE(!samples.front().qd.empty());
+        const auto stops = control::path_corners(c.task, samples);
+        for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
+            const control::Sample& a = samples[i];
+            const control::Sample& b = samples[i + 1];
+            if (a.phase != control::Phase::Trace || b.phase != control::Phase::Trace ||
+                b.primitive != a.primitive + 1)
+                continue;
+            const int j = control::primitive_index(c.task, a);
+            const auto& p = c.task.trajectory[j];
+            const geometry::Vec3 before = geometry::tangent_at(p, geometry::length(p));
+            const geometry::Vec3 after = geometry::tangent_at(c.task.trajectory[j + 1], 0.0);
+            const double turn = std::acos(
+                std::clamp(before.normalized().dot(after.normalized()), -1.0, 1.0));
+            const bool listed = std::find(stops.begin(), stops.end(), i) != stops.end();
+            CHECK(listed == (turn > control::kCornerAngle));
+            if (turn > control::kCornerAngle) {
+                ++corners;
+                for (double v : a.qd) CHECK(v == Approx(0.0).margin(1e-9));
+            } else {
+                ++smooth;
+            }
+        }
+    }
+    CHECK(corners > 0);
+    INFO("smooth junctions: " << smooth);
 }
 
 TEST_CASE("CSV and joint trajectory of spatial arms with 3 to 6 joints", "[output]") {
