@@ -118,7 +118,9 @@ Command add_export(CLI::App& parent) {
     CLI::App* sub = parent.add_subcommand(
         "export",
         "Write the report, URDF, CSV, joint trajectory or build sheet of a saved solution");
-    sub->add_option("TASK", a->task, "modsynth-task/1 JSON file the solution is for (planar or spatial)")->required();
+    sub->add_option("TASK", a->task,
+                    "modsynth-task/1 JSON file the solution is for (planar or spatial)")
+        ->required();
     sub->add_option("SOLUTION", a->solution, "modsynth-solution/1 JSON file")->required();
     add_export_options(*sub, a->exports);
     sub->add_flag("--write-uncertified", a->write_uncertified,

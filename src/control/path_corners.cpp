@@ -14,8 +14,8 @@ namespace {
 /// The samples at junctions j -> j + 1 traced without a transition where
 /// turn(j) (the tangent's turn there, rad) exceeds `angle`.
 template <class Task, class Turn>
-std::vector<std::size_t> corners(const Task& task, const std::vector<Sample>& samples,
-                                 double angle, const Turn& turn) {
+std::vector<std::size_t> corners(const Task& task, const std::vector<Sample>& samples, double angle,
+                                 const Turn& turn) {
     std::vector<std::size_t> out;
     const int m = static_cast<int>(task.trajectory.size());
     for (std::size_t i = 0; i + 1 < samples.size(); ++i) {

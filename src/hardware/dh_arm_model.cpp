@@ -17,8 +17,8 @@ void add_part(RigidBody& body, double mass, const Vec3& com, const Eigen::Matrix
     const Vec3 c = (body.mass * body.com + mass * com) / total;
     // Each inertia moved from its own centre to the joint one: I + m (|r|^2 E - r r^T).
     const auto shift = [](double m, const Vec3& r) {
-        return Eigen::Matrix3d(m * (r.squaredNorm() * Eigen::Matrix3d::Identity() -
-                                    r * r.transpose()));
+        return Eigen::Matrix3d(m *
+                               (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose()));
     };
     body.inertia = body.inertia + shift(body.mass, body.com - c) + inertia + shift(mass, com - c);
     body.com = c;
@@ -81,7 +81,8 @@ DhArmModel dh_arm_model(const task::SpatialRobotSpec& spec, const kinematics::Dh
         const bool from_corner = !t.along_axis && corner(t.link);
         const bool to_corner = t.along_axis && corner(t.link);
         if (!from_corner)
-            add_part(body, adapter, t.from + (t.proximal_allowance - spec.adapter_length / 2.0) * u);
+            add_part(body, adapter,
+                     t.from + (t.proximal_allowance - spec.adapter_length / 2.0) * u);
         if (!t.last && !to_corner && t.link + 1 < n &&
             stack.mounts[static_cast<std::size_t>(t.link)].kind == DhMountKind::TubeAdapter)
             add_part(body, adapter, t.to - (t.distal_allowance - spec.adapter_length / 2.0) * u);
@@ -104,10 +105,10 @@ DhArmModel dh_arm_model(const task::SpatialRobotSpec& spec, const kinematics::Dh
             const Actuator& next = *modules[static_cast<std::size_t>(k + 1)];
             const Eigen::Matrix3d R =
                 Eigen::AngleAxisd(r.alpha, Eigen::Vector3d::UnitX()).toRotationMatrix();
-            add_part(body, next.mass, end,
-                     box_inertia(next.mass,
-                                 Vec3(spec.module_length, spec.module_width, spec.module_height),
-                                 R));
+            add_part(
+                body, next.mass, end,
+                box_inertia(next.mass,
+                            Vec3(spec.module_length, spec.module_width, spec.module_height), R));
         } else {
             // The tool is the last tool_length m of the chain's last
             // segment; when that segment is not the last link's own (a last

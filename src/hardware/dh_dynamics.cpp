@@ -43,8 +43,8 @@ DhInverseDynamics::DhInverseDynamics(const DhArmModel& model) : impl_(std::make_
     for (std::size_t k = 0; k < c.rows.size(); ++k) {
         const kinematics::DhRow& r = c.rows[k];
         const KDL::Frame f_tip = KDL::Frame::DH(r.a, r.alpha, r.d, 0.0);
-        impl_->chain.addSegment(KDL::Segment(KDL::Joint(KDL::Joint::RotZ), f_tip,
-                                             tip_inertia(model.links[k], f_tip)));
+        impl_->chain.addSegment(
+            KDL::Segment(KDL::Joint(KDL::Joint::RotZ), f_tip, tip_inertia(model.links[k], f_tip)));
     }
     impl_->dof = impl_->chain.getNrOfJoints();
     impl_->solver = std::make_unique<KDL::ChainIdSolver_RNE>(impl_->chain, kdl(model.gravity));

@@ -29,8 +29,7 @@ DhStack dh_stack(const task::SpatialRobotSpec& spec, const kinematics::DhChain& 
     DhStack out;
     const int n = chain.dof();
     const double D = chain.link_diameter;
-    const Vec3 housing(spec.module_length / 2.0, spec.module_width / 2.0,
-                       spec.module_height / 2.0);
+    const Vec3 housing(spec.module_length / 2.0, spec.module_width / 2.0, spec.module_height / 2.0);
     const std::vector<kinematics::SegmentLayout> layout = kinematics::segment_layout(chain);
     for (std::size_t i = 0; i < layout.size(); ++i) {
         const kinematics::SegmentLayout& seg = layout[i];
@@ -42,8 +41,8 @@ DhStack dh_stack(const task::SpatialRobotSpec& spec, const kinematics::DhChain& 
         t.from = seg.along_axis ? Vec3::Zero() : Vec3(0.0, 0.0, r.d);
         t.to = seg.along_axis ? Vec3(0.0, 0.0, r.d) : Vec3(r.a, 0.0, r.d);
         t.last = i + 1 == layout.size();
-        const bool corner = std::abs(r.d) > kinematics::kZeroSegment &&
-                            std::abs(r.a) > kinematics::kZeroSegment;
+        const bool corner =
+            std::abs(r.d) > kinematics::kZeroSegment && std::abs(r.a) > kinematics::kZeroSegment;
         // Leaving the module's output along its axis, the tube starts at
         // the housing's face; across it, at the edge of the output.
         if (!seg.along_axis && corner)

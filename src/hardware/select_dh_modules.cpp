@@ -20,9 +20,10 @@ ModuleSelection select_modules(const task::SpatialTask& task, const kinematics::
                                const Catalog& catalog) {
     const std::vector<const Actuator*> allowed = allowed_actuators(task.robot.modules, catalog);
     const int n = chain.dof();
-    const bool timed = !samples.empty() && std::all_of(samples.begin(), samples.end(), [&](const auto& s) {
-        return static_cast<int>(s.qd.size()) == n && static_cast<int>(s.qdd.size()) == n;
-    });
+    const bool timed =
+        !samples.empty() && std::all_of(samples.begin(), samples.end(), [&](const auto& s) {
+            return static_cast<int>(s.qd.size()) == n && static_cast<int>(s.qdd.size()) == n;
+        });
     if (!timed) {
         ModuleSelection out;
         out.message =

@@ -74,10 +74,9 @@ std::string overload_text(int joint, const JointChoice& c) {
 
 std::vector<JointLoad> joint_loads(const ArmModel& model,
                                    const std::vector<control::Sample>& samples) {
-    return joint_loads(static_cast<int>(model.link_lengths.size()), samples,
-                       [&](const control::Sample& s) {
-                           return inverse_dynamics(model, s.q, s.qd, s.qdd);
-                       });
+    return joint_loads(
+        static_cast<int>(model.link_lengths.size()), samples,
+        [&](const control::Sample& s) { return inverse_dynamics(model, s.q, s.qd, s.qdd); });
 }
 
 std::vector<JointLoad> joint_loads(

@@ -29,8 +29,7 @@ std::string mount_text(const hardware::DhMount& m) {
         case DhMountKind::RightAngleBracket:
             return "right-angle bracket (axis a quarter turn from the previous one)";
         case DhMountKind::OtherBracket:
-            return "a bracket made for " + deg(std::abs(m.twist)) +
-                   " degrees (not in the catalog)";
+            return "a bracket made for " + deg(std::abs(m.twist)) + " degrees (not in the catalog)";
     }
     return "";
 }
@@ -86,12 +85,13 @@ std::string parts_section(const task::SpatialTask& task, const kinematics::DhCha
 std::string cuts_section(const task::SpatialTask& task, const hardware::DhStack& stack) {
     const auto& spec = task.robot;
     std::string s = "## Tube cut lengths\n\n";
-    s += "Each tube is one segment of the chain (axis to axis) less what the hardware takes at "
-         "its ends: at a module's output, half the module's height (leaving along its axis) or "
-         "half its width (leaving across it); at the next module, as far as the tube's line runs "
-         "inside its housing; at a link's corner bracket, half the tube's diameter; an adapter of " +
-         mm(spec.adapter_length) + " mm at each of these; at the end of the chain, the tool (" +
-         mm(spec.tool_length) + " mm).\n\n";
+    s +=
+        "Each tube is one segment of the chain (axis to axis) less what the hardware takes at "
+        "its ends: at a module's output, half the module's height (leaving along its axis) or "
+        "half its width (leaving across it); at the next module, as far as the tube's line runs "
+        "inside its housing; at a link's corner bracket, half the tube's diameter; an adapter of " +
+        mm(spec.adapter_length) + " mm at each of these; at the end of the chain, the tool (" +
+        mm(spec.tool_length) + " mm).\n\n";
     s += "| tube | link | along | segment (mm) | - start (mm) | - end (mm) | = cut length (mm) "
          "|\n|---|---|---|---|---|---|---|\n";
     std::string warnings;

@@ -29,10 +29,11 @@ std::string cylinder(const char* element, const Vec3& a, const Vec3& b, double d
                      const char* material) {
     const Vec3 d = b - a;
     const bool along_z = std::abs(d.z()) >= std::abs(d.x());
-    std::string s = std::string("    <") + element + ">\n      " +
-                    origin((a + b) / 2.0, along_z ? Vec3::Zero() : Vec3(0.0, geometry::kPi / 2, 0.0)) +
-                    "\n      <geometry><cylinder radius=\"" + num(diameter / 2.0) +
-                    "\" length=\"" + num(d.norm()) + "\"/></geometry>\n";
+    std::string s =
+        std::string("    <") + element + ">\n      " +
+        origin((a + b) / 2.0, along_z ? Vec3::Zero() : Vec3(0.0, geometry::kPi / 2, 0.0)) +
+        "\n      <geometry><cylinder radius=\"" + num(diameter / 2.0) + "\" length=\"" +
+        num(d.norm()) + "\"/></geometry>\n";
     if (material) s += std::string("      <material name=\"") + material + "\"/>\n";
     return s + "    </" + element + ">\n";
 }
@@ -120,7 +121,8 @@ std::string robot_urdf(const task::SpatialTask& task, const synth::Solution& sol
     for (const auto* m : modules) names += (names.empty() ? "" : ", ") + m->name;
     const bool chosen = solution.modules && solution.modules->checked;
 
-    std::string s = "<?xml version=\"1.0\"?>\n<robot name=\"" + urdf_robot_name(task.name) + "\">\n";
+    std::string s =
+        "<?xml version=\"1.0\"?>\n<robot name=\"" + urdf_robot_name(task.name) + "\">\n";
     s += "  <!-- Spatial arm synthesised by modsynth: a Denavit-Hartenberg chain of " +
          std::to_string(n) +
          " joints. Frame \"world\" is the task frame (z up); link_k's frame is DH frame k-1 "
@@ -138,11 +140,11 @@ std::string robot_urdf(const task::SpatialTask& task, const synth::Solution& sol
     s += "  <link name=\"world\"/>\n";
     // Module 1's housing stands at the base, in frame 0 (the task's axes).
     hardware::RigidBody base;
-    hardware::add_part(base, modules[0]->mass, Vec3::Zero(),
-                       hardware::box_inertia(
-                           modules[0]->mass,
-                           Vec3(spec.module_length, spec.module_width, spec.module_height),
-                           Eigen::Matrix3d::Identity()));
+    hardware::add_part(
+        base, modules[0]->mass, Vec3::Zero(),
+        hardware::box_inertia(modules[0]->mass,
+                              Vec3(spec.module_length, spec.module_width, spec.module_height),
+                              Eigen::Matrix3d::Identity()));
     s += "  <link name=\"base_module\">\n" + box(spec, Vec3::Zero(), 0.0) + inertial(base) +
          "  </link>\n";
     s += "  <joint name=\"base_mount\" type=\"fixed\">\n    <parent link=\"world\"/>\n"

@@ -48,7 +48,9 @@ std::string row(const char* id, const std::string& name, const std::string& valu
 // -------------------------------------------------------------- scene data
 
 std::string num(double v) { return text::format("%.6f", v); }
-std::string vec(const Vec3& p) { return "[" + num(p.x()) + "," + num(p.y()) + "," + num(p.z()) + "]"; }
+std::string vec(const Vec3& p) {
+    return "[" + num(p.x()) + "," + num(p.y()) + "," + num(p.z()) + "]";
+}
 
 bool in_core(const synth::Solution& s, const std::string& part) {
     return s.status != synth::Status::Solved &&
@@ -71,7 +73,8 @@ std::vector<Vec3> polyline(const geometry::Primitive3& p) {
     const double length = geometry::length(p);
     const double by_length = length / 0.005;
     const double by_turn = length * geometry::max_curvature(p) * 16.0;
-    const int n = static_cast<int>(std::clamp(std::ceil(std::max(by_length, by_turn)), 2.0, 4000.0));
+    const int n =
+        static_cast<int>(std::clamp(std::ceil(std::max(by_length, by_turn)), 2.0, 4000.0));
     std::vector<Vec3> out;
     for (int i = 0; i <= n; ++i) out.push_back(geometry::point_at(p, length * i / n));
     return out;
@@ -87,8 +90,8 @@ std::string task_data(const task::SpatialTask& task, const synth::Solution& s, B
             b.add(p);
         }
         prims += std::string(j ? "," : "") + "{\"i\":" + std::to_string(j) + ",\"col\":\"" +
-                 plot::primitive_colour(static_cast<int>(j)) + "\",\"core\":" +
-                 (in_core(s, part) ? "true" : "false") + ",\"pts\":[" + pts + "]}";
+                 plot::primitive_colour(static_cast<int>(j)) +
+                 "\",\"core\":" + (in_core(s, part) ? "true" : "false") + ",\"pts\":[" + pts + "]}";
     }
     std::string obstacles;
     for (std::size_t i = 0; i < task.obstacles.size(); ++i) {
@@ -99,7 +102,8 @@ std::string task_data(const task::SpatialTask& task, const synth::Solution& s, B
                 using T = std::decay_t<decltype(x)>;
                 if constexpr (std::is_same_v<T, geometry::Sphere>) {
                     b.add(x.center, x.radius);
-                    return "{\"type\":\"sphere\",\"c\":" + vec(x.center) + ",\"r\":" + num(x.radius);
+                    return "{\"type\":\"sphere\",\"c\":" + vec(x.center) +
+                           ",\"r\":" + num(x.radius);
                 } else if constexpr (std::is_same_v<T, geometry::Capsule>) {
                     b.add(x.a, x.radius);
                     b.add(x.b, x.radius);
@@ -120,8 +124,8 @@ std::string task_data(const task::SpatialTask& task, const synth::Solution& s, B
         const auto& r = task.base_regions[i];
         b.add(r.min);
         b.add(r.max);
-        regions += std::string(i ? "," : "") + "{\"min\":" + vec(r.min) + ",\"max\":" +
-                   vec(r.max) + ",\"core\":" + region_core + "}";
+        regions += std::string(i ? "," : "") + "{\"min\":" + vec(r.min) + ",\"max\":" + vec(r.max) +
+                   ",\"core\":" + region_core + "}";
     }
     return "\"task\":{\"prims\":[" + prims + "],\"obstacles\":[" + obstacles + "],\"regions\":[" +
            regions + "]}";
@@ -172,8 +176,8 @@ std::string scene_data(const task::SpatialTask& task, const synth::Solution& s) 
     for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j)
         names += (j ? ",\"" : "\"") + task::part_name(task, j) + "\"";
     if (!std::isfinite(b.min.x())) b.add(Vec3::Zero());
-    out += ",\"names\":[" + names + "],\"bounds\":{\"min\":" + vec(b.min) + ",\"max\":" +
-           vec(b.max) + "}}";
+    out += ",\"names\":[" + names + "],\"bounds\":{\"min\":" + vec(b.min) +
+           ",\"max\":" + vec(b.max) + "}}";
     return "<script type=\"application/json\" id=\"scene-data\">" + out + "</script>\n";
 }
 
@@ -201,7 +205,8 @@ std::string base_text(const task::SpatialTask& task, const Vec3& base) {
 }
 
 std::string dh_text(const kinematics::DhChain& chain) {
-    std::string s = "<table class=\"dh\"><tr><th>joint</th><th>a</th><th>&alpha;</th><th>d</th></tr>";
+    std::string s =
+        "<table class=\"dh\"><tr><th>joint</th><th>a</th><th>&alpha;</th><th>d</th></tr>";
     for (int k = 0; k < chain.dof(); ++k) {
         const auto& r = chain.rows[static_cast<std::size_t>(k)];
         s += "<tr><td>" + std::to_string(k + 1) + "</td><td>" + mm(r.a) + "</td><td>" +
@@ -260,8 +265,9 @@ std::string explanation(const synth::Solution& s) {
                                                  : "Why no robot was found";
     out += "</h2>\n<p id=\"explanation-message\">" + escape(s.explanation.message) + "</p>\n";
     if (!s.explanation.core.empty()) {
-        out += "<p>The task parts that together cannot be satisfied (red in the view):</p>\n"
-               "<ul id=\"core\">\n";
+        out +=
+            "<p>The task parts that together cannot be satisfied (red in the view):</p>\n"
+            "<ul id=\"core\">\n";
         for (const auto& part : s.explanation.core)
             out += "<li class=\"core-part\" data-part=\"" + escape(part) + "\"><code>" +
                    escape(part) + "</code></li>\n";
@@ -323,8 +329,8 @@ std::string timing_section(const task::SpatialTask& task, const synth::Solution&
 
 std::string html_report(const task::SpatialTask& task, const synth::Solution& solution,
                         const ReportFigures& figures) {
-    const bool solved = solution.status == synth::Status::Solved && solution.dh_robot &&
-                        !solution.samples.empty();
+    const bool solved =
+        solution.status == synth::Status::Solved && solution.dh_robot && !solution.samples.empty();
     const std::string status = synth::to_string(solution.status);
     const std::string name = task.name.empty() ? "task" : task.name;
     std::string out =
@@ -346,14 +352,15 @@ std::string html_report(const task::SpatialTask& task, const synth::Solution& so
     out += "<h2>Figures</h2>\n";
     out += solved ? solved_figures(task, solution, figures) : failed_figures(solution, figures);
     out += legend(task);
-    out += "<p class=\"note\" id=\"view-caption\">Red: obstacles (translucent); dashed boxes: "
-           "base regions; the grid is the task's xy-plane (z = 0, or lower when the scene is), "
-           "with the task frame's axes (x red, y green, z blue) at its origin." +
-           std::string(solved ? " The arm: the chain's segments as capsules of the link "
-                                "diameter (the tool dark), module housings red at the joints; "
-                                "black: the end-effector's trail."
-                              : "") +
-           "</p>\n</aside>\n</main>\n";
+    out +=
+        "<p class=\"note\" id=\"view-caption\">Red: obstacles (translucent); dashed boxes: "
+        "base regions; the grid is the task's xy-plane (z = 0, or lower when the scene is), "
+        "with the task frame's axes (x red, y green, z blue) at its origin." +
+        std::string(solved ? " The arm: the chain's segments as capsules of the link "
+                             "diameter (the tool dark), module housings red at the joints; "
+                             "black: the end-effector's trail."
+                           : "") +
+        "</p>\n</aside>\n</main>\n";
     if (solved) out += timing_section(task, solution);
     out += scene_data(task, solution);
     out += "<script>" + inline_script(assets::kViewerScript) + "</script>\n";

@@ -142,7 +142,8 @@ std::string fixed_joint(const char* name, const std::string& parent, const std::
 }
 
 std::string preamble(const task::Task& task, const std::string& modules, bool chosen) {
-    std::string s = "<?xml version=\"1.0\"?>\n<robot name=\"" + urdf_robot_name(task.name) + "\">\n";
+    std::string s =
+        "<?xml version=\"1.0\"?>\n<robot name=\"" + urdf_robot_name(task.name) + "\">\n";
     s += "  <!-- Planar arm synthesised by modsynth. Frame \"world\" is the task plane (z up); "
          "the tip link \"ee\" touches it. Joint angles are those of the solution's samples. "
          "Modules (joint 1 first): " +
@@ -213,7 +214,6 @@ std::string ros2_control_block(const std::string& task_name, const synth::Soluti
     }
     return s + "  </ros2_control>\n";
 }
-
 
 std::string robot_urdf(const task::Task& task, const synth::Solution& solution) {
     return robot_urdf(task, solution, hardware::load_default_catalog());

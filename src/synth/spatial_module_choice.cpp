@@ -4,8 +4,8 @@
 
 namespace modsynth::synth {
 
-void choose_modules(const task::SpatialTask& task,
-                    const std::optional<hardware::Catalog>& catalog, Solution& solution) {
+void choose_modules(const task::SpatialTask& task, const std::optional<hardware::Catalog>& catalog,
+                    Solution& solution) {
     if (solution.status != Status::Solved || !catalog || !solution.dh_robot) return;
     solution.modules =
         hardware::select_modules(task, *solution.dh_robot, solution.samples, *catalog);

@@ -48,7 +48,8 @@ double energy(const DhArmModel& m, const std::vector<double>& q, const std::vect
         for (std::size_t j = 0; j <= k; ++j)
             v += qd[j] * J[j].linear().col(2).cross(c - J[j].translation());
         const Eigen::Matrix3d I = J[k].linear() * b.inertia * J[k].linear().transpose();
-        e += 0.5 * b.mass * v.squaredNorm() + 0.5 * omega.dot(I * omega) - b.mass * m.gravity.dot(c);
+        e +=
+            0.5 * b.mass * v.squaredNorm() + 0.5 * omega.dot(I * omega) - b.mass * m.gravity.dot(c);
     }
     return e;
 }
@@ -118,8 +119,7 @@ TEST_CASE("spatial dynamics: a horizontal arm's static torques by hand", "[hardw
     CHECK_THROWS_AS(inverse_dynamics(m, {0.0}, {0, 0, 0}, {0, 0, 0}), std::invalid_argument);
 }
 
-TEST_CASE("spatial dynamics: gravity torques are the potential energy's gradient",
-          "[hardware]") {
+TEST_CASE("spatial dynamics: gravity torques are the potential energy's gradient", "[hardware]") {
     const Catalog catalog = shipped();
     std::mt19937 rng(7);
     for (int trial = 0; trial < 60; ++trial) {

@@ -32,8 +32,7 @@ Planted planted(const std::string& name) {
     Planted p{io::load_spatial_task(kFixtures + name + ".task.json"),
               io::load_solution(kFixtures + name + ".planted.json").solution};
     const int n = p.solution.dh_robot->dof();
-    p.solution.samples =
-        control::retime(p.solution.samples, control::joint_limits_for(p.task, n));
+    p.solution.samples = control::retime(p.solution.samples, control::joint_limits_for(p.task, n));
     return p;
 }
 
@@ -44,8 +43,7 @@ TEST_CASE("spatial module choice: the lightest module that carries each joint", 
     for (const char* name : {"s3-0001", "s4-0010"}) {
         Planted p = planted(name);
         const auto& chain = *p.solution.dh_robot;
-        const auto sel =
-            hardware::select_modules(p.task, chain, p.solution.samples, catalog);
+        const auto sel = hardware::select_modules(p.task, chain, p.solution.samples, catalog);
         REQUIRE(sel.checked);
         REQUIRE(static_cast<int>(sel.joints.size()) == chain.dof());
         CHECK(sel.carried());

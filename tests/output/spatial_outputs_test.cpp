@@ -92,8 +92,7 @@ void check_self_contained(const std::string& html) {
 
 }  // namespace
 
-TEST_CASE("spatial report: self-contained, with the motion, the task and the figures",
-          "[output]") {
+TEST_CASE("spatial report: self-contained, with the motion, the task and the figures", "[output]") {
     for (const char* name : {"s3-0004", "s4-0017"}) {
         testing::SpatialCase c = testing::planted_case(name);
         synth::choose_modules(c.task, hardware::load_default_catalog(), c.solution);
@@ -194,8 +193,8 @@ TEST_CASE("a spatial motion saved without rates is timed to a stop at its path's
             const auto& p = c.task.trajectory[j];
             const geometry::Vec3 before = geometry::tangent_at(p, geometry::length(p));
             const geometry::Vec3 after = geometry::tangent_at(c.task.trajectory[j + 1], 0.0);
-            const double turn = std::acos(
-                std::clamp(before.normalized().dot(after.normalized()), -1.0, 1.0));
+            const double turn =
+                std::acos(std::clamp(before.normalized().dot(after.normalized()), -1.0, 1.0));
             const bool listed = std::find(stops.begin(), stops.end(), i) != stops.end();
             CHECK(listed == (turn > control::kCornerAngle));
             if (turn > control::kCornerAngle) {
@@ -221,8 +220,7 @@ TEST_CASE("CSV and joint trajectory of spatial arms with 3 to 6 joints", "[outpu
         for (int k = 1; k <= n; ++k) header += ",qd" + std::to_string(k);
         for (int k = 1; k <= n; ++k) header += ",qdd" + std::to_string(k);
         CHECK(rows[0] == header);
-        for (std::size_t i = 1; i < rows.size(); ++i)
-            CHECK(count(rows[i], ",") == 3 * n + 2);
+        for (std::size_t i = 1; i < rows.size(); ++i) CHECK(count(rows[i], ",") == 3 * n + 2);
         CHECK(rows[7].rfind(std::to_string(s.samples[6].t).substr(0, 4), 0) == 0);
 
         const std::string yaml = output::joint_trajectory_yaml(s);
@@ -239,8 +237,7 @@ TEST_CASE("CSV and joint trajectory of spatial arms with 3 to 6 joints", "[outpu
     }
 }
 
-TEST_CASE("spatial URDF: joints from the DH rows, limits, modules and ros2_control",
-          "[output]") {
+TEST_CASE("spatial URDF: joints from the DH rows, limits, modules and ros2_control", "[output]") {
     const auto catalog = hardware::load_default_catalog();
     for (int n = 3; n <= 6; ++n) {
         task::SpatialTask task;
@@ -257,7 +254,8 @@ TEST_CASE("spatial URDF: joints from the DH rows, limits, modules and ros2_contr
         // Joint 2 sits at (a_1, 0, d_1), turned by alpha_1 about x.
         const auto& r = s.dh_robot->rows[0];
         CHECK(has(urdf, "<origin xyz=\"" + text::format("%.6f 0.000000 %.6f", r.a, r.d) +
-                            "\" rpy=\"" + text::format("%.6f", r.alpha) + " 0.000000 0.000000\"/>"));
+                            "\" rpy=\"" + text::format("%.6f", r.alpha) +
+                            " 0.000000 0.000000\"/>"));
         // Limits: the motion's range plus the margin; the strongest module.
         double lo = 1e9, hi = -1e9;
         for (const auto& x : s.samples) lo = std::min(lo, x.q[0]), hi = std::max(hi, x.q[0]);
@@ -279,7 +277,8 @@ TEST_CASE("spatial build sheet: tubes, brackets, modules, base and start pose", 
     CHECK(has(sheet, "| 3 | link 2's tube | 0.0 | tube adapter"));
     CHECK(count(sheet, "\\| common normal \\(a\\) \\||\\| joint axis \\(d\\) \\|") ==
           static_cast<int>(stack.tubes.size()));
-    for (const auto& t : stack.tubes) CHECK(has(sheet, "**" + text::format("%.1f", 1000.0 * t.cut_length) + "**"));
+    for (const auto& t : stack.tubes)
+        CHECK(has(sheet, "**" + text::format("%.1f", 1000.0 * t.cut_length) + "**"));
     CHECK(has(sheet, "## Modules"));
     CHECK(has(sheet, "## Base"));
     CHECK(has(sheet, text::format("%.4f", c.solution.dh_robot->base.z())));

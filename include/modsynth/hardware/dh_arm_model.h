@@ -18,9 +18,9 @@ namespace modsynth::hardware {
 /// Mass, centre of mass and inertia about it, in a link's joint frame
 /// (dh_stack.h).
 struct RigidBody {
-    double mass = 0.0;                                     ///< kg
-    geometry::Vec3 com = geometry::Vec3::Zero();           ///< m
-    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();     ///< kg m^2, about com
+    double mass = 0.0;                                  ///< kg
+    geometry::Vec3 com = geometry::Vec3::Zero();        ///< m
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< kg m^2, about com
 };
 
 /// Adds a part to a body (the parallel-axis theorem); parts without mass

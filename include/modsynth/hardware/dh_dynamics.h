@@ -30,7 +30,6 @@ private:
 
 /// One call of DhInverseDynamics(model).torques(q, qd, qdd).
 std::vector<double> inverse_dynamics(const DhArmModel& model, const std::vector<double>& q,
-                                     const std::vector<double>& qd,
-                                     const std::vector<double>& qdd);
+                                     const std::vector<double>& qd, const std::vector<double>& qdd);
 
 }  // namespace modsynth::hardware

@@ -27,8 +27,7 @@ std::vector<JointLoad> joint_loads(const DhArmModel& model,
 /// lacks qd or qdd. Throws task::InputError naming robot.modules[i] for a
 /// name the catalog does not have.
 ModuleSelection select_modules(const task::SpatialTask& task, const kinematics::DhChain& chain,
-                               const std::vector<control::Sample>& samples,
-                               const Catalog& catalog);
+                               const std::vector<control::Sample>& samples, const Catalog& catalog);
 
 /// The modules a spatial arm is drawn and described with when none were
 /// chosen for a load: the strongest allowed (by peak torque) at every joint.

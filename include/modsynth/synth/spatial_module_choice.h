@@ -13,7 +13,7 @@ namespace modsynth::synth {
 
 /// Sets solution.modules for a solved spatial solution when there is a
 /// catalog; the status is left as it is.
-void choose_modules(const task::SpatialTask& task,
-                    const std::optional<hardware::Catalog>& catalog, Solution& solution);
+void choose_modules(const task::SpatialTask& task, const std::optional<hardware::Catalog>& catalog,
+                    Solution& solution);
 
 }  // namespace modsynth::synth
