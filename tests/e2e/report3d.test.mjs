@@ -74,7 +74,7 @@ try {
     requests.push(u);
     return route.abort();
   });
-  await page.goto(url + "#t=3");
+  await page.goto(url + "#t=2");
   await page.waitForFunction(() => window.modsynthView && (window.modsynthView.ready || window.modsynthView.error),
                              null, { timeout: 30_000 });
   const view = await page.evaluate(() => ({ ...window.modsynthView }));
@@ -82,8 +82,8 @@ try {
   check(view.ready, "the view is ready");
   check(errors.length === 0, "no script error: " + errors.join("; "));
   check(requests.length === 0, "nothing fetched from elsewhere: " + requests.join(", "));
-  check(Math.abs(view.time - 3) < 1e-6, "#t=3 opens at t = 3 s (got " + view.time + ")");
-  check(view.duration > 3, "the motion lasts more than 3 s (" + view.duration + ")");
+  check(Math.abs(view.time - 2) < 1e-6, "#t=2 opens at t = 2 s (got " + view.time + ")");
+  check(view.duration > 2, "the motion lasts more than 2 s (" + view.duration + ")");
   check(await page.locator("#view canvas").count() === 1, "one canvas in #view");
 
   // The picture: how many distinct colours the canvas shows, and how many
