@@ -4,8 +4,9 @@
 # (exit 2); `certify` certifies the planted solutions of the shared
 # planter and refuses their mutations exactly where the shared grader does;
 # `solve` and `batch` design robots for them (planted tasks solved and graded,
-# the unreachable one proved infeasible with its core); every command that
-# does not take spatial tasks yet refuses them by name.
+# the unreachable one proved infeasible with its core); export writes every
+# output of a spatial solution; every command that does not take spatial
+# tasks yet refuses them by name.
 # Arguments: modsynth binary, source root, folder of the shared contract
 # (default: beside the source root); without the shared grader the
 # comparison with it is skipped and said so.
@@ -116,6 +117,18 @@ for t in s3-0001 s3-0004 s4-0030; do
     python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))["robot"]; assert len(r["dh"]) == r["dof"] >= 3, r' \
         "$tmp/$t.solution.json" || fail "solve $t: no DH chain in the solution"
 done
+# solve writes the outputs of a spatial solution beside it, modules chosen.
+expect_exit 0 "solve s3-0001 with outputs" "$bin" solve "$fixtures/s3-0001.task.json" \
+    -o "$tmp/s3-out.json" --report "$tmp/s3-out.html" --urdf "$tmp/s3-out.urdf" \
+    --build-sheet "$tmp/s3-out.md" --time-limit 60
+for ext in html urdf md; do
+    [ -s "$tmp/s3-out.$ext" ] || fail "solve --$ext of a spatial task wrote nothing"
+done
+grep -q 'id="scene-data"' "$tmp/s3-out.html" || fail "solve --report: no 3-D scene"
+grep -q "A spatial arm" "$tmp/s3-out.md" || fail "solve --build-sheet: not a spatial build sheet"
+grep -q "^  modules " "$tmp/out" || fail "solve s3-0001: no modules in the summary: $(cat "$tmp/out")"
+python3 -c 'import json, sys; assert json.load(open(sys.argv[1]))["modules"]["joints"]' "$tmp/s3-out.json" ||
+    fail "solve s3-0001: no modules in the solution"
 expect_exit 3 "solve sir-0001" "$bin" solve "$fixtures/sir-0001.task.json" -o "$tmp/sir.json"
 python3 - "$fixtures/sir-0001.expect.json" "$tmp/sir.json" <<'PY' || fail "solve sir-0001: the core is not the planted one"
 import json, sys
@@ -142,9 +155,73 @@ assert rows["s3-0001"]["total_link_length"] > 0.05, rows["s3-0001"]
 assert rows["sir-0001"]["status"] == "infeasible" and "base_regions" in rows["sir-0001"]["core"], rows["sir-0001"]
 PY
 
+
+# export writes every output of a spatial solution: the planter's
+# solutions carry no timing, so export times them (CSV and joint trajectory
+# with rates within the default limits); check_urdf accepts the URDF.
+for name in s3-0001 s4-0030; do
+    expect_exit 0 "export $name" "$bin" export "$fixtures/$name.task.json" "$fixtures/$name.planted.json" \
+        --report "$tmp/$name.html" --urdf "$tmp/$name.urdf" --csv "$tmp/$name.csv" \
+        --joint-trajectory "$tmp/$name.yaml" --build-sheet "$tmp/$name.md"
+    for ext in html urdf csv yaml md; do
+        [ -s "$tmp/$name.$ext" ] || fail "export $name: no .$ext"
+    done
+    grep -q 'id="scene-data"' "$tmp/$name.html" || fail "export $name: the report has no 3-D scene"
+    if command -v check_urdf >/dev/null; then
+        check_urdf "$tmp/$name.urdf" >"$tmp/check_urdf" 2>&1 || fail "check_urdf refuses $name.urdf: $(tail -3 "$tmp/check_urdf")"
+    fi
+    python3 - "$tmp/$name.csv" "$fixtures/$name.planted.json" <<'PY' || fail "export $name: bad CSV"
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+sol = json.load(open(sys.argv[2]))
+n = sol["robot"]["dof"]
+assert len(rows) == len(sol["samples"]), (len(rows), len(sol["samples"]))
+for k in range(1, n + 1):
+    assert max(abs(float(r["qd%d" % k])) for r in rows) <= 3.142 * (1 + 1e-6)
+    assert max(abs(float(r["qdd%d" % k])) for r in rows) <= 10 * (1 + 1e-6)
+assert all(float(b["t"]) > float(a["t"]) for a, b in zip(rows, rows[1:]))
+for r, s in zip(rows, sol["samples"]):
+    assert all(abs(float(r["q%d" % (k + 1)]) - s["q"][k]) < 1e-8 for k in range(n))
+PY
+    grep -q "joint_names: \[joint_1" "$tmp/$name.yaml" || fail "export $name: no joint names in the joint trajectory"
+    grep -q "A spatial arm" "$tmp/$name.md" || fail "export $name: not a spatial build sheet"
+done
+# An edited motion is verified again: the report and the sheet say so.
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["samples"][20]["q"][1] += 0.1; json.dump(d, open(sys.argv[2], "w"))' \
+    "$fixtures/s3-0001.planted.json" "$tmp/edited.json"
+expect_exit 0 "export an edited spatial solution" "$bin" export "$fixtures/s3-0001.task.json" "$tmp/edited.json" \
+    --report "$tmp/edited.html" --build-sheet "$tmp/edited.md"
+grep -q "not certified" "$tmp/err" || fail "export of an edited solution does not warn: $(cat "$tmp/err")"
+grep -q "<strong>not certified</strong>" "$tmp/edited.html" || fail "the report of an edited solution claims a certificate"
+grep -q "Warning:\*\* not certified" "$tmp/edited.md" || fail "the build sheet of an edited solution claims a certificate"
+# A controller gets no uncertified motion unless asked for it.
+expect_exit 2 "export the CSV of an edited spatial solution" "$bin" export "$fixtures/s3-0001.task.json" \
+    "$tmp/edited.json" --csv "$tmp/edited.csv" --joint-trajectory "$tmp/edited.yaml"
+[ ! -e "$tmp/edited.csv" ] && [ ! -e "$tmp/edited.yaml" ] || fail "an uncertified spatial motion was written for a controller"
+grep -q -- "--write-uncertified" "$tmp/err" || fail "export does not say how to write it anyway: $(cat "$tmp/err")"
+expect_exit 0 "export the CSV of an edited spatial solution when asked" "$bin" export "$fixtures/s3-0001.task.json" \
+    "$tmp/edited.json" --csv "$tmp/edited.csv" --write-uncertified
+[ -s "$tmp/edited.csv" ] || fail "--write-uncertified wrote no CSV"
+# A module the catalog lacks is named; an overloaded joint is a warning.
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["robot"]["modules"] = ["X5-1", "X9-99"]; json.dump(d, open(sys.argv[2], "w"))' \
+    "$fixtures/s3-0001.task.json" "$tmp/modules.task.json"
+expect_exit 2 "export with an unknown module" "$bin" export "$tmp/modules.task.json" "$fixtures/s3-0001.planted.json" --csv "$tmp/x.csv"
+grep -qF "robot.modules[1]" "$tmp/err" || fail "export does not name robot.modules[1]: $(cat "$tmp/err")"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); d["robot"]["modules"] = ["X5-1"]; d["robot"]["payload"] = 3.0; json.dump(d, open(sys.argv[2], "w"))' \
+    "$fixtures/s3-0001.task.json" "$tmp/heavy.task.json"
+expect_exit 0 "export an overloaded arm" "$bin" export "$tmp/heavy.task.json" "$fixtures/s3-0001.planted.json" --build-sheet "$tmp/heavy.md"
+grep -q "overloads its modules: joint [12] is overloaded" "$tmp/err" || fail "export does not warn of the overload: $(cat "$tmp/err")"
+grep -q "Warning:\*\* joint [12] is overloaded" "$tmp/heavy.md" || fail "the build sheet does not warn of the overload"
+# An infeasible answer has a report but no robot to export.
+python3 -c 'import json, sys; json.dump({"format": "modsynth-solution/1", "task": "s3-0001", "status": "infeasible", "explanation": {"message": "no", "core": ["trajectory[0]"]}}, open(sys.argv[1], "w"))' \
+    "$tmp/infeasible.json"
+expect_exit 2 "export a URDF of an infeasible spatial solution" "$bin" export "$fixtures/s3-0001.task.json" \
+    "$tmp/infeasible.json" --report "$tmp/inf.html" --urdf "$tmp/inf.urdf"
+[ -s "$tmp/inf.html" ] && [ ! -e "$tmp/inf.urdf" ] || fail "export of an infeasible solution: report and no URDF expected"
+
 # Every other command refuses a spatial task by name, before any work.
 task=$fixtures/s3-0001.task.json
-for cmd in "explain $task" "export $task $fixtures/s3-0001.planted.json --csv $tmp/x.csv" \
+for cmd in "explain $task" \
            "baseline $task" "compare $task" "export-svg $task -o $tmp/x.svg"; do
     name=${cmd%% *}
     # shellcheck disable=SC2086

@@ -3,16 +3,19 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
+#include <modsynth/hardware/select_dh_modules.h>
 #include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/output/exports.h>
 #include <modsynth/output/recertify.h>
+#include <modsynth/synth/spatial_module_choice.h>
 
 #include "command.h"
 #include "module_choice.h"
-#include "planar_task.h"
 
 namespace modsynth::app {
 namespace {
@@ -23,6 +26,54 @@ struct ExportArgs {
     bool write_uncertified = false;
 };
 
+/// Warns of a solved motion that is not certified and, unless the user
+/// asked for them, takes its controller files (CSV, joint trajectory) out of
+/// `paths`: a controller commands what these files say, so a motion that
+/// fails verification is not handed to one. Returns a line per file left out.
+std::vector<std::string> refuse_uncertified(const ExportArgs& a, const synth::Solution& s,
+                                            output::ExportPaths& paths) {
+    std::vector<std::string> refused;
+    if (s.status != synth::Status::Solved || s.certificate.ok) return refused;
+    std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),
+                 output::uncertified_reason(s.certificate).c_str());
+    if (a.write_uncertified) return refused;
+    for (auto [path, option] : {std::pair{&paths.csv, "--csv"},
+                                std::pair{&paths.joint_trajectory, "--joint-trajectory"}}) {
+        if (path->empty()) continue;
+        refused.push_back(std::string(option) + " " + *path +
+                          ": not written; the motion is not certified (give "
+                          "--write-uncertified to write it anyway)");
+        path->clear();
+    }
+    return refused;
+}
+
+/// Prints the files not written; exit 2 when there are any.
+int report_skipped(std::vector<std::string> skipped, const std::vector<std::string>& refused) {
+    skipped.insert(skipped.end(), refused.begin(), refused.end());
+    for (const auto& line : skipped) std::fprintf(stderr, "error: %s\n", line.c_str());
+    return skipped.empty() ? kOk : kInvalid;
+}
+
+/// A spatial task: re-verified as in the plane, modules chosen, and each
+/// file written by the spatial writers.
+int export_spatial(const ExportArgs& a, const task::SpatialTask& task) {
+    std::string note;
+    const std::optional<hardware::Catalog> catalog = hardware::spatial_catalog(task, &note);
+    if (!note.empty()) std::fprintf(stderr, "note: %s\n", note.c_str());
+    io::ParsedSolution parsed = io::load_solution(a.solution);
+    output::ReportFigures figures;
+    figures.certificate_note = output::recertify(task, parsed);
+    synth::choose_modules(task, catalog, parsed.solution);
+    const synth::Solution& s = parsed.solution;
+    if (s.modules && s.modules->checked && !s.modules->carried())
+        std::fprintf(stderr, "warning: the certified robot overloads its modules: %s\n",
+                     s.modules->message.c_str());
+    output::ExportPaths paths = a.exports;
+    const std::vector<std::string> refused = refuse_uncertified(a, s, paths);
+    return report_skipped(output::write_exports(task, parsed.solution, paths, figures), refused);
+}
+
 int run_export(const ExportArgs& a) {
     if (!a.exports.any()) {
         std::fprintf(stderr,
@@ -30,7 +81,10 @@ int run_export(const ExportArgs& a) {
                      "--joint-trajectory and/or --build-sheet\n");
         return kInvalid;
     }
-    const task::Task task = load_planar_task(a.task, "export");
+    const io::TaskDocument doc = io::load_task_document(a.task);
+    if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
+        return export_spatial(a, *spatial);
+    const task::Task& task = std::get<task::Task>(doc);
     const std::optional<hardware::Catalog> catalog = catalog_for(task);
     io::ParsedSolution parsed = io::load_solution(a.solution);
     output::ReportFigures figures;
@@ -41,27 +95,8 @@ int run_export(const ExportArgs& a) {
         std::fprintf(stderr, "error: %s\n", parsed.solution.explanation.message.c_str());
     const synth::Solution& s = parsed.solution;
     output::ExportPaths paths = a.exports;
-    std::vector<std::string> refused;
-    if (s.status == synth::Status::Solved && !s.certificate.ok) {
-        std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),
-                     output::uncertified_reason(s.certificate).c_str());
-        // A controller commands what these files say: a motion that fails
-        // verification is not handed to one unless the user says so.
-        if (!a.write_uncertified) {
-            for (auto [path, option] : {std::pair{&paths.csv, "--csv"},
-                                        std::pair{&paths.joint_trajectory, "--joint-trajectory"}}) {
-                if (path->empty()) continue;
-                refused.push_back(std::string(option) + " " + *path +
-                                  ": not written; the motion is not certified (give "
-                                  "--write-uncertified to write it anyway)");
-                path->clear();
-            }
-        }
-    }
-    auto skipped = output::write_exports(task, parsed.solution, paths, figures);
-    skipped.insert(skipped.end(), refused.begin(), refused.end());
-    for (const auto& s : skipped) std::fprintf(stderr, "error: %s\n", s.c_str());
-    return skipped.empty() ? kOk : kInvalid;
+    const std::vector<std::string> refused = refuse_uncertified(a, s, paths);
+    return report_skipped(output::write_exports(task, parsed.solution, paths, figures), refused);
 }
 
 }  // namespace
@@ -83,7 +118,9 @@ Command add_export(CLI::App& parent) {
     CLI::App* sub = parent.add_subcommand(
         "export",
         "Write the report, URDF, CSV, joint trajectory or build sheet of a saved solution");
-    sub->add_option("TASK", a->task, "modsynth-task/1 JSON file the solution is for")->required();
+    sub->add_option("TASK", a->task,
+                    "modsynth-task/1 JSON file the solution is for (planar or spatial)")
+        ->required();
     sub->add_option("SOLUTION", a->solution, "modsynth-solution/1 JSON file")->required();
     add_export_options(*sub, a->exports);
     sub->add_flag("--write-uncertified", a->write_uncertified,

@@ -123,7 +123,8 @@ int run_solve(const SolveArgs& a) {
     io::TaskDocument doc = io::load_task_document(a.task);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
         return run_spatial_solve(
-            *spatial, {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed, a.quiet}, t0);
+            *spatial, {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed, a.quiet, a.exports},
+            t0);
     const task::Task task = std::get<task::Task>(std::move(doc));
     const std::optional<hardware::Catalog> catalog = catalog_for(task);
     const auto elapsed = [&] {

@@ -1,10 +1,13 @@
 #include "spatial_solve.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
+#include <modsynth/hardware/select_dh_modules.h>
 #include <modsynth/io/solution_io.h>
+#include <modsynth/synth/spatial_module_choice.h>
 #include <modsynth/synth/spatial_synthesizer.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
@@ -55,6 +58,7 @@ void print_summary(const task::SpatialTask& task, const synth::Solution& solutio
         clearance.c_str(), c.min_self_clearance, c.max_deviation);
     std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
                 solution.samples.back().t, output.c_str());
+    if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
 }
 
 }  // namespace
@@ -74,14 +78,19 @@ int run_spatial_solve(const task::SpatialTask& task, const SpatialSolveRequest& 
                                       unknown.status.reason +
                                       "; the last stage reached: " + unknown.status.stage + ".";
         io::write_solution(unknown, a.output);
+        for (const auto& note : output::write_exports(task, unknown, a.exports, {}))
+            std::fprintf(stderr, "note: %s\n", note.c_str());
         print_summary(task, unknown, elapsed(), {}, a.output);
         return int{kUnknown};
     });
+    std::string catalog_note;
+    const std::optional<hardware::Catalog> catalog = hardware::spatial_catalog(task, &catalog_note);
+    if (!catalog_note.empty() && !a.quiet) std::fprintf(stderr, "note: %s\n", catalog_note.c_str());
     synth::SpatialSynthesisOptions options;
     options.time_limit = std::max(0.0, a.time_limit - elapsed());
     options.seed = a.seed;
     options.retime.ee_speed = a.ee_speed;
-    options.retime.joint_speed = a.joint_speed;
+    options.retime.joint_speed = std::min(a.joint_speed, hardware::module_speed_cap(task, catalog));
     options.progress = [&](const std::string& line) {
         watchdog.set_stage(line.size() > 11 ? line.substr(11) : line);  // without the clock
         if (!a.quiet) std::cerr << line << std::endl;
@@ -90,7 +99,16 @@ int run_spatial_solve(const task::SpatialTask& task, const SpatialSolveRequest& 
     synth::Solution solution = synth::synthesize(task, options, &stats);
     const double seconds = elapsed();
     watchdog.claim();
+    synth::choose_modules(task, catalog, solution);
+    if (solution.modules && solution.modules->checked && !solution.modules->carried())
+        std::fprintf(stderr, "warning: the certified robot overloads its modules: %s\n",
+                     solution.modules->message.c_str());
     io::write_solution(solution, a.output);
+    for (const auto& note : output::write_exports(
+             task, solution, a.exports,
+             {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}})) {
+        std::fprintf(stderr, "note: %s\n", note.c_str());
+    }
     print_summary(task, solution, seconds, stats, a.output);
     switch (solution.status) {
         case synth::Status::Solved:

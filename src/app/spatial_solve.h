@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include <modsynth/output/exports.h>
 #include <modsynth/task/spatial_task.h>
 
 namespace modsynth::app {
@@ -18,6 +19,8 @@ struct SpatialSolveRequest {
     double ee_speed = std::numeric_limits<double>::infinity();
     double joint_speed = std::numeric_limits<double>::infinity();
     bool quiet = false;
+    /// The files asked for beside the solution (--report, --urdf, ...).
+    output::ExportPaths exports;
 };
 
 /// The run's exit code; `started` is when the command began (its time

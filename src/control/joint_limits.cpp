@@ -34,6 +34,13 @@ JointLimits joint_limits_for(const task::Task& task, int dof) {
             spec->jerk.empty() ? std::vector<double>{} : spread(spec->jerk, dof, "jerk")};
 }
 
+JointLimits joint_limits_for(const task::SpatialTask& task, int dof) {
+    // The planar rules, applied to the same key: one implementation of them.
+    task::Task planar;
+    planar.robot.joint_limits = task.robot.joint_limits;
+    return joint_limits_for(planar, dof);
+}
+
 bool valid(const JointLimits& limits, std::string* error) {
     const auto fail = [&](const std::string& message) {
         if (error) *error = message;

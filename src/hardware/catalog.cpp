@@ -135,6 +135,12 @@ const Adapter& Catalog::adapter() const {
     return adapters.front();
 }
 
+const Adapter* Catalog::adapter(const std::string& name) const {
+    for (const auto& a : adapters)
+        if (a.name == name) return &a;
+    return nullptr;
+}
+
 void parse_catalog_file(const std::string& text, const std::string& file, Catalog& catalog) {
     json doc;
     try {

@@ -74,14 +74,22 @@ std::string overload_text(int joint, const JointChoice& c) {
 
 std::vector<JointLoad> joint_loads(const ArmModel& model,
                                    const std::vector<control::Sample>& samples) {
-    const std::size_t n = model.link_lengths.size();
+    return joint_loads(
+        static_cast<int>(model.link_lengths.size()), samples,
+        [&](const control::Sample& s) { return inverse_dynamics(model, s.q, s.qd, s.qdd); });
+}
+
+std::vector<JointLoad> joint_loads(
+    int dof, const std::vector<control::Sample>& samples,
+    const std::function<std::vector<double>(const control::Sample&)>& torques) {
+    const auto n = static_cast<std::size_t>(dof);
     if (!timed(samples, n))
         throw std::invalid_argument("joint_loads: every sample needs q, qd and qdd per joint");
     std::vector<JointLoad> loads(n);
     std::vector<double> square_integral(n, 0.0), square_sum(n, 0.0), previous;
     for (std::size_t i = 0; i < samples.size(); ++i) {
         const auto& s = samples[i];
-        const std::vector<double> tau = inverse_dynamics(model, s.q, s.qd, s.qdd);
+        const std::vector<double> tau = torques(s);
         const double dt = i > 0 ? s.t - samples[i - 1].t : 0.0;
         for (std::size_t k = 0; k < n; ++k) {
             JointLoad& l = loads[k];
@@ -109,19 +117,24 @@ std::vector<JointLoad> joint_loads(const ArmModel& model,
 
 std::vector<const Actuator*> allowed_actuators(const task::RobotSpec& spec,
                                                const Catalog& catalog) {
+    return allowed_actuators(spec.modules, catalog);
+}
+
+std::vector<const Actuator*> allowed_actuators(const std::vector<std::string>& names,
+                                               const Catalog& catalog) {
     std::vector<const Actuator*> out;
-    if (spec.modules.empty()) {
+    if (names.empty()) {
         for (const auto& a : catalog.actuators) out.push_back(&a);
     } else {
-        for (std::size_t i = 0; i < spec.modules.size(); ++i) {
-            const Actuator* a = catalog.actuator(spec.modules[i]);
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            const Actuator* a = catalog.actuator(names[i]);
             if (!a) {
-                std::string names;
+                std::string known;
                 for (const auto& c : catalog.actuators)
-                    names += (names.empty() ? "" : ", ") + c.name;
+                    known += (known.empty() ? "" : ", ") + c.name;
                 throw task::InputError(
                     "robot.modules[" + std::to_string(i) + "]",
-                    "the module catalog has no \"" + spec.modules[i] + "\"; it has " + names);
+                    "the module catalog has no \"" + names[i] + "\"; it has " + known);
             }
             out.push_back(a);
         }
@@ -135,21 +148,29 @@ ModuleSelection select_modules(const task::Task& task, const kinematics::Robot& 
                                const std::vector<control::Sample>& samples,
                                const Catalog& catalog) {
     const std::vector<const Actuator*> allowed = allowed_actuators(task.robot, catalog);
-    ModuleSelection out;
     const int n = robot.dof();
     if (!timed(samples, static_cast<std::size_t>(n))) {
+        ModuleSelection out;
         out.message =
             "modules not chosen: the motion carries no joint rates and accelerations (qd, qdd)";
         return out;
     }
+    return choose_modules(n, allowed, [&](const std::vector<const Actuator*>& modules) {
+        return joint_loads(arm_model(task.robot, robot, catalog, modules), samples);
+    });
+}
+
+ModuleSelection choose_modules(int dof, const std::vector<const Actuator*>& allowed,
+                               const LoadsWithModules& loads) {
+    ModuleSelection out;
+    const int n = dof;
     out.checked = true;
     out.joints.resize(n);
     // Joints not yet chosen hold the lightest module: they are proximal to
     // the joint being chosen, so they do not load it.
     std::vector<const Actuator*> modules(n, allowed.front());
     for (int k = n - 1; k >= 0; --k) {
-        const JointLoad load =
-            joint_loads(arm_model(task.robot, robot, catalog, modules), samples)[k];
+        const JointLoad load = loads(modules)[k];
         std::optional<JointChoice> best;
         for (const Actuator* a : allowed) {
             const JointChoice c = assess(*a, load);

@@ -31,34 +31,6 @@ std::string parts(const task::Task& task, const kinematics::Robot& robot) {
     return s;
 }
 
-/// The modules chosen to carry the motion (hardware/select_modules.h), or
-/// what overloads, when the solution has a choice.
-std::string modules_section(const synth::Solution& solution) {
-    if (!solution.modules) return "";
-    const hardware::ModuleSelection& m = *solution.modules;
-    std::string s = "## Modules\n\n";
-    if (!m.checked) return s + m.message + ".\n\n";
-    if (m.overloaded_joint > 0) s += "**Warning:** " + m.message + ".\n\n";
-    s += "Lightest allowed module per joint that carries the motion: peak |torque| within its "
-         "peak torque, RMS torque within its continuous torque, |speed| within its top speed. "
-         "Margin: rating minus load.\n\n"
-         "| joint | module | mass (kg) | peak torque (N m) | at t (s) | peak margin (N m) | RMS "
-         "torque (N m) | continuous margin (N m) | top speed (rad/s) | speed margin (rad/s) "
-         "|\n|---|---|---|---|---|---|---|---|---|---|\n";
-    for (std::size_t k = 0; k < m.joints.size(); ++k) {
-        const auto& j = m.joints[k];
-        s += "| " + std::to_string(k + 1) + " | " + text::markdown_literal(j.module) +
-             (j.carries ? "" : " **(overloaded)**") + " | " + text::format("%.3f", j.mass) + " | " +
-             text::format("%.3f", j.load.peak_torque) + " | " +
-             text::format("%.3f", j.load.peak_time) + " | " + text::format("%.3f", j.peak_margin) +
-             " | " + text::format("%.3f", j.load.rms_torque) + " | " +
-             text::format("%.3f", j.continuous_margin) + " | " +
-             text::format("%.3f", j.load.max_speed) + " | " + text::format("%.3f", j.speed_margin) +
-             " |\n";
-    }
-    return s + "\nModules: " + text::format("%.3f", m.total_mass) + " kg in all.\n\n";
-}
-
 std::string cut_row(int k, const TubeCut& c) {
     return "| " + std::to_string(k + 1) + " | " + mm(c.link_length) + " | " +
            mm(c.proximal_allowance) + " | " + mm(c.distal_allowance) + " | **" + mm(c.cut_length) +
@@ -146,6 +118,32 @@ std::string start_pose_section(const synth::Solution& solution) {
 }
 
 }  // namespace
+
+std::string modules_section(const synth::Solution& solution) {
+    if (!solution.modules) return "";
+    const hardware::ModuleSelection& m = *solution.modules;
+    std::string s = "## Modules\n\n";
+    if (!m.checked) return s + m.message + ".\n\n";
+    if (m.overloaded_joint > 0) s += "**Warning:** " + m.message + ".\n\n";
+    s += "Lightest allowed module per joint that carries the motion: peak |torque| within its "
+         "peak torque, RMS torque within its continuous torque, |speed| within its top speed. "
+         "Margin: rating minus load.\n\n"
+         "| joint | module | mass (kg) | peak torque (N m) | at t (s) | peak margin (N m) | RMS "
+         "torque (N m) | continuous margin (N m) | top speed (rad/s) | speed margin (rad/s) "
+         "|\n|---|---|---|---|---|---|---|---|---|---|\n";
+    for (std::size_t k = 0; k < m.joints.size(); ++k) {
+        const auto& j = m.joints[k];
+        s += "| " + std::to_string(k + 1) + " | " + text::markdown_literal(j.module) +
+             (j.carries ? "" : " **(overloaded)**") + " | " + text::format("%.3f", j.mass) + " | " +
+             text::format("%.3f", j.load.peak_torque) + " | " +
+             text::format("%.3f", j.load.peak_time) + " | " + text::format("%.3f", j.peak_margin) +
+             " | " + text::format("%.3f", j.load.rms_torque) + " | " +
+             text::format("%.3f", j.continuous_margin) + " | " +
+             text::format("%.3f", j.load.max_speed) + " | " + text::format("%.3f", j.speed_margin) +
+             " |\n";
+    }
+    return s + "\nModules: " + text::format("%.3f", m.total_mass) + " kg in all.\n\n";
+}
 
 std::string build_sheet(const task::Task& task, const synth::Solution& solution) {
     const auto& robot = solution.robot;

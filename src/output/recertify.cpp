@@ -38,6 +38,12 @@ std::string recertify(const task::SpatialTask& task, io::ParsedSolution& parsed)
     if (s.status != synth::Status::Solved) return "";
     control::recover_parameters(task, *s.dh_robot, s.samples);
     s.certificate = verify::certify(task, *s.dh_robot, s.samples);
+    // As in the plane: a motion saved without velocities (the planter's,
+    // another tool's) is timed for the controller outputs, stopping at the
+    // path's corners; its path is kept.
+    const control::JointLimits limits = control::joint_limits_for(task, s.dh_robot->dof());
+    if (s.samples.front().qd.empty() || s.samples.front().qdd.empty())
+        s.samples = control::retime_for(task, std::move(s.samples), limits);
     return parsed.has_certificate ? ""
                                   : "computed by export: the solution file carries no certificate";
 }

@@ -20,14 +20,6 @@ std::string num(double v) { return text::format("%.6f", v); }
 
 std::string xyz(double x, double y, double z) { return num(x) + " " + num(y) + " " + num(z); }
 
-/// URDF names must be plain; anything else becomes '_'.
-std::string robot_name(const std::string& task_name) {
-    std::string out;
-    for (char c : task_name)
-        out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
-    return out.empty() ? "modsynth_arm" : out;
-}
-
 std::string origin(double x, double y, double z, double pitch = 0.0) {
     return "<origin xyz=\"" + xyz(x, y, z) + "\" rpy=\"" + xyz(0.0, pitch, 0.0) + "\"/>";
 }
@@ -149,29 +141,9 @@ std::string fixed_joint(const char* name, const std::string& parent, const std::
            "\n  </joint>\n";
 }
 
-/// A ros2_control system for the arm: each joint commanded by position,
-/// reporting position and velocity, starting at the motion's first pose. The
-/// plugin is ros2_control's mock system, which runs the arm without hardware;
-/// a real arm names its modules' driver there instead.
-std::string ros2_control(const task::Task& task, const synth::Solution& solution) {
-    std::string s = "  <ros2_control name=\"" + robot_name(task.name) +
-                    "\" type=\"system\">\n    <hardware>\n      "
-                    "<plugin>mock_components/GenericSystem</plugin>\n    </hardware>\n";
-    for (int k = 0; k < solution.robot.dof(); ++k) {
-        const double q0 = solution.samples.empty() ? 0.0 : solution.samples.front().q[k];
-        s += "    <joint name=\"joint_" + std::to_string(k + 1) +
-             "\">\n      <command_interface name=\"position\"/>\n"
-             "      <state_interface name=\"position\">\n        <param "
-             "name=\"initial_value\">" +
-             num(q0) +
-             "</param>\n      </state_interface>\n"
-             "      <state_interface name=\"velocity\"/>\n    </joint>\n";
-    }
-    return s + "  </ros2_control>\n";
-}
-
 std::string preamble(const task::Task& task, const std::string& modules, bool chosen) {
-    std::string s = "<?xml version=\"1.0\"?>\n<robot name=\"" + robot_name(task.name) + "\">\n";
+    std::string s =
+        "<?xml version=\"1.0\"?>\n<robot name=\"" + urdf_robot_name(task.name) + "\">\n";
     s += "  <!-- Planar arm synthesised by modsynth. Frame \"world\" is the task plane (z up); "
          "the tip link \"ee\" touches it. Joint angles are those of the solution's samples. "
          "Modules (joint 1 first): " +
@@ -214,6 +186,35 @@ std::vector<const hardware::Actuator*> urdf_modules(const task::Task& task,
 
 std::string urdf_joint_name(int k) { return "joint_" + std::to_string(k + 1); }
 
+std::string urdf_robot_name(const std::string& task_name) {
+    std::string out;
+    for (char c : task_name)
+        out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
+    return out.empty() ? "modsynth_arm" : out;
+}
+
+/// A ros2_control system for the arm: each joint commanded by position,
+/// reporting position and velocity, starting at the motion's first pose. The
+/// plugin is ros2_control's mock system, which runs the arm without hardware;
+/// a real arm names its modules' driver there instead.
+std::string ros2_control_block(const std::string& task_name, const synth::Solution& solution,
+                               int dof) {
+    std::string s = "  <ros2_control name=\"" + urdf_robot_name(task_name) +
+                    "\" type=\"system\">\n    <hardware>\n      "
+                    "<plugin>mock_components/GenericSystem</plugin>\n    </hardware>\n";
+    for (int k = 0; k < dof; ++k) {
+        const double q0 = solution.samples.empty() ? 0.0 : solution.samples.front().q[k];
+        s += "    <joint name=\"" + urdf_joint_name(k) +
+             "\">\n      <command_interface name=\"position\"/>\n"
+             "      <state_interface name=\"position\">\n        <param "
+             "name=\"initial_value\">" +
+             num(q0) +
+             "</param>\n      </state_interface>\n"
+             "      <state_interface name=\"velocity\"/>\n    </joint>\n";
+    }
+    return s + "  </ros2_control>\n";
+}
+
 std::string robot_urdf(const task::Task& task, const synth::Solution& solution) {
     return robot_urdf(task, solution, hardware::load_default_catalog());
 }
@@ -243,7 +244,7 @@ std::string robot_urdf(const task::Task& task, const synth::Solution& solution,
     s += "  <link name=\"ee\"/>\n";
     s += fixed_joint("ee_tip", "link_" + std::to_string(n), "ee", robot.link_lengths[n - 1], 0.0,
                      -output_face_height(spec, d, n - 1));
-    s += ros2_control(task, solution);
+    s += ros2_control_block(task.name, solution, n);
     return s + "</robot>\n";
 }
 

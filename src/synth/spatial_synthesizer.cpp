@@ -6,7 +6,8 @@
 #include <optional>
 #include <set>
 
-#include <modsynth/control/spatial_timing.h>
+#include <modsynth/control/joint_limits.h>
+#include <modsynth/control/path_corners.h>
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/synth/design_choice.h>

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::control {
@@ -38,6 +39,9 @@ JointLimits default_joint_limits(int dof);
 /// task::InputError naming `robot.joint_limits` when a per-joint list has
 /// another length than dof.
 JointLimits joint_limits_for(const task::Task& task, int dof);
+/// The same for a spatial task (formats.md: `robot.joint_limits` as in the
+/// plane).
+JointLimits joint_limits_for(const task::SpatialTask& task, int dof);
 
 /// False (with `error` saying which joint) when some limit is not a finite
 /// positive number or the lists' lengths differ (an empty jerk list aside).

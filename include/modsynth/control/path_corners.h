@@ -9,6 +9,7 @@
 #include <modsynth/control/joint_limits.h>
 #include <modsynth/control/motion.h>
 #include <modsynth/control/retime.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::control {
@@ -30,6 +31,14 @@ std::vector<std::size_t> path_corners(const task::Task& task, const std::vector<
 /// retime() with the task's corners (path_corners()) as stops: how a
 /// planar task's motion is timed.
 std::vector<Sample> retime_for(const task::Task& task, std::vector<Sample> samples,
+                               const JointLimits& limits, const RetimeOptions& options = {},
+                               RetimeStats* stats = nullptr);
+
+/// The same for a spatial task: its path has corners as a planar one does.
+std::vector<std::size_t> path_corners(const task::SpatialTask& task,
+                                      const std::vector<Sample>& samples,
+                                      double angle = kCornerAngle);
+std::vector<Sample> retime_for(const task::SpatialTask& task, std::vector<Sample> samples,
                                const JointLimits& limits, const RetimeOptions& options = {},
                                RetimeStats* stats = nullptr);
 

@@ -47,6 +47,8 @@ struct Catalog {
     const Tube& tube_closest_to(double diameter) const;
     /// The first adapter; throws std::runtime_error when there is none.
     const Adapter& adapter() const;
+    /// nullptr when no adapter has that name.
+    const Adapter* adapter(const std::string& name) const;
 };
 
 /// A catalog file that cannot be used: the message names the file and,

@@ -3,6 +3,8 @@
 // at each joint whose peak torque covers the largest |torque|, whose
 // continuous torque covers the RMS torque, and whose speed covers the
 // largest |qd|.
+#include <functional>
+#include <string>
 #include <vector>
 
 #include <modsynth/control/motion.h>
@@ -20,10 +22,31 @@ namespace modsynth::hardware {
 std::vector<JointLoad> joint_loads(const ArmModel& model,
                                    const std::vector<control::Sample>& samples);
 
+/// The same for any arm whose torques at a sample `torques` gives (one per
+/// joint, N m), for `dof` joints.
+std::vector<JointLoad> joint_loads(
+    int dof, const std::vector<control::Sample>& samples,
+    const std::function<std::vector<double>(const control::Sample&)>& torques);
+
 /// The allowed actuators of a task (robot.modules, or every catalog
 /// actuator), lightest first. Throws task::InputError naming
 /// robot.modules[i] for a name the catalog does not have.
 std::vector<const Actuator*> allowed_actuators(const task::RobotSpec& spec, const Catalog& catalog);
+/// The same from the names of robot.modules (empty: every actuator).
+std::vector<const Actuator*> allowed_actuators(const std::vector<std::string>& names,
+                                               const Catalog& catalog);
+
+/// What every joint of an arm with `modules` (one per joint, joint 1 first)
+/// must deliver over the motion.
+using LoadsWithModules =
+    std::function<std::vector<JointLoad>(const std::vector<const Actuator*>& modules)>;
+
+/// The greedy choice for any arm of `dof` joints (select_modules below is
+/// it for the planar arm): from the distal joint inwards, each joint the
+/// lightest of `allowed` (lightest first) that carries it, the modules
+/// farther out already chosen and those not yet chosen the lightest.
+ModuleSelection choose_modules(int dof, const std::vector<const Actuator*>& allowed,
+                               const LoadsWithModules& loads);
 
 /// Chooses from the distal joint inwards: a joint's torques depend only on
 /// the modules farther out, which are then already chosen, and each joint

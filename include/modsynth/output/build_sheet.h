@@ -12,4 +12,9 @@ namespace modsynth::output {
 /// The sheet for a solved solution; module sizes come from task.robot.
 std::string build_sheet(const task::Task& task, const synth::Solution& solution);
 
+/// The sheet's "Modules" section: the modules chosen to carry the motion
+/// (hardware/select_modules.h), or what overloads; "" when the solution has
+/// no choice.
+std::string modules_section(const synth::Solution& solution);
+
 }  // namespace modsynth::output

@@ -7,6 +7,7 @@
 
 #include <modsynth/output/report.h>
 #include <modsynth/synth/solution.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::output {
@@ -31,6 +32,12 @@ struct ExportPaths {
 /// Throws std::runtime_error naming the path when a file cannot be written.
 std::vector<std::string> write_exports(const task::Task& task, const synth::Solution& solution,
                                        const ExportPaths& paths, const ReportFigures& figures);
+/// The same for a spatial task: the 3-D report (report3d.h), the DH arm's
+/// URDF (dh_urdf.h) and build sheet (dh_build_sheet.h), and the CSV and
+/// joint trajectory, which are the plane's.
+std::vector<std::string> write_exports(const task::SpatialTask& task,
+                                       const synth::Solution& solution, const ExportPaths& paths,
+                                       const ReportFigures& figures);
 
 /// Writes text to a file atomically (atomic_file.h); throws std::runtime_error
 /// naming the path on failure.

@@ -21,9 +21,9 @@ namespace modsynth::output {
 /// the file carried no certificate to compare with, else "".
 std::string recertify(const task::Task& task, io::ParsedSolution& parsed);
 /// The same for a spatial task: the fit checked, the samples' progress
-/// recovered from their joint angles (control::recover_parameters) and the
-/// motion certified against the contract's limits (verify::VerifyOptions);
-/// the samples are not retimed.
+/// recovered from their joint angles (control::recover_parameters), the
+/// motion certified against the contract's limits (verify::VerifyOptions)
+/// and, without velocities and accelerations, timed as in the plane.
 std::string recertify(const task::SpatialTask& task, io::ParsedSolution& parsed);
 
 /// Why a certificate is not ok, in one line naming the first offending

@@ -19,6 +19,14 @@ constexpr double kJointLimitMargin = 0.05;
 /// The name of joint k (0-based, from the base): "joint_1", ... Other
 /// outputs that address the joints (joint_trajectory.h) use it too.
 std::string urdf_joint_name(int k);
+/// The robot's name in a URDF: the task's, with anything but letters,
+/// digits and '-' as '_' ("modsynth_arm" when empty).
+std::string urdf_robot_name(const std::string& task_name);
+/// The <ros2_control> block of an arm of `dof` joints: each commanded by
+/// position, reporting position and velocity, starting at the motion's
+/// first pose.
+std::string ros2_control_block(const std::string& task_name, const synth::Solution& solution,
+                               int dof);
 
 /// The model of a solved solution (its robot and, for the joint limits,
 /// its samples); the module sizes come from task.robot, the masses and

@@ -1,0 +1,17 @@
+#pragma once
+// A build sheet in Markdown for a spatial arm (a DH chain): the parts to
+// get, each tube's cut length, the bracket each twist needs
+// (hardware/dh_stack.h), the modules that carry the motion, where the base
+// goes and the joint angles of the start pose.
+#include <string>
+
+#include <modsynth/synth/solution.h>
+#include <modsynth/task/spatial_task.h>
+
+namespace modsynth::output {
+
+/// The sheet for a solved spatial solution (solution.dh_robot); sizes come
+/// from task.robot.
+std::string build_sheet(const task::SpatialTask& task, const synth::Solution& solution);
+
+}  // namespace modsynth::output
