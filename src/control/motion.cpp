@@ -266,12 +266,20 @@ void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
         const bool first = i == 0 || samples[i - 1].phase != Phase::Trace ||
                            samples[i - 1].primitive != a.primitive ||
                            samples[i - 1].stroke != a.stroke;
-        // A circle's start is also its end: a run begins at 0.
-        if (first && prim.kind == geometry::PrimitiveKind::Circle && s > length - kSnap) s = 0.0;
-        if (!first && prim.kind == geometry::PrimitiveKind::Circle) {
-            double d = s - samples[i - 1].s;
-            d -= length * std::round(d / length);
-            s = samples[i - 1].s + d;
+        switch (prim.kind) {
+            case geometry::PrimitiveKind::Line:
+            case geometry::PrimitiveKind::Arc:
+                break;
+            case geometry::PrimitiveKind::Circle:
+                // A circle's start is also its end: a run begins at 0, and
+                // goes on from the sample before, not back to the start.
+                if (first && s > length - kSnap) s = 0.0;
+                if (!first) {
+                    double d = s - samples[i - 1].s;
+                    d -= length * std::round(d / length);
+                    s = samples[i - 1].s + d;
+                }
+                break;
         }
         if (std::abs(s) < kSnap) s = 0.0;
         if (std::abs(s - length) < kSnap) s = length;

@@ -247,14 +247,20 @@ private:
         for (const Point& v : vertices)
             qp_.add_constraint(support(v), need, kInfinity, "SV vertex " + tag);
         if (prim != nullptr) {
-            if (prim->kind == geometry::PrimitiveKind::Line) {
-                for (const Vec2& v : {prim->start, prim->end})
-                    qp_.add_constraint(support(constant(v)), need, kInfinity,
-                                       "SV primitive " + tag);
-            } else {
-                // The arc lies in its circle's disc: a sound, simpler bound.
-                qp_.add_constraint(support(constant(prim->center)).add(-prim->radius), need,
-                                   kInfinity, "SV primitive " + tag);
+            switch (prim->kind) {
+                case geometry::PrimitiveKind::Line:
+                    for (const Vec2& v : {prim->start, prim->end})
+                        qp_.add_constraint(support(constant(v)), need, kInfinity,
+                                           "SV primitive " + tag.text,
+                                           tag.key(Key::Family::SvPrimitive));
+                    break;
+                case geometry::PrimitiveKind::Arc:
+                case geometry::PrimitiveKind::Circle:
+                    // The arc lies in its circle's disc: a sound, simpler bound.
+                    qp_.add_constraint(support(constant(prim->center)).add(-prim->radius), need,
+                                       kInfinity, "SV primitive " + tag.text,
+                                       tag.key(Key::Family::SvPrimitive));
+                    break;
             }
         }
         qp_.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0,

@@ -296,7 +296,15 @@ struct FrontStage::Impl {
         // A line's closest point to the base is an end or the foot of the
         // perpendicular, which the exact clause below covers: the inner
         // atoms at its other samples would only repeat it.
-        const bool exact_closest = p.kind == geometry::PrimitiveKind::Line;
+        bool exact_closest = false;
+        switch (p.kind) {
+            case geometry::PrimitiveKind::Line:
+                exact_closest = true;
+                break;
+            case geometry::PrimitiveKind::Arc:
+            case geometry::PrimitiveKind::Circle:
+                break;
+        }
         for (std::size_t i = 0; i < pts.size(); ++i) {
             const z3::expr dv = dist2(pts[i]);
             require({name}, dv <= R * R + num(options.slack));
@@ -311,44 +319,51 @@ struct FrontStage::Impl {
         // modsynth keeps the proximal link still during a primitive, but a
         // general arm need not, so that restriction stays out of here.)
         if (kinematics::has_proximal_link(dof)) return;
-        if (p.kind == geometry::PrimitiveKind::Line) {
-            // Exact critical point of a line: if the foot of the perpendicular
-            // from the base lies inside the segment, it is the closest point.
-            const geometry::Vec2 d = p.end - p.start;
-            const z3::expr t =
-                (bx - num(p.start.x())) * num(d.x()) + (by - num(p.start.y())) * num(d.y());
-            const z3::expr cr =
-                num(d.x()) * (by - num(p.start.y())) - num(d.y()) * (bx - num(p.start.x()));
-            const double l2 = d.squaredNorm();
-            // A clause, not a Boolean per line naming the interior case: the
-            // same condition, but nlsat no longer branches on one more
-            // variable per line (with 70 lines the refined check ran out of
-            // its budget instead of answering in a fraction of a second).
-            const z3::expr outside = t <= 0 || t >= num(l2);
-            require(
-                {name},
-                outside || cr * cr + num(options.slack) >= (r[0] - r[1]) * (r[0] - r[1]) * num(l2),
-                true);
-            require({name, diam}, outside || cr * cr >= num(d2 * l2), true);
-        } else if (p.kind == geometry::PrimitiveKind::Circle) {
-            // Exact for a circle of radius rc about c: the farthest point is
-            // |b - c| + rc away, the closest ||b - c| - rc|. Written in
-            // D = |b - c|^2 alone: no variable for |b - c| and no Boolean
-            // for "inside", which nlsat would have to decide per circle.
-            const z3::expr D = dist2(p.center);
-            const double rc = p.radius;
-            const z3::expr far = R + num(options.slack - rc);
-            require({name}, far >= 0 && D <= far * far, true);
-            // ||b - c| - rc| >= g, for g > 0: outside by g or inside by g.
-            const auto gap_at_least = [&](const z3::expr& g) {
-                return D >= (num(rc) + g) * (num(rc) + g) ||
-                       (g <= num(rc) && D <= (num(rc) - g) * (num(rc) - g));
-            };
-            const z3::expr e = r[0] - r[1];
-            for (const z3::expr& g : {e - num(options.slack), -e - num(options.slack)})
-                require({name}, g <= 0 || gap_at_least(g), true);
-            const double self = rule.self_distance() - 2 * options.slack;
-            if (self > 0) require({name, diam}, gap_at_least(num(self)), true);
+        switch (p.kind) {
+            case geometry::PrimitiveKind::Line: {
+                // Exact critical point of a line: if the foot of the perpendicular
+                // from the base lies inside the segment, it is the closest point.
+                const geometry::Vec2 d = p.end - p.start;
+                const z3::expr t =
+                    (bx - num(p.start.x())) * num(d.x()) + (by - num(p.start.y())) * num(d.y());
+                const z3::expr cr =
+                    num(d.x()) * (by - num(p.start.y())) - num(d.y()) * (bx - num(p.start.x()));
+                const double l2 = d.squaredNorm();
+                // A clause, not a Boolean per line naming the interior case: the
+                // same condition, but nlsat no longer branches on one more
+                // variable per line (with 70 lines the refined check ran out of
+                // its budget instead of answering in a fraction of a second).
+                const z3::expr outside = t <= 0 || t >= num(l2);
+                require({name},
+                        outside ||
+                            cr * cr + num(options.slack) >= (r[0] - r[1]) * (r[0] - r[1]) * num(l2),
+                        true);
+                require({name, diam}, outside || cr * cr >= num(d2 * l2), true);
+                break;
+            }
+            case geometry::PrimitiveKind::Circle: {
+                // Exact for a circle of radius rc about c: the farthest point is
+                // |b - c| + rc away, the closest ||b - c| - rc|. Written in
+                // D = |b - c|^2 alone: no variable for |b - c| and no Boolean
+                // for "inside", which nlsat would have to decide per circle.
+                const z3::expr D = dist2(p.center);
+                const double rc = p.radius;
+                const z3::expr far = R + num(options.slack - rc);
+                require({name}, far >= 0 && D <= far * far, true);
+                // ||b - c| - rc| >= g, for g > 0: outside by g or inside by g.
+                const auto gap_at_least = [&](const z3::expr& g) {
+                    return D >= (num(rc) + g) * (num(rc) + g) ||
+                           (g <= num(rc) && D <= (num(rc) - g) * (num(rc) - g));
+                };
+                const z3::expr e = r[0] - r[1];
+                for (const z3::expr& g : {e - num(options.slack), -e - num(options.slack)})
+                    require({name}, g <= 0 || gap_at_least(g), true);
+                const double self = rule.self_distance() - 2 * options.slack;
+                if (self > 0) require({name, diam}, gap_at_least(num(self)), true);
+                break;
+            }
+            case geometry::PrimitiveKind::Arc:
+                break;  // sampled points only
         }
     }
 

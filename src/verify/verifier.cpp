@@ -257,8 +257,14 @@ private:
         double sag = 0.0;
         if (same_trace) {
             const geometry::Primitive& prim = task_.trajectory[control::primitive_index(task_, sa)];
-            if (prim.kind != geometry::PrimitiveKind::Line)
-                sag = sagitta(prim.radius, (b.target - a.target).norm());
+            switch (prim.kind) {
+                case geometry::PrimitiveKind::Line:
+                    break;
+                case geometry::PrimitiveKind::Arc:
+                case geometry::PrimitiveKind::Circle:
+                    sag = sagitta(prim.radius, (b.target - a.target).norm());
+                    break;
+            }
         }
         // Across a boundary both targets are the same transition point (up to
         // the task's join tolerance, which is added).
