@@ -103,7 +103,7 @@ bool walk(double from, double to, double first_step, const MotionOptions& option
     double u = from, du = first_step;
     while (dir * (to - u) > 1e-12) {
         if (out.size() >= options.max_samples ||
-            (out.size() % 1024 == 0 && std::chrono::steady_clock::now() >= options.deadline)) {
+            (out.size() % 1024 == 0 && options.deadline.expired())) {
             *gave_up = true;
             *failed_at = u;
             return false;
@@ -189,7 +189,7 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             if (!start) return fail(j, false, 0.0);
             const auto plan = plan_travel(task, robot, out.back().q, *start, travel_options);
             if (!plan) {
-                gave_up = std::chrono::steady_clock::now() >= options.deadline;
+                gave_up = options.deadline.expired();
                 return fail(j - 1, false, 0.0, true);
             }
             const int last = task::index_in_stroke(task, j - 1);

@@ -14,6 +14,8 @@
 #include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/task/strokes.h>
+#include <modsynth/run/stopwatch.h>
+#include <modsynth/task/part.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
@@ -101,12 +103,8 @@ struct FrontStage::Impl {
         encode();
     }
 
-    double seconds_left() const {
-        if (options.deadline == std::chrono::steady_clock::time_point::max()) return 1e9;
-        return std::chrono::duration<double>(options.deadline - std::chrono::steady_clock::now())
-            .count();
-    }
-    bool expired() const { return seconds_left() <= 0.0; }
+    double seconds_left() const { return options.deadline.remaining(); }
+    bool expired() const { return options.deadline.expired(); }
 
     // The timeout ends at the deadline, whatever the per-check budget.
     void set_timeout(z3::solver& s, double seconds) {
@@ -441,7 +439,7 @@ std::vector<std::string> FrontStage::minimal_core() {
     m.set_timeout(s, limit);
     // Other calls (conflicts) may have run checks since: re-establish the
     // conflict so the core below is this one's.
-    const auto t0 = std::chrono::steady_clock::now();
+    const run::Stopwatch conflict;
     if (s.check(m.assumptions()) != z3::unsat) return {};
     // A trial without a needed literal is satisfiable, and nlsat can take
     // its whole timeout to find the model (10 s on a 640-primitive path,
@@ -450,9 +448,7 @@ std::vector<std::string> FrontStage::minimal_core() {
     // conflict took.
     const double trial_limit = std::min(
         limit,
-        std::max(m.options.core_trial_seconds,
-                 m.options.core_trial_factor *
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()));
+        std::max(m.options.core_trial_seconds, m.options.core_trial_factor * conflict.seconds()));
     z3::expr_vector core = s.unsat_core();
     std::vector<z3::expr> kept;
     for (unsigned i = 0; i < core.size(); ++i) kept.push_back(core[i]);

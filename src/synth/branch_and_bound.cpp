@@ -2,6 +2,7 @@
 #include <modsynth/geometry/distance_contractor.h>
 #include <modsynth/geometry/interval.h>
 #include <modsynth/geometry/primitive.h>
+#include <modsynth/run/stopwatch.h>
 #include <modsynth/synth/branch_and_bound.h>
 #include <modsynth/synth/no_go.h>
 #include <modsynth/text/option_check.h>
@@ -17,7 +18,6 @@ namespace {
 using geometry::Interval;
 using geometry::IntervalPoint;
 using geometry::Vec2;
-using Clock = std::chrono::steady_clock;
 
 constexpr int kReach = -1;  // a range refuted by the distance constraints alone
 
@@ -129,7 +129,7 @@ std::vector<Point> points_of(const task::Task& task, const BranchAndBoundOptions
 class Search {
 public:
     Search(const task::Task& task, const std::vector<int>& obstacles,
-           const BranchAndBoundOptions& o, Clock::time_point deadline)
+           const BranchAndBoundOptions& o, run::Deadline deadline)
         : task_(task),
           o_(o),
           deadline_(deadline),
@@ -151,7 +151,7 @@ private:
 
     const task::Task& task_;
     const BranchAndBoundOptions& o_;
-    Clock::time_point deadline_;
+    run::Deadline deadline_;
     std::vector<NoGoDisc> discs_;
     std::vector<Point> points_;
     std::vector<int> order_;  ///< points, the last to refute a box first
@@ -287,16 +287,15 @@ double Search::violation(const Design& d) const {
 }
 
 BranchAndBoundResult Search::run() {
-    const auto t0 = Clock::now();
-    const auto stop = std::min(deadline_, t0 + std::chrono::duration_cast<Clock::duration>(
-                                                   std::chrono::duration<double>(o_.time_limit)));
+    const run::Stopwatch clock;
+    const run::Deadline stop = deadline_.within(o_.time_limit);
     BranchAndBoundResult result;
     result.points = static_cast<int>(points_.size());
     used_discs_.assign(discs_.size(), 0);
     for (int k = 0; k < static_cast<int>(points_.size()); ++k) order_.push_back(k);
     const auto finish = [&](BranchAndBoundResult::Outcome outcome) {
         result.outcome = outcome;
-        result.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        result.seconds = clock.seconds();
         return result;
     };
     if (task_.base_regions.empty() || points_.empty()) return finish(result.outcome);
@@ -309,7 +308,7 @@ BranchAndBoundResult Search::run() {
         root.used.assign(discs_.size(), 0);
         std::vector<Node> stack{std::move(root)};
         while (!stack.empty()) {
-            if (Clock::now() >= stop || result.boxes >= o_.max_boxes)
+            if (stop.expired() || result.boxes >= o_.max_boxes)
                 return finish(BranchAndBoundResult::Outcome::Unknown);
             Node node = std::move(stack.back());
             stack.pop_back();
@@ -367,7 +366,7 @@ bool BranchAndBoundOptions::IsValid(std::string* error) const {
 
 BranchAndBoundResult branch_and_bound(const task::Task& task, const std::vector<int>& obstacles,
                                       const BranchAndBoundOptions& options,
-                                      std::chrono::steady_clock::time_point deadline) {
+                                      run::Deadline deadline) {
     text::require_valid(options);
     Search search(task, obstacles, options, deadline);
     return search.run();

@@ -198,8 +198,6 @@ std::string index_ranges(std::vector<int> indices) {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 bool proves(const BranchAndBoundResult& r) {
     return r.outcome == BranchAndBoundResult::Outcome::Infeasible && !r.obstacles.empty();
 }
@@ -233,7 +231,7 @@ struct Shrunk {
 // time would cost a search each.
 Shrunk shrink(const task::Task& task, const BranchAndBoundResult& first,
               const std::vector<int>& proved_among, const BranchAndBoundOptions& options,
-              Clock::time_point deadline) {
+              const run::Deadline& deadline) {
     Shrunk s{sorted(first.obstacles), first, false};
     std::vector<int> proved_set = sorted(proved_among);
     BranchAndBoundOptions run = options;
@@ -260,7 +258,7 @@ Shrunk shrink(const task::Task& task, const BranchAndBoundResult& first,
                     block.end());
         if (block.empty()) continue;
         const std::vector<int> rest = minus(s.keep, block);
-        if (Clock::now() >= deadline) return s;
+        if (deadline.expired()) return s;
         const auto r =
             rest.empty() ? BranchAndBoundResult{} : branch_and_bound(task, rest, run, deadline);
         if (proves(r)) {
@@ -269,7 +267,7 @@ Shrunk shrink(const task::Task& task, const BranchAndBoundResult& first,
             proved_set = rest;
             continue;
         }
-        if (r.outcome == BranchAndBoundResult::Outcome::Unknown && Clock::now() >= deadline)
+        if (r.outcome == BranchAndBoundResult::Outcome::Unknown && deadline.expired())
             return s;  // the overall budget, not the obstacles, stopped it
         if (block.size() == 1 && r.outcome != BranchAndBoundResult::Outcome::Box) settled = false;
         if (block.size() > 1) {
@@ -294,21 +292,18 @@ Shrunk shrink(const task::Task& task, const BranchAndBoundResult& first,
 
 }  // namespace
 
-std::optional<ObstacleProof> prove_two_joint_infeasible(
-    const task::Task& task, const BranchAndBoundOptions& options,
-    std::chrono::steady_clock::time_point deadline) {
+std::optional<Proof> prove_two_joint_infeasible(const task::Task& task,
+                                                const BranchAndBoundOptions& options,
+                                                run::Deadline deadline) {
     if (task.robot.dof != std::vector<int>{2} || task.base_regions.empty() ||
         task.obstacles.empty() || task.obstacles.size() > kMaxBranchObstacles)
         return std::nullopt;
-    const auto start = Clock::now();
+    // Shrinking, within what the proof leaves of core_time_limit.
+    const run::Deadline core_deadline = deadline.within(options.core_time_limit);
     BranchAndBoundResult r = branch_and_bound(task, all_obstacles(task), options, deadline);
     if (!proves(r)) return std::nullopt;  // without obstacles the front stage has the better proof
-    // Shrinking, within what the proof left of core_time_limit.
-    const auto core_deadline =
-        std::min(deadline, start + std::chrono::duration_cast<Clock::duration>(
-                                       std::chrono::duration<double>(options.core_time_limit)));
     bool minimal = false;
-    if (Clock::now() < core_deadline) {
+    if (!core_deadline.expired()) {
         Shrunk s = shrink(task, r, all_obstacles(task), options, core_deadline);
         minimal = s.finished;
         r = std::move(s.proof);

@@ -110,7 +110,6 @@ TEST_CASE("solver options: defaults valid, each bad field named", "[options][nlp
         {"SolverOptions::warm_mu", [](O& o) { o.warm_mu = kNaN; }},
         {"SolverOptions::print_level", [](O& o) { o.print_level = 13; }},
         {"SolverOptions::reported_violations", [](O& o) { o.reported_violations = -1; }},
-        {"SolverOptions::wall_limit", [](O& o) { o.wall_limit = kNaN; }},
         {"ProgressWatchOptions::stall_window", [](O& o) { o.watch.stall_window = 0; }},
     });
     nlp::QuadraticProgram qp;
@@ -239,8 +238,7 @@ TEST_CASE("initial guess options: defaults valid, each bad field named", "[optio
     O bad;
     bad.proximal_angles = 0;
     smt::Skeleton skeleton;
-    CHECK_THROWS_WITH(synth::initial_guesses(testing::line_task(), skeleton, 1, 0,
-                                             std::chrono::steady_clock::time_point::max(), bad),
+    CHECK_THROWS_WITH(synth::initial_guesses(testing::line_task(), skeleton, 1, 0, {}, bad),
                       Catch::Contains("InitialGuessOptions::proximal_angles"));
 }
 

@@ -114,7 +114,7 @@ TEST_CASE("the shortening pass skips the variants that cannot be shorter", "[syn
     std::vector<std::string> lines;
     synth::SynthesisOptions options;
     options.shorten_gap = 0.5;
-    options.progress = [&](const std::string& l) { lines.push_back(l); };
+    options.progress = [&](const run::ProgressEvent& e) { lines.push_back(e.message); };
     const synth::Solution first = synth::synthesize(t, options);
     REQUIRE(first.status == synth::Status::Solved);
     CHECK(said(lines, "shorter robot") == 0);
@@ -203,7 +203,7 @@ TEST_CASE("progress is reported stage by stage", "[synth]") {
     const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
     std::vector<std::string> lines;
     synth::SynthesisOptions options;
-    options.progress = [&](const std::string& l) { lines.push_back(l); };
+    options.progress = [&](const run::ProgressEvent& e) { lines.push_back(e.message); };
     synth::synthesize(t, options);
     REQUIRE(lines.size() >= 3);
     CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
@@ -220,7 +220,7 @@ TEST_CASE("wipe-table and clean-table: 2 joints exhausted, then solved with 3", 
         const task::Task t = io::load_task(testing::source_path(name));
         std::vector<std::string> lines;
         synth::SynthesisOptions options;
-        options.progress = [&](const std::string& l) { lines.push_back(l); };
+        options.progress = [&](const run::ProgressEvent& e) { lines.push_back(e.message); };
         const synth::Solution s = synth::synthesize(t, options);
         REQUIRE(s.status == synth::Status::Solved);
         CHECK(s.robot.dof() == 3);
@@ -246,7 +246,7 @@ TEST_CASE("a search that finds nothing goes on to its time limit and never repea
     options.time_limit = 2.0;
     options.first_solve_iterations = 1;
     std::vector<std::string> lines;
-    options.progress = [&](const std::string& l) { lines.push_back(l); };
+    options.progress = [&](const run::ProgressEvent& e) { lines.push_back(e.message); };
     const synth::Solution s = synth::synthesize(t, options);
     REQUIRE(s.status == synth::Status::Unknown);
     CHECK(s.status.reason == "time limit");

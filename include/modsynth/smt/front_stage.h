@@ -5,11 +5,11 @@
 // constraint family is guarded by an assumption literal named after the
 // task part it comes from, so an unsat answer is a proof of infeasibility
 // whose core reads as an explanation.
-#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <modsynth/run/deadline.h>
 #include <modsynth/smt/skeleton.h>
 #include <modsynth/task/task.h>
 
@@ -66,7 +66,7 @@ struct FrontStageOptions {
     /// No work past this instant: encoding stops (the check then answers
     /// Unknown), every check's timeout ends here, and core minimisation
     /// returns the core it has.
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    run::Deadline deadline;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;

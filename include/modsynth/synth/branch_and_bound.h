@@ -22,9 +22,9 @@
 // they allow (constructive disjunction), per point. Branching bisects the
 // widest of base x, base y, r1, r2.
 #include <modsynth/geometry/vec.h>
+#include <modsynth/run/deadline.h>
 #include <modsynth/task/task.h>
 
-#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -101,9 +101,8 @@ struct BranchAndBoundResult {
 /// (fewer obstacles: fewer refutations). Needs base regions (a base that
 /// may stand anywhere has no box to start from): Unknown without. Throws
 /// std::invalid_argument when the options are not valid.
-BranchAndBoundResult branch_and_bound(
-    const task::Task& task, const std::vector<int>& obstacles,
-    const BranchAndBoundOptions& options = {},
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
+BranchAndBoundResult branch_and_bound(const task::Task& task, const std::vector<int>& obstacles,
+                                      const BranchAndBoundOptions& options = {},
+                                      run::Deadline deadline = {});
 
 }  // namespace modsynth::synth

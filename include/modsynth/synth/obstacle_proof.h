@@ -7,7 +7,6 @@
 #include <modsynth/synth/wall_witness.h>
 #include <modsynth/task/task.h>
 
-#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,9 +43,9 @@ std::optional<ObstacleProof> prove_obstacle_infeasible(const task::Task& task);
 /// one of them the search finds no proof, within what the first proof left
 /// of options.core_time_limit; past it (`minimal` false) the core keeps
 /// the obstacles proved so far, and the message says it is not minimised.
-std::optional<ObstacleProof> prove_two_joint_infeasible(
-    const task::Task& task, const BranchAndBoundOptions& options,
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
+std::optional<Proof> prove_two_joint_infeasible(const task::Task& task,
+                                                const BranchAndBoundOptions& options,
+                                                run::Deadline deadline = {});
 
 /// "0-8", "2, 5, 7-9": obstacle indices in words.
 std::string index_ranges(std::vector<int> indices);
