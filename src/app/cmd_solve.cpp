@@ -46,7 +46,8 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
         std::printf("  %s\n", solution.explanation.message.c_str());
         if (!solution.explanation.core.empty()) {
             std::printf("  core:");
-            for (const auto& c : solution.explanation.core) std::printf(" %s", c.c_str());
+            for (const auto& c : solution.explanation.core)
+                std::printf(" %s", task::to_string(c).c_str());
             std::printf("\n");
         }
         return;

@@ -93,7 +93,7 @@ void read_solution(const std::string& path, SolveOutcome& o) {
     }
     if (!s.task_name.empty()) o.name = s.task_name;
     o.message = s.explanation.message;
-    o.core = s.explanation.core;
+    o.core = task::to_strings(s.explanation.core);
     if (s.status != synth::Status::Solved) return;
     o.dof = s.robot.dof();
     o.total_link_length = s.robot.total_length();

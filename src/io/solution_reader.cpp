@@ -7,6 +7,7 @@
 
 #include <modsynth/io/input.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/printable.h>
 
@@ -181,7 +182,13 @@ synth::Explanation parse_explanation(const json& doc) {
         const std::string cp = member(part, "core");
         require_array(*core, cp, "task parts");
         for (std::size_t i = 0; i < core->size(); ++i) {
-            out.core.push_back(text((*core)[i], element(cp, i)));
+            const std::string at = element(cp, i);
+            const std::string name = text((*core)[i], at);
+            const auto part = task::parse_task_part(name);
+            if (!part)
+                throw task::InputError(at,
+                                       "\"" + text::printable(name) + "\" names no part of a task");
+            out.core.push_back(*part);
         }
     }
     if (const json* s = optional(e, "separation"))

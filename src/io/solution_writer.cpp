@@ -81,7 +81,8 @@ nlohmann::json to_json(const synth::Solution& s) {
     doc["task"] = s.task_name;
     doc["status"] = synth::to_string(s.status);
     if (s.status != synth::Status::Solved) {
-        doc["explanation"] = {{"message", s.explanation.message}, {"core", s.explanation.core}};
+        doc["explanation"] = {{"message", s.explanation.message},
+                              {"core", task::to_strings(s.explanation.core)}};
         add_witnesses(s.explanation, doc["explanation"]);
         return doc;
     }

@@ -13,10 +13,10 @@
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/clearance_rule.h>
-#include <modsynth/task/strokes.h>
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/task/part.h>
 #include <modsynth/text/format.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/option_check.h>
 
 namespace modsynth::smt {
@@ -70,8 +70,8 @@ struct FrontStage::Impl {
     std::vector<z3::expr> r;
     z3::expr elbow;
     std::vector<z3::expr> regions;
-    std::vector<std::string> names;  // assumption literals, in creation order
-    std::map<std::string, z3::expr> literal_of;
+    std::vector<task::TaskPart> names;  // parts with an assumption literal, in creation order
+    std::map<task::TaskPart, z3::expr> literal_of;
     bool refined_level = true;   // `fine` holds the encoding (small enough paths)
     bool unsat_refined = false;  // the last Unsat came from `fine`
     bool incomplete = false;     // encoding stopped at the deadline
@@ -123,17 +123,17 @@ struct FrontStage::Impl {
 
     z3::expr num(double v) { return ctx.real_val(decimal(v).c_str()); }
 
-    z3::expr literal(const std::string& name) {
-        auto it = literal_of.find(name);
+    z3::expr literal(const task::TaskPart& part) {
+        auto it = literal_of.find(part);
         if (it != literal_of.end()) return it->second;
-        z3::expr l = ctx.bool_const(name.c_str());
-        literal_of.emplace(name, l);
-        names.push_back(name);
+        z3::expr l = ctx.bool_const(task::to_string(part).c_str());
+        literal_of.emplace(part, l);
+        names.push_back(part);
         return l;
     }
 
     // A constraint family guarded by the literals of the task parts it uses.
-    void require(std::initializer_list<std::string> parts, const z3::expr& e,
+    void require(std::initializer_list<task::TaskPart> parts, const z3::expr& e,
                  bool is_refined = false) {
         z3::expr_vector guards(ctx);
         for (const auto& part : parts) guards.push_back(literal(part));
@@ -160,12 +160,14 @@ struct FrontStage::Impl {
 
     void encode() {
         const auto& rs = task.robot;
-        const std::string diam = "robot.link_diameter";
+        const auto diam = task::TaskPart::robot(task::RobotKey::LinkDiameter);
         const kinematics::ClearanceRule rule{rs.link_diameter};
         for (int k = 0; k < dof; ++k) {
             add_both(r[k] > 0);
-            require({"robot.min_link_length"}, r[k] >= num(rs.min_link_length - options.slack));
-            require({"robot.max_link_length"}, r[k] <= num(rs.max_link_length + options.slack));
+            require({task::TaskPart::robot(task::RobotKey::MinLinkLength)},
+                    r[k] >= num(rs.min_link_length - options.slack));
+            require({task::TaskPart::robot(task::RobotKey::MaxLinkLength)},
+                    r[k] <= num(rs.max_link_length + options.slack));
         }
         // The EE must stay a diameter away from the link before the last,
         // which it cannot do when the last link is shorter than that.
@@ -183,19 +185,19 @@ struct FrontStage::Impl {
                                              by <= num(b.max.y() + options.slack)));
                 any.push_back(in);
             }
-            require({"base_regions"}, z3::mk_or(any));
+            require({task::TaskPart::base_regions()}, z3::mk_or(any));
         }
 
         for (std::size_t o = 0; o < task.obstacles.size(); ++o) {
             const task::Obstacle& ob = task.obstacles[o];
-            const std::string name = "obstacles[" + std::to_string(o) + "]";
+            const auto name = task::TaskPart::obstacle(static_cast<int>(o));
             const double need = rule.obstacle_distance(ob) - options.slack;
             // Link 1 starts at the base.
             require({name, diam}, dist2(ob.center) >= num(need * need));
             // The last link ends on the path.
             for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
                 if (geometry::point_primitive(ob.center, task.trajectory[j]) < need)
-                    require({task::part_name(task, static_cast<int>(j)), name, diam},
+                    require({task::TaskPart::primitive(task, static_cast<int>(j)), name, diam},
                             ctx.bool_val(false));
             }
         }
@@ -228,8 +230,8 @@ struct FrontStage::Impl {
                 double span = 0.0;
                 for (const auto& a : pts[j])
                     for (const auto& b : pts[k]) span = std::max(span, (a - b).norm());
-                const std::string pj = task::part_name(task, j);
-                const std::string pk = task::part_name(task, k);
+                const auto pj = task::TaskPart::primitive(task, j);
+                const auto pk = task::TaskPart::primitive(task, k);
                 if (j == k) {
                     require({pj}, 2 * R >= num(span - options.slack));
                 } else {
@@ -275,19 +277,20 @@ struct FrontStage::Impl {
                 for (const auto& a : pts[j])
                     if ((a - hull[h]).norm() > span)
                         span = (a - hull[h]).norm(), partner = owner[h];
-            const std::string pj = task::part_name(task, static_cast<int>(j));
+            const auto pj = task::TaskPart::primitive(task, static_cast<int>(j));
             if (partner == static_cast<int>(j)) {
                 require({pj}, 2 * R >= num(span - options.slack));
             } else {
-                require({pj, task::part_name(task, partner)}, 2 * R >= num(span - options.slack));
+                require({pj, task::TaskPart::primitive(task, partner)},
+                        2 * R >= num(span - options.slack));
             }
         }
     }
 
     void encode_primitive(int j, const z3::expr& R) {
         const geometry::Primitive& p = task.trajectory[j];
-        const std::string name = task::part_name(task, j);
-        const std::string diam = "robot.link_diameter";
+        const auto name = task::TaskPart::primitive(task, j);
+        const auto diam = task::TaskPart::robot(task::RobotKey::LinkDiameter);
         const kinematics::ClearanceRule rule{task.robot.link_diameter};
         const double d2 = rule.self_distance() * rule.self_distance() - options.slack;
         const auto pts = sample_points(p, samples);
@@ -431,7 +434,7 @@ void FrontStage::block(const Skeleton& s) {
 
 bool FrontStage::exhausted_by_blocking() const { return impl_->blocked > 0; }
 
-std::vector<std::string> FrontStage::minimal_core() {
+std::vector<task::TaskPart> FrontStage::minimal_core() {
     Impl& m = *impl_;
     z3::solver& s = m.unsat_refined ? m.fine : m.solver;
     if (m.expired()) return {};
@@ -476,17 +479,17 @@ std::vector<std::string> FrontStage::minimal_core() {
             ++i;
         }
     }
-    std::vector<std::string> out;
-    for (const auto& name : m.names) {
-        const bool in = std::any_of(kept.begin(), kept.end(), [&](const z3::expr& e) {
-            return e.decl().name().str() == name;
-        });
-        if (in) out.push_back(name);
+    std::vector<task::TaskPart> out;
+    for (const auto& part : m.names) {
+        const z3::expr& literal = m.literal_of.at(part);
+        const bool in = std::any_of(kept.begin(), kept.end(),
+                                    [&](const z3::expr& e) { return z3::eq(e, literal); });
+        if (in) out.push_back(part);
     }
     return out;
 }
 
-bool FrontStage::conflicts(const std::vector<std::string>& parts) {
+bool FrontStage::conflicts(const std::vector<task::TaskPart>& parts) {
     Impl& m = *impl_;
     z3::expr_vector a(m.ctx);
     for (const auto& part : parts) {
@@ -509,7 +512,7 @@ std::string FrontStage::smtlib() const {
     if (pos != std::string::npos) s.erase(pos);
     s += "(check-sat-assuming (";
     for (std::size_t i = 0; i < impl_->names.size(); ++i)
-        s += (i ? " |" : "|") + impl_->names[i] + "|";
+        s += (i ? " |" : "|") + task::to_string(impl_->names[i]) + "|";
     return s + "))\n";
 }
 

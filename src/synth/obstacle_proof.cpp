@@ -4,7 +4,7 @@
 #include <modsynth/synth/no_go.h>
 #include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/synth/separation.h>
-#include <modsynth/task/strokes.h>
+#include <modsynth/task/part.h>
 #include <modsynth/text/format.h>
 
 #include <algorithm>
@@ -42,10 +42,10 @@ std::vector<std::string> core_of(const task::Task& task, const std::vector<int>&
     return core;
 }
 
-std::string part_list(const std::set<int>& indices, const char* name) {
+std::string region_list(const std::set<int>& indices) {
     std::string s;
     for (int j : indices)
-        s += (s.empty() ? "" : ", ") + std::string(name) + "[" + std::to_string(j) + "]";
+        s += (s.empty() ? "" : ", ") + task::to_string(task::TaskPart::base_region(j));
     return s;
 }
 
@@ -55,7 +55,7 @@ task::Task without_tube(const task::Task& task) {
     return t;
 }
 
-std::optional<ObstacleProof> by_separation(const task::Task& task) {
+std::optional<Proof> by_separation(const task::Task& task) {
     auto found = prove_separation(task, all_obstacles(task));
     if (!found) return std::nullopt;
     std::set<int> used;
@@ -63,15 +63,15 @@ std::optional<ObstacleProof> by_separation(const task::Task& task) {
     const std::vector<int> keep =
         minimise({used.begin(), used.end()},
                  [&](const std::vector<int>& o) { return prove_separation(task, o).has_value(); });
-    ObstacleProof proof;
+    Proof proof;
     proof.separation = prove_separation(task, keep);
     if (!proof.separation) return std::nullopt;  // cannot happen: keep was checked
     std::set<int> primitives;
     for (const auto& w : proof.separation->walls) primitives.insert(w.primitive);
     const bool tube = !prove_separation(without_tube(task), keep);
-    proof.core = core_of(
-        task, keep, primitives,
-        tube ? std::vector<std::string>{"robot.link_diameter"} : std::vector<std::string>{});
+    proof.core = core_of(task, keep, primitives,
+                         tube ? std::vector<task::RobotKey>{task::RobotKey::LinkDiameter}
+                              : std::vector<task::RobotKey>{});
     // One sentence per distinct wall.
     std::string said;
     std::set<std::vector<int>> walls;
@@ -91,8 +91,8 @@ std::optional<ObstacleProof> by_separation(const task::Task& task) {
         const bool every = regions.size() == task.base_regions.size();
         const std::string where =
             every ? (task.base_regions.size() > 1 ? "every base region" : "the base region")
-                  : part_list(regions, "base_regions");
-        const std::string path = task::part_name(task, w.primitive);
+                  : region_list(regions);
+        const std::string path = task::to_string(task::TaskPart::primitive(task, w.primitive));
         said += (said.empty() ? "" : "; ") + std::string("obstacles ") + index_ranges(w.cycle) +
                 " form a closed wall around " +
                 (around_path
@@ -128,7 +128,7 @@ std::vector<int> overlap_components(const task::Task& task, const std::set<int>&
     return out;
 }
 
-std::optional<ObstacleProof> by_geodesic(const task::Task& task) {
+std::optional<Proof> by_geodesic(const task::Task& task) {
     const GeodesicProver prover(task, all_obstacles(task));
     auto found = prover.prove(all_obstacles(task));
     if (!found) return std::nullopt;
@@ -155,24 +155,25 @@ std::optional<ObstacleProof> by_geodesic(const task::Task& task) {
     std::vector<int> start = overlap_components(task, touched);
     if (!holds(start)) start = all_obstacles(task);
     const std::vector<int> keep = minimise(start, holds);
-    ObstacleProof proof;
+    Proof proof;
     proof.geodesic = prover.prove(keep);
     if (!proof.geodesic) return std::nullopt;
     std::set<int> primitives;
     for (const auto& d : proof.geodesic->detours) primitives.insert(d.primitive);
-    std::vector<std::string> robot{"robot.max_link_length"};
+    std::vector<task::RobotKey> robot{task::RobotKey::MaxLinkLength};
     if (!prove_geodesic_reach(without_tube(task), keep, false))
-        robot.push_back("robot.link_diameter");
+        robot.push_back(task::RobotKey::LinkDiameter);
     proof.core = core_of(task, keep, primitives, robot);
     const int links = *std::max_element(task.robot.dof.begin(), task.robot.dof.end());
     std::string said;
     for (const auto& d : proof.geodesic->detours) {
-        said +=
-            (said.empty() ? "" : "; ") + std::string("the shortest way around obstacles ") +
-            index_ranges(keep) + " from " +
-            (task.base_regions.size() > 1 ? "base_regions[" + std::to_string(d.base_region) + "]"
-                                          : "the base region") +
-            " to " + task::part_name(task, d.primitive) + text::format(" is %.2f m", d.lower_bound);
+        said += (said.empty() ? "" : "; ") + std::string("the shortest way around obstacles ") +
+                index_ranges(keep) + " from " +
+                (task.base_regions.size() > 1
+                     ? task::to_string(task::TaskPart::base_region(d.base_region))
+                     : "the base region") +
+                " to " + task::to_string(task::TaskPart::primitive(task, d.primitive)) +
+                text::format(" is %.2f m", d.lower_bound);
     }
     said += text::format("; %d links of at most %.2f m reach %.2f m.", links,
                          task.robot.max_link_length, proof.geodesic->reach);
@@ -309,14 +310,15 @@ std::optional<Proof> prove_two_joint_infeasible(const task::Task& task,
         r = std::move(s.proof);
         r.obstacles = std::move(s.keep);
     }
-    ObstacleProof proof;
+    Proof proof;
     proof.minimal = minimal;
-    proof.core = core_of(
-        task, r.obstacles, {r.primitives.begin(), r.primitives.end()},
-        {"robot.dof", "robot.min_link_length", "robot.max_link_length", "robot.link_diameter"});
+    proof.core = core_of(task, r.obstacles, {r.primitives.begin(), r.primitives.end()},
+                         {task::RobotKey::Dof, task::RobotKey::MinLinkLength,
+                          task::RobotKey::MaxLinkLength, task::RobotKey::LinkDiameter});
     std::set<int> primitives(r.primitives.begin(), r.primitives.end());
     std::string paths;
-    for (int j : primitives) paths += (paths.empty() ? "" : ", ") + task::part_name(task, j);
+    for (int j : primitives)
+        paths += (paths.empty() ? "" : ", ") + task::to_string(task::TaskPart::primitive(task, j));
     proof.message = text::format(
         "no 2-joint arm with links of %.2f-%.2f m and its base in %s reaches %s with both links "
         "clear of obstacles %s: a branch and bound over the base position, both link lengths "
@@ -332,7 +334,7 @@ std::optional<Proof> prove_two_joint_infeasible(const task::Task& task,
     return proof;
 }
 
-std::optional<ObstacleProof> prove_obstacle_infeasible(const task::Task& task) {
+std::optional<Proof> prove_obstacle_infeasible(const task::Task& task) {
     if (task.base_regions.empty() || task.obstacles.empty() || task.robot.dof.empty() ||
         task.base_regions.size() > kMaxProofRegions)
         return std::nullopt;

@@ -4,11 +4,10 @@
 #include <limits>
 
 #include <modsynth/geometry/farthest_reach.h>
-#include <modsynth/task/strokes.h>
 
 namespace modsynth::synth {
 
-std::optional<std::vector<std::string>> out_of_reach_core(const task::Task& task) {
+std::optional<std::vector<task::TaskPart>> out_of_reach_core(const task::Task& task) {
     if (task.base_regions.empty() || task.robot.dof.empty()) return std::nullopt;
     const double longest_arm = task.robot.longest_arm();
     geometry::FarthestReachOptions options;
@@ -33,8 +32,9 @@ std::optional<std::vector<std::string>> out_of_reach_core(const task::Task& task
         }
     }
     if (farthest_out >= 0)
-        return std::vector<std::string>{"robot.max_link_length", "base_regions",
-                                        task::part_name(task, farthest_out)};
+        return std::vector<task::TaskPart>{task::TaskPart::robot(task::RobotKey::MaxLinkLength),
+                                           task::TaskPart::base_regions(),
+                                           task::TaskPart::primitive(task, farthest_out)};
     return std::nullopt;
 }
 

@@ -16,20 +16,19 @@ using geometry::Vec2;
 
 bool breaks(const task::Task& changed) { return !prove_obstacle_infeasible(changed).has_value(); }
 
-std::string obstacle(int i) { return "obstacles[" + std::to_string(i) + "]"; }
+std::string obstacle(int i) { return task::to_string(task::TaskPart::obstacle(i)); }
 
 double ceil_mm(double metres) { return std::ceil(metres * 1000.0 - 1e-9) / 1000.0; }
 
-std::vector<int> core_obstacles(const ObstacleProof& proof) {
+std::vector<int> core_obstacles(const Proof& proof) {
     std::vector<int> out;
-    for (const auto& p : proof.core)
-        if (p.rfind("obstacles[", 0) == 0) out.push_back(std::stoi(p.substr(10)));
+    for (const task::TaskPart& p : proof.core)
+        if (p.kind() == task::TaskPart::Kind::Obstacle) out.push_back(p.index());
     return out;
 }
 
 // The smallest obstacle first: its removal is the least change.
-std::vector<WallChange> removals(const task::Task& task, const ObstacleProof& proof,
-                                 std::size_t most) {
+std::vector<WallChange> removals(const task::Task& task, const Proof& proof, std::size_t most) {
     std::vector<int> order = core_obstacles(proof);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
         return task.obstacles[a].radius < task.obstacles[b].radius;
@@ -40,7 +39,7 @@ std::vector<WallChange> removals(const task::Task& task, const ObstacleProof& pr
         task::Task t = task;
         t.obstacles.erase(t.obstacles.begin() + i);
         if (!breaks(t)) continue;
-        out.push_back({obstacle(i),
+        out.push_back({task::TaskPart::obstacle(i),
                        "remove " + obstacle(i) +
                            text::format(" (radius %.3f m)", task.obstacles[i].radius) +
                            (proof.separation ? ": the wall opens" : ": the way around shortens"),
@@ -57,7 +56,7 @@ struct Pair {
 // The pairs of overlapping no-go discs a gap could open between: the wall's
 // neighbours (the shallowest overlap first), or for a detour every
 // overlapping pair of the core, nearest the straight way first.
-std::vector<Pair> gap_pairs(const task::Task& task, const ObstacleProof& proof) {
+std::vector<Pair> gap_pairs(const task::Task& task, const Proof& proof) {
     std::vector<Pair> out;
     std::set<std::pair<int, int>> seen;
     const auto add = [&](int i, int j, double order) {
@@ -90,8 +89,7 @@ std::vector<Pair> gap_pairs(const task::Task& task, const ObstacleProof& proof) 
     return out;
 }
 
-std::vector<WallChange> widenings(const task::Task& task, const ObstacleProof& proof,
-                                  std::size_t most) {
+std::vector<WallChange> widenings(const task::Task& task, const Proof& proof, std::size_t most) {
     const double tube = task.robot.link_diameter;
     const double wanted = tube + kGapMargin;
     std::vector<WallChange> out;
@@ -113,7 +111,7 @@ std::vector<WallChange> widenings(const task::Task& task, const ObstacleProof& p
         t.obstacles[p.j].center += apart * u;
         if (breaks(t)) {
             out.push_back(
-                {obstacle(p.j),
+                {task::TaskPart::obstacle(p.j),
                  head + text::format(": move %s %.3f m", obstacle(p.j).c_str(), apart) +
                      text::format(" further from %s, to (%.3f, %.3f)", obstacle(p.i).c_str(),
                                   t.obstacles[p.j].center.x(), t.obstacles[p.j].center.y()),
@@ -124,7 +122,7 @@ std::vector<WallChange> widenings(const task::Task& task, const ObstacleProof& p
         t.obstacles[p.i].center -= apart * u;
         if (breaks(t)) {
             out.push_back(
-                {obstacle(p.i),
+                {task::TaskPart::obstacle(p.i),
                  head + text::format(": move %s %.3f m", obstacle(p.i).c_str(), apart) +
                      text::format(" further from %s, to (%.3f, %.3f)", obstacle(p.j).c_str(),
                                   t.obstacles[p.i].center.x(), t.obstacles[p.i].center.y()),
@@ -137,7 +135,7 @@ std::vector<WallChange> widenings(const task::Task& task, const ObstacleProof& p
         t.obstacles[p.i].radius -= shrink;
         t.obstacles[p.j].radius -= shrink;
         if (breaks(t)) {
-            out.push_back({obstacle(p.i),
+            out.push_back({task::TaskPart::obstacle(p.i),
                            head + text::format(": make both radii %.3f m smaller", shrink),
                            std::move(t)});
         }
@@ -167,8 +165,7 @@ Vec2 along(const std::vector<RouteStep>& route, double s) {
     return route.back().point;
 }
 
-std::vector<WallChange> moves(const task::Task& task, const ObstacleProof& proof,
-                              std::size_t most) {
+std::vector<WallChange> moves(const task::Task& task, const Proof& proof, std::size_t most) {
     // Candidate centres and what they are, best first.
     std::vector<std::pair<Vec2, std::string>> targets;
     const auto points = path_points(task);
@@ -220,8 +217,8 @@ std::vector<WallChange> moves(const task::Task& task, const ObstacleProof& proof
         task::Task t = region_moved(task, k, at);
         if (!breaks(t)) continue;
         const auto& r = t.base_regions[k];
-        out.push_back({"base_regions",
-                       "move base_regions[" + std::to_string(k) + "]" +
+        out.push_back({task::TaskPart::base_regions(),
+                       "move " + task::to_string(task::TaskPart::base_region(static_cast<int>(k))) +
                            text::format(" to [%.3f, %.3f] x", r.min.x(), r.max.x()) +
                            text::format(" [%.3f, %.3f]", r.min.y(), r.max.y()) + " (" + where + ")",
                        std::move(t)});
@@ -231,8 +228,7 @@ std::vector<WallChange> moves(const task::Task& task, const ObstacleProof& proof
 
 }  // namespace
 
-std::vector<std::vector<WallChange>> wall_changes(const task::Task& task,
-                                                  const ObstacleProof& proof,
+std::vector<std::vector<WallChange>> wall_changes(const task::Task& task, const Proof& proof,
                                                   std::size_t per_kind) {
     return {removals(task, proof, per_kind), widenings(task, proof, per_kind),
             moves(task, proof, per_kind)};

@@ -257,9 +257,10 @@ TEST_CASE("relaxation options: defaults valid, each bad field named", "[options]
     });
     O bad;
     bad.check_seconds = -1.0;
-    CHECK_THROWS_WITH(
-        synth::suggest_relaxations(testing::line_task(), {"robot.max_link_length"}, 1.0, 1.0, bad),
-        Catch::Contains("RelaxationOptions::check_seconds"));
+    CHECK_THROWS_WITH(synth::suggest_relaxations(
+                          testing::line_task(),
+                          {task::TaskPart::robot(task::RobotKey::MaxLinkLength)}, 1.0, 1.0, bad),
+                      Catch::Contains("RelaxationOptions::check_seconds"));
 }
 
 TEST_CASE("baseline options: defaults valid, each bad field named", "[options][baseline]") {

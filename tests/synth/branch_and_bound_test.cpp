@@ -170,11 +170,13 @@ TEST_CASE("a 2-joint search answers infeasible from the branch and bound, naming
     const auto s = synth::synthesize(t, o);
     REQUIRE(s.status == synth::Status::Infeasible);
     const auto& core = s.explanation.core;
-    CHECK(std::find(core.begin(), core.end(), "robot.dof") != core.end());
-    CHECK(std::find(core.begin(), core.end(), "trajectory[0]") != core.end());
-    CHECK(std::find(core.begin(), core.end(), "base_regions") != core.end());
-    CHECK(std::count_if(core.begin(), core.end(),
-                        [](const std::string& p) { return p.rfind("obstacles[", 0) == 0; }) > 10);
+    CHECK(std::find(core.begin(), core.end(), task::TaskPart::robot(task::RobotKey::Dof)) !=
+          core.end());
+    CHECK(std::find(core.begin(), core.end(), task::TaskPart::trajectory(0)) != core.end());
+    CHECK(std::find(core.begin(), core.end(), task::TaskPart::base_regions()) != core.end());
+    CHECK(std::count_if(core.begin(), core.end(), [](const task::TaskPart& p) {
+              return p.kind() == task::TaskPart::Kind::Obstacle;
+          }) > 10);
     CHECK(s.explanation.message.find("branch and bound") != std::string::npos);
     // With 3 joints allowed the 2-joint proof says nothing.
     task::Task more = t;
@@ -184,10 +186,10 @@ TEST_CASE("a 2-joint search answers infeasible from the branch and bound, naming
 
 namespace {
 
-std::vector<int> core_obstacles(const std::vector<std::string>& core) {
+std::vector<int> core_obstacles(const std::vector<task::TaskPart>& core) {
     std::vector<int> out;
     for (const auto& p : core)
-        if (p.rfind("obstacles[", 0) == 0) out.push_back(std::stoi(p.substr(10)));
+        if (p.kind() == task::TaskPart::Kind::Obstacle) out.push_back(p.index());
     std::sort(out.begin(), out.end());
     return out;
 }

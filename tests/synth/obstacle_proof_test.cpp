@@ -25,10 +25,10 @@ task::Task load(const std::string& name) {
     return io::load_task(testing::source_path("tasks/infeasible/" + name + ".task.json"));
 }
 
-std::vector<int> core_obstacles(const std::vector<std::string>& core) {
+std::vector<int> core_obstacles(const std::vector<task::TaskPart>& core) {
     std::vector<int> out;
     for (const auto& p : core)
-        if (p.rfind("obstacles[", 0) == 0) out.push_back(std::stoi(p.substr(10)));
+        if (p.kind() == task::TaskPart::Kind::Obstacle) out.push_back(p.index());
     return out;
 }
 
@@ -82,8 +82,8 @@ TEST_CASE("a ring of posts around the path is a closed wall", "[walls]") {
     // The two decoys (12, 13) are no part of it; the posts overlap, so the
     // tube's diameter is not either.
     CHECK(core_obstacles(proof->core) == std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11});
-    CHECK(std::find(proof->core.begin(), proof->core.end(), "robot.link_diameter") ==
-          proof->core.end());
+    CHECK(std::find(proof->core.begin(), proof->core.end(),
+                    task::TaskPart::robot(task::RobotKey::LinkDiameter)) == proof->core.end());
     CHECK(
         proof->message.rfind(
             "obstacles 0-11 form a closed wall around trajectory[0]; the base region is outside it",
@@ -109,8 +109,8 @@ TEST_CASE("an open sieve whose gaps are narrower than the tube is a closed wall"
     REQUIRE(proof->separation);
     CHECK(testing::check_separation_witness(t, *proof->separation).empty());
     CHECK(core_obstacles(proof->core) == std::vector<int>{2, 3, 4, 5, 6, 7, 8, 9, 10, 11});
-    CHECK(std::find(proof->core.begin(), proof->core.end(), "robot.link_diameter") !=
-          proof->core.end());
+    CHECK(std::find(proof->core.begin(), proof->core.end(),
+                    task::TaskPart::robot(task::RobotKey::LinkDiameter)) != proof->core.end());
     // Posts apart in the task, closed only by the tube: a thinner one passes.
     task::Task thin = t;
     thin.robot.link_diameter = 0.02;
@@ -133,8 +133,8 @@ TEST_CASE("a long wall whose way around is beyond reach", "[walls]") {
     const auto core = core_obstacles(proof->core);
     CHECK(core.size() >= 20);
     CHECK(std::find(core.begin(), core.end(), 45) == core.end());  // the decoy
-    CHECK(std::find(proof->core.begin(), proof->core.end(), "robot.max_link_length") !=
-          proof->core.end());
+    CHECK(std::find(proof->core.begin(), proof->core.end(),
+                    task::TaskPart::robot(task::RobotKey::MaxLinkLength)) != proof->core.end());
     CHECK(proof->message.find("3 links of at most 1.00 m reach 3.00 m") != std::string::npos);
     // Measured on a machine shared with other work: a generous bound.
     CHECK(took < 0.25);

@@ -27,8 +27,9 @@ TEST_CASE("a primitive beyond the longest arm from every base is a proof with a 
     // 3-link arm of 1 m links reaches 3 m.
     const auto core = synth::out_of_reach_core(line_task(1.5, 3.5));
     REQUIRE(core);
-    CHECK(*core ==
-          std::vector<std::string>{"robot.max_link_length", "base_regions", "trajectory[0]"});
+    CHECK(*core == std::vector<task::TaskPart>{task::TaskPart::robot(task::RobotKey::MaxLinkLength),
+                                               task::TaskPart::base_regions(),
+                                               task::TaskPart::trajectory(0)});
     // Two joints reach 2 m: a line ending 2.2 m from the nearest base is out.
     CHECK(synth::out_of_reach_core(line_task(0.5, 2.3, {2})));
     CHECK_FALSE(synth::out_of_reach_core(line_task(0.5, 2.3, {2, 3})));
@@ -56,5 +57,5 @@ TEST_CASE("the core names the primitive farthest out of reach", "[synth][reach_p
     t.trajectory.push_back(geometry::make_line({5.0, 0.0}, {1.0, 0.0}));
     const auto core = synth::out_of_reach_core(t);
     REQUIRE(core);
-    CHECK(core->back() == task::part_name(t, 2));
+    CHECK(core->back() == task::TaskPart::primitive(t, 2));
 }

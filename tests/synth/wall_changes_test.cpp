@@ -19,7 +19,10 @@ task::Task load(const std::string& name) {
     return io::load_task(testing::source_path("tasks/infeasible/" + name + ".task.json"));
 }
 
-int index_in(const std::string& part) { return std::stoi(part.substr(part.find('[') + 1)); }
+int index_in(const task::TaskPart& part) {
+    REQUIRE(part.kind() == task::TaskPart::Kind::Obstacle);
+    return part.index();
+}
 
 // The two obstacles a widening names, from "widen the gap between
 // obstacles[i] and obstacles[j] ...".
@@ -52,11 +55,11 @@ TEST_CASE("every change offered against a wall or a detour breaks its proof", "[
         }
         // Removal: the smallest obstacle of the core whose removal breaks it.
         const auto& removal = kinds[0].at(0);
-        CHECK(removal.change.rfind("remove " + removal.part, 0) == 0);
+        CHECK(removal.change.rfind("remove " + task::to_string(removal.part), 0) == 0);
         const int k = index_in(removal.part);
         CHECK(removal.changed.obstacles.size() + 1 == t.obstacles.size());
         for (const auto& part : proof->core) {
-            if (part.rfind("obstacles[", 0) != 0) continue;
+            if (part.kind() != task::TaskPart::Kind::Obstacle) continue;
             const int i = index_in(part);
             if (t.obstacles[i].radius >= t.obstacles[k].radius) continue;
             task::Task without = t;
@@ -80,7 +83,7 @@ TEST_CASE("every change offered against a wall or a detour breaks its proof", "[
         }
         // Moving the base region keeps its size.
         const auto& move = kinds[2].at(0);
-        CHECK(move.part == "base_regions");
+        CHECK(move.part == task::TaskPart::base_regions());
         CHECK(move.change.rfind("move base_regions[", 0) == 0);
         for (std::size_t r = 0; r < t.base_regions.size(); ++r) {
             const Vec2 before = t.base_regions[r].max - t.base_regions[r].min;

@@ -11,6 +11,7 @@
 
 #include <modsynth/run/deadline.h>
 #include <modsynth/smt/skeleton.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::smt {
@@ -95,10 +96,10 @@ public:
     /// After Unsat (before any block): the task parts whose constraints
     /// conflict, as named in formats.md, shrunk to a minimal set by deletion.
     /// Empty if the conflict cannot be re-established.
-    std::vector<std::string> minimal_core();
+    std::vector<task::TaskPart> minimal_core();
     /// True when these task parts alone are proved to conflict (unsat with
     /// only their literals assumed); false when satisfiable or undecided.
-    bool conflicts(const std::vector<std::string>& parts);
+    bool conflicts(const std::vector<task::TaskPart>& parts);
     /// The encoding as an SMT-LIB2 script (assumption literals as named
     /// Booleans), for regression suites.
     std::string smtlib() const;

@@ -4,7 +4,7 @@
 // detour around the obstacles longer than any arm (geodesic_reach.h). Both
 // hold for every allowed joint count and every link length.
 #include <modsynth/synth/branch_and_bound.h>
-#include <modsynth/synth/wall_witness.h>
+#include <modsynth/synth/proof.h>
 #include <modsynth/task/task.h>
 
 #include <optional>
@@ -13,24 +13,11 @@
 
 namespace modsynth::synth {
 
-struct ObstacleProof {
-    /// Task parts of the proof, minimal: without any one obstacle listed,
-    /// the same kind of proof no longer holds.
-    std::vector<std::string> core;
-    std::string message;  ///< the proof in words (no "Proved infeasible: ")
-    /// False when the shrinking of the core ran out of time (or was not
-    /// given any): the core is then sound but may list obstacles the proof
-    /// does not need. Wall and detour proofs are always minimal.
-    bool minimal = true;
-    std::optional<SeparationWitness> separation;
-    std::optional<GeodesicWitness> geodesic;
-};
-
 /// A proof when the obstacles make the task infeasible in one of these two
-/// ways; nullopt otherwise (also when the path itself runs into a no-go disc
-/// everywhere, or when the path is out of reach without any obstacle: the
-/// front stage proves those).
-std::optional<ObstacleProof> prove_obstacle_infeasible(const task::Task& task);
+/// ways (always minimal, with its witness); nullopt otherwise (also when the path itself runs into
+/// a no-go disc everywhere, or when the path is out of reach without any obstacle: the front stage
+/// proves those).
+std::optional<Proof> prove_obstacle_infeasible(const task::Task& task);
 
 /// Tasks whose only allowed joint count is 2 (and that have base regions
 /// and obstacles): a proof by branch and bound (branch_and_bound.h) that no

@@ -7,9 +7,9 @@
 // allowed arm for every region, no design exists. The front stage proves
 // the same with Z3, in tenths of a second where this takes milliseconds.
 #include <optional>
-#include <string>
 #include <vector>
 
+#include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::synth {
@@ -19,6 +19,6 @@ namespace modsynth::synth {
 /// minimal core: without any one of them the primitive can be reached).
 /// nullopt when every primitive is within reach of some base in some region
 /// as far as the bound can tell, and for tasks without base regions.
-std::optional<std::vector<std::string>> out_of_reach_core(const task::Task& task);
+std::optional<std::vector<task::TaskPart>> out_of_reach_core(const task::Task& task);
 
 }  // namespace modsynth::synth

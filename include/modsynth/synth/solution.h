@@ -9,13 +9,14 @@
 #include <modsynth/kinematics/robot.h>
 #include <modsynth/synth/status.h>
 #include <modsynth/synth/wall_witness.h>
+#include <modsynth/task/part.h>
 #include <modsynth/verify/verifier.h>
 
 namespace modsynth::synth {
 
 struct Explanation {
     std::string message;
-    std::vector<std::string> core;  ///< task parts, named as in formats.md
+    std::vector<task::TaskPart> core;  ///< the task parts involved
     /// The data of an obstacle proof, when the task was proved infeasible
     /// that way (formats.md, "explanation.separation", ".geodesic").
     std::optional<SeparationWitness> separation;

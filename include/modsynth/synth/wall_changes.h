@@ -5,6 +5,7 @@
 // that copy; whether the changed task is then feasible is for the caller
 // to check (explanation.h re-checks every suggestion with the front stage).
 #include <modsynth/synth/obstacle_proof.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 
 #include <string>
@@ -13,9 +14,9 @@
 namespace modsynth::synth {
 
 struct WallChange {
-    std::string part;    ///< the task part it changes ("obstacles[3]", "base_regions")
-    std::string change;  ///< in words and numbers
-    task::Task changed;  ///< the task with the change applied
+    task::TaskPart part;  ///< the task part it changes (obstacles[3], base_regions)
+    std::string change;   ///< in words and numbers
+    task::Task changed;   ///< the task with the change applied
 };
 
 /// How much beyond the tube's diameter a widened gap is made (m): rounding
@@ -30,8 +31,7 @@ constexpr double kGapMargin = 0.002;
 /// base region (keeping its size): inside the wall, to the path's side of
 /// it, or along the detour to where the rest of the way is within reach.
 /// At most `per_kind` candidates of each kind.
-std::vector<std::vector<WallChange>> wall_changes(const task::Task& task,
-                                                  const ObstacleProof& proof,
+std::vector<std::vector<WallChange>> wall_changes(const task::Task& task, const Proof& proof,
                                                   std::size_t per_kind = 3);
 
 }  // namespace modsynth::synth
