@@ -22,20 +22,24 @@ void Quadratic::add_gradient(const double* x, double scale, double* grad) const 
     }
 }
 
-int QuadraticProgram::add_variable(double lower, double upper, double start, std::string name) {
+int QuadraticProgram::add_variable(double lower, double upper, double start, std::string name,
+                                   Key key) {
     assert(lower <= upper);
     lower_.push_back(lower);
     upper_.push_back(upper);
     start_.push_back(std::clamp(start, lower, upper));
     names_.push_back(std::move(name));
+    variable_keys_.push_back(key);
     return num_variables() - 1;
 }
 
-int QuadraticProgram::add_constraint(Quadratic g, double lower, double upper, std::string label) {
+int QuadraticProgram::add_constraint(Quadratic g, double lower, double upper, std::string label,
+                                     Key key) {
     constraints_.push_back(std::move(g));
     c_lower_.push_back(lower);
     c_upper_.push_back(upper);
     labels_.push_back(std::move(label));
+    constraint_keys_.push_back(key);
     return num_constraints() - 1;
 }
 
