@@ -1,20 +1,19 @@
 #include <modsynth/synth/explanation.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <set>
 #include <utility>
 
-#include <modsynth/geometry/distance.h>
+#include <modsynth/run/deadline.h>
+#include <modsynth/smt/common_core.h>
 #include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/conflict_text.h>
 #include <modsynth/synth/obstacle_proof.h>
-#include <modsynth/synth/reach_proof.h>
+#include <modsynth/synth/provers.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/synth/wall_changes.h>
-#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
@@ -22,58 +21,13 @@ namespace modsynth::synth {
 namespace {
 
 using geometry::Vec2;
-using Clock = std::chrono::steady_clock;
-
-Clock::time_point after(double seconds) {
-    return Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                              std::chrono::duration<double>(std::min(seconds, 1e6)));
-}
-
-double seconds_until(Clock::time_point t) {
-    return std::chrono::duration<double>(t - Clock::now()).count();
-}
-
-bool has(const std::vector<std::string>& v, const std::string& s) {
-    return std::find(v.begin(), v.end(), s) != v.end();
-}
-
-std::vector<std::string> with_prefix(const std::vector<std::string>& v, const std::string& prefix) {
-    std::vector<std::string> out;
-    for (const auto& s : v)
-        if (s.rfind(prefix, 0) == 0) out.push_back(s);
-    return out;
-}
-
-/// The parts that name primitives ("trajectory[j]" or "strokes[s][k]").
-std::vector<std::string> primitive_parts(const std::vector<std::string>& v) {
-    std::vector<std::string> out;
-    for (const auto& s : v)
-        if (task::names_primitive(s)) out.push_back(s);
-    return out;
-}
-
-int index_of(const std::string& part) {
-    const auto open = part.find('['), close = part.find(']');
-    return std::stoi(part.substr(open + 1, close - open - 1));
-}
-
-std::string listing(const std::vector<std::string>& parts, const char* last = " and ") {
-    std::string s;
-    for (std::size_t i = 0; i < parts.size(); ++i)
-        s += (i == 0 ? "" : (i + 1 == parts.size() ? last : ", ")) + parts[i];
-    return s;
-}
-
-std::string joint_counts(const task::Task& task) {
-    std::vector<std::string> d;
-    for (int k : task.robot.dof) d.push_back(std::to_string(k));
-    return listing(d, " or ");
-}
+using task::RobotKey;
+using task::TaskPart;
 
 // Front stage verdict over every allowed joint count: true when some count
 // is satisfiable (the conflict is gone) and no obstacle proof holds, false
 // when all are unsat or undecided.
-bool conflict_free(const task::Task& task, double time_limit, Clock::time_point deadline) {
+bool conflict_free(const task::Task& task, double time_limit, const run::Deadline& deadline) {
     if (prove_obstacle_infeasible(task)) return false;
     BranchAndBoundOptions bnb;
     bnb.time_limit = std::min(bnb.time_limit, time_limit);
@@ -86,21 +40,6 @@ bool conflict_free(const task::Task& task, double time_limit, Clock::time_point 
         if (fs.check() == smt::FrontStage::Result::Sat) return true;
     }
     return false;
-}
-
-// Smallest value in [lo, hi] (by bisection to `tolerance`) for which
-// `free(value)` holds, assuming monotonicity; nullopt if not even at hi, or
-// when the deadline passes first.
-template <typename Free>
-std::optional<double> smallest(double lo, double hi, double tolerance, Clock::time_point deadline,
-                               Free free) {
-    if (!free(hi)) return std::nullopt;
-    while (hi - lo > tolerance) {
-        if (Clock::now() >= deadline) return std::nullopt;
-        const double mid = 0.5 * (lo + hi);
-        (free(mid) ? hi : lo) = mid;
-    }
-    return hi;
 }
 
 /// The full pipeline on a relaxed task: its status and a sentence saying it.
@@ -125,59 +64,279 @@ std::pair<Status, std::string> attempt(const task::Task& relaxed, double seconds
                           text::format("%.0f s", seconds)};
 }
 
-}  // namespace
-
-std::vector<std::string> common_core(const task::Task& task,
-                                     const std::vector<std::vector<std::string>>& cores,
-                                     double time_limit) {
-    const Clock::time_point deadline = after(time_limit);
-    std::vector<std::vector<std::string>> candidates = cores;
-    std::sort(candidates.begin(), candidates.end(),
-              [](const auto& a, const auto& b) { return a.size() < b.size(); });
-    for (const auto& c : candidates) {
-        bool everywhere = true;
-        for (int dof : task.robot.dof) {
-            smt::FrontStageOptions o;
-            o.time_limit = time_limit;
-            o.deadline = deadline;
-            smt::FrontStage fs(task, dof, o);
-            everywhere = everywhere && fs.conflicts(c);
-        }
-        if (everywhere) return c;
+// The search for the smallest change of each core part: one relaxer per
+// kind of part (the table below), each bisecting one number of the task
+// until the conflict is gone, and offering the change once re-checked.
+class Relaxers {
+public:
+    Relaxers(const task::Task& task, const std::vector<TaskPart>& core, double solve_seconds,
+             double time_limit, const RelaxationOptions& options)
+        : task_(task),
+          core_(core),
+          solve_seconds_(solve_seconds),
+          options_(options),
+          deadline_(run::Deadline::in(time_limit)) {
+        for (const TaskPart& p : core)
+            if (p.kind() == TaskPart::Kind::Primitive) paths_.push_back(task::to_string(p));
     }
-    std::vector<std::string> all;
-    for (const auto& c : cores)
-        for (const auto& part : c)
-            if (!has(all, part)) all.push_back(part);
-    return all;
+
+    std::vector<Relaxation> run();
+
+    void longer_links(const TaskPart& part);
+    void shorter_links(const TaskPart& part);
+    void thinner_tube(const TaskPart& part);
+    void more_joints(const TaskPart& part);
+    void grown_regions(const TaskPart& part);
+    void smaller_obstacle(const TaskPart& part);
+    void moved_path(const TaskPart& part);
+
+private:
+    bool free(const task::Task& t) const {
+        return conflict_free(t, options_.check_seconds, deadline_);
+    }
+
+    // Smallest value in [lo, hi] (by bisection to `tolerance`) for which
+    // `is_free(value)` holds, assuming monotonicity; nullopt if not even at
+    // hi, or when the deadline passes first.
+    template <typename Free>
+    std::optional<double> smallest(double lo, double hi, double tolerance, Free is_free) const {
+        if (!is_free(hi)) return std::nullopt;
+        while (hi - lo > tolerance) {
+            if (deadline_.expired()) return std::nullopt;
+            const double mid = 0.5 * (lo + hi);
+            (is_free(mid) ? hi : lo) = mid;
+        }
+        return hi;
+    }
+
+    // Re-checked here, whatever the search that found it assumed.
+    bool offer(const TaskPart& part, const std::string& change, const task::Task& relaxed) {
+        if (!free(relaxed)) return false;
+        auto [status, outcome] = attempt(relaxed, std::min(solve_seconds_, deadline_.remaining()));
+        out_.push_back({part, change, relaxed, std::move(status), std::move(outcome)});
+        return true;
+    }
+
+    const task::Task& task_;
+    const std::vector<TaskPart>& core_;
+    const double solve_seconds_;
+    const RelaxationOptions& options_;
+    const run::Deadline deadline_;
+    std::vector<std::string> paths_;  ///< the core's primitives, by name
+    std::vector<Relaxation> out_;
+};
+
+struct Relaxer {
+    TaskPart::Kind kind;
+    std::optional<RobotKey> key;  ///< for robot parts: which key
+    void (Relaxers::*relax)(const TaskPart&);
+};
+
+// Parts of other kinds (a single base region, the modules, ...) get no
+// suggestion: no proof names them.
+const Relaxer kRelaxers[] = {
+    {TaskPart::Kind::Robot, RobotKey::MaxLinkLength, &Relaxers::longer_links},
+    {TaskPart::Kind::Robot, RobotKey::MinLinkLength, &Relaxers::shorter_links},
+    {TaskPart::Kind::Robot, RobotKey::LinkDiameter, &Relaxers::thinner_tube},
+    {TaskPart::Kind::Robot, RobotKey::Dof, &Relaxers::more_joints},
+    {TaskPart::Kind::BaseRegions, std::nullopt, &Relaxers::grown_regions},
+    {TaskPart::Kind::Obstacle, std::nullopt, &Relaxers::smaller_obstacle},
+    {TaskPart::Kind::Primitive, std::nullopt, &Relaxers::moved_path},
+};
+
+std::vector<Relaxation> Relaxers::run() {
+    // An obstacle proof's own moves (wall_changes.h) stand for its obstacles
+    // and base regions: one of each kind, the first that also passes the
+    // re-check.
+    const auto walls = prove_obstacle_infeasible(task_);
+    const bool walled = walls && std::set<TaskPart>(walls->core.begin(), walls->core.end()) ==
+                                     std::set<TaskPart>(core_.begin(), core_.end());
+    if (walled) {
+        for (const auto& kind : wall_changes(task_, *walls)) {
+            for (const WallChange& c : kind) {
+                if (deadline_.expired()) break;
+                if (offer(c.part, c.change, c.changed)) break;
+            }
+        }
+    }
+    for (const TaskPart& part : core_) {
+        if (deadline_.expired()) break;
+        if (walled &&
+            (part.kind() == TaskPart::Kind::BaseRegions || part.kind() == TaskPart::Kind::Obstacle))
+            continue;
+        for (const Relaxer& r : kRelaxers) {
+            if (r.kind != part.kind() || (r.key && !part.is_robot(*r.key)) || !part.field().empty())
+                continue;
+            (this->*r.relax)(part);
+            break;
+        }
+    }
+    return std::move(out_);
 }
+
+void Relaxers::longer_links(const TaskPart& part) {
+    task::Task t = task_;
+    const auto v = smallest(task_.robot.max_link_length, options_.longest_link,
+                            options_.length_tolerance, [&](double x) {
+                                t.robot.max_link_length = x;
+                                return free(t);
+                            });
+    if (!v) return;
+    t.robot.max_link_length = std::ceil(*v * 100.0) / 100.0;
+    offer(part,
+          text::format("robot.max_link_length >= %.2f m", t.robot.max_link_length) +
+              (paths_.empty() ? "" : " would make " + listing(paths_) + " reachable"),
+          t);
+}
+
+void Relaxers::shorter_links(const TaskPart& part) {
+    task::Task t = task_;
+    const auto v =
+        smallest(-task_.robot.min_link_length, 0.0, options_.min_length_tolerance, [&](double x) {
+            t.robot.min_link_length = -x;
+            return free(t);
+        });
+    if (!v) return;
+    t.robot.min_link_length = std::floor(-*v * 1000.0) / 1000.0;
+    offer(part, text::format("robot.min_link_length <= %.3f m", t.robot.min_link_length), t);
+}
+
+void Relaxers::thinner_tube(const TaskPart& part) {
+    task::Task t = task_;
+    const auto v = smallest(-task_.robot.link_diameter, -options_.thinnest_tube,
+                            options_.diameter_tolerance, [&](double x) {
+                                t.robot.link_diameter = -x;
+                                return free(t);
+                            });
+    if (!v) return;
+    t.robot.link_diameter = std::floor(-*v * 1000.0) / 1000.0;
+    offer(part, text::format("robot.link_diameter <= %.3f m", t.robot.link_diameter), t);
+}
+
+// Only the 2-joint branch and bound names the joint count: one more joint
+// is a second bend.
+void Relaxers::more_joints(const TaskPart& part) {
+    if (task_.robot.dof.back() >= task::kMaxDof) return;
+    task::Task t = task_;
+    for (int k = task_.robot.dof.back() + 1; k <= task::kMaxDof; ++k) t.robot.dof.push_back(k);
+    if (!free(t)) return;
+    offer(part, "allow " + joint_counts(t) + " joints", t);
+}
+
+// Grows every region by d on all sides; the satisfied relaxation then says
+// where the base can stand, and the suggestion extends the nearest region
+// just to there.
+void Relaxers::grown_regions(const TaskPart& part) {
+    if (task_.base_regions.empty()) return;
+    auto grown = [&](double d) {
+        task::Task g = task_;
+        for (auto& r : g.base_regions) r.min -= Vec2::Constant(d), r.max += Vec2::Constant(d);
+        return g;
+    };
+    const auto v = smallest(0.0, options_.farthest_move, options_.length_tolerance,
+                            [&](double d) { return free(grown(d)); });
+    if (!v) return;
+    // Where the base can stand: the model of a satisfiable joint count.
+    std::optional<Vec2> found;
+    for (int dof : task_.robot.dof) {
+        smt::FrontStageOptions o;
+        o.deadline = deadline_;
+        smt::FrontStage fs(grown(*v), dof, o);
+        if (fs.check() == smt::FrontStage::Result::Sat) {
+            found = fs.skeleton().base;
+            break;
+        }
+    }
+    if (!found) return;
+    const Vec2 b = *found;
+    std::size_t nearest = 0;
+    double gap = 1e300;
+    for (std::size_t k = 0; k < task_.base_regions.size(); ++k) {
+        const Vec2 clamp =
+            b.cwiseMax(task_.base_regions[k].min).cwiseMin(task_.base_regions[k].max);
+        if ((b - clamp).norm() < gap) gap = (b - clamp).norm(), nearest = k;
+    }
+    task::Task e = task_;
+    e.base_regions[nearest].min = e.base_regions[nearest].min.cwiseMin(b);
+    e.base_regions[nearest].max = e.base_regions[nearest].max.cwiseMax(b);
+    offer(part,
+          "extend " + task::to_string(TaskPart::base_region(static_cast<int>(nearest))) +
+              text::format(" by %.2f m towards (%.2f, %.2f)", gap, b.x(), b.y()),
+          e);
+}
+
+// The largest radius that still leaves room, or else no obstacle at all.
+void Relaxers::smaller_obstacle(const TaskPart& part) {
+    const int o = part.index();
+    if (o < 0 || o >= static_cast<int>(task_.obstacles.size())) return;
+    task::Task t = task_;
+    t.obstacles.erase(t.obstacles.begin() + o);
+    if (!free(t)) return;
+    task::Task s = task_;
+    const auto v = smallest(-task_.obstacles[o].radius, -options_.smallest_radius,
+                            options_.radius_tolerance, [&](double x) {
+                                s.obstacles[o].radius = -x;
+                                return free(s);
+                            });
+    const std::string name = task::to_string(part);
+    if (v) {
+        s.obstacles[o].radius = std::floor(-*v * 1000.0) / 1000.0;
+        offer(part, name + text::format(" with radius <= %.3f m", s.obstacles[o].radius), s);
+    } else {
+        offer(part, "without " + name, t);
+    }
+}
+
+// Brings the whole path (so it stays connected) towards the base region
+// nearest to this primitive.
+void Relaxers::moved_path(const TaskPart& part) {
+    const auto j = task::primitive_index(task_, part);
+    if (!j || task_.base_regions.empty()) return;
+    const geometry::Primitive& prim = task_.trajectory[*j];
+    const Vec2 mid = geometry::point_at(prim, geometry::length(prim) / 2);
+    Vec2 target = 0.5 * (task_.base_regions[0].min + task_.base_regions[0].max);
+    for (const auto& r : task_.base_regions) {
+        const Vec2 c = 0.5 * (r.min + r.max);
+        if ((c - mid).norm() < (target - mid).norm()) target = c;
+    }
+    const Vec2 dir = (target - mid).normalized();
+    auto moved = [&](double d) {
+        task::Task m = task_;
+        for (geometry::Primitive& p : m.trajectory) p = geometry::translate(p, d * dir);
+        return m;
+    };
+    const auto v = smallest(0.0, (target - mid).norm(), options_.length_tolerance,
+                            [&](double d) { return free(moved(d)); });
+    if (!v) return;
+    const double d = std::ceil(*v * 100.0) / 100.0;
+    offer(part,
+          "move the path" +
+              text::format(" %.2f m towards (%.2f, %.2f)", d, target.x(), target.y()) +
+              " to bring " + task::to_string(part) + " within reach",
+          moved(d));
+}
+
+}  // namespace
 
 InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
     InfeasibilityProof proof;
-    const Clock::time_point deadline = after(time_limit);
+    const run::Deadline deadline = run::Deadline::in(time_limit);
     // The same proofs, in the same order, as solve's: both name one core.
-    if (auto core = out_of_reach_core(task)) {
+    // explain has the time to shrink a branch and bound's obstacles to a
+    // minimal core.
+    BranchAndBoundOptions bnb;
+    bnb.core_time_limit = time_limit;
+    for (const Prover& prover : provers(bnb)) {
+        std::optional<Proof> found = prover.prove(task, deadline);
+        if (!found) continue;
         proof.proved = true;
-        proof.message = describe_conflict(task, *core);
-        proof.core = std::move(*core);
+        proof.core = std::move(found->core);
+        proof.message = std::move(found->message);
+        proof.separation = std::move(found->separation);
+        proof.geodesic = std::move(found->geodesic);
         return proof;
     }
-    std::optional<ObstacleProof> obstacles = prove_obstacle_infeasible(task);
-    if (!obstacles) {
-        // explain has the time to shrink the proof's obstacles to a minimal core.
-        BranchAndBoundOptions options;
-        options.core_time_limit = time_limit;
-        obstacles = prove_two_joint_infeasible(task, options, deadline);
-    }
-    if (obstacles) {
-        proof.proved = true;
-        proof.core = std::move(obstacles->core);
-        proof.message = std::move(obstacles->message);
-        proof.separation = std::move(obstacles->separation);
-        proof.geodesic = std::move(obstacles->geodesic);
-        return proof;
-    }
-    std::vector<std::vector<std::string>> cores;
+    std::vector<std::vector<TaskPart>> cores;
     for (int dof : task.robot.dof) {
         smt::FrontStageOptions o;
         o.time_limit = time_limit;
@@ -196,7 +355,7 @@ InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit) {
     }
     proof.proved = proof.open.empty() && !cores.empty();
     if (proof.proved) {
-        proof.core = common_core(task, cores, std::max(0.0, seconds_until(deadline)));
+        proof.core = smt::common_core(task, cores, std::max(0.0, deadline.remaining()));
         proof.message = describe_conflict(task, proof.core);
     }
     return proof;
@@ -213,248 +372,11 @@ std::string unproved_message(const InfeasibilityProof& proof, const Solution& s)
     return "Not proved infeasible (" + proof.open + "); " + s.explanation.message;
 }
 
-std::string describe_conflict(const task::Task& task, const std::vector<std::string>& core) {
-    const auto traj = primitive_parts(core);
-    const auto obst = with_prefix(core, "obstacles[");
-    const bool base = has(core, "base_regions");
-    const bool longest = has(core, "robot.max_link_length");
-    const bool shortest = has(core, "robot.min_link_length");
-    const bool tube = has(core, "robot.link_diameter");
-    const std::string arms = "an arm of " + joint_counts(task) + " links";
-    if (!traj.empty() && longest && obst.empty() && !shortest) {
-        return listing(traj) + (traj.size() > 1 ? " cannot all be reached" : " is out of reach") +
-               (base ? " from every allowed base position" : " from any base position") + " by " +
-               arms + text::format(" of at most %.2f m.", task.robot.max_link_length);
-    }
-    if (traj.empty() && !obst.empty() && base && tube) {
-        return listing(obst) + (obst.size() > 1 ? " cover" : " covers") +
-               " every allowed base position: the first joint would stand inside an obstacle.";
-    }
-    if (!traj.empty() && !obst.empty() && tube && !base && !longest) {
-        return listing(obst) + " lies closer to " + listing(traj) +
-               text::format(
-                   " than half the tube diameter (%.4f m): the last link, which ends on the path, "
-                   "would "
-                   "touch it.",
-                   task.robot.link_diameter / 2);
-    }
-    if (!traj.empty() && shortest) {
-        return listing(traj) + " passes too close to " +
-               (base ? std::string("every allowed base position") : std::string("the base")) +
-               text::format(" for links of at least %.2f m: the arm cannot fold that tightly.",
-                            task.robot.min_link_length);
-    }
-    return "These parts of the task cannot all be satisfied by " + arms + ": " + listing(core) +
-           ".";
-}
-
-std::string describe_part(const task::Task& task, const std::string& part) {
-    if (const auto j = task::primitive_of_part(task, part)) {
-        const auto& p = task.trajectory.at(*j);
-        switch (p.kind) {
-            case geometry::PrimitiveKind::Line:
-                return part + text::format(": a line from (%.3f, %.3f)", p.start.x(), p.start.y()) +
-                       text::format(" to (%.3f, %.3f)", p.end.x(), p.end.y());
-            case geometry::PrimitiveKind::Arc:
-                return part + text::format(": an arc from (%.3f, %.3f)", p.start.x(), p.start.y()) +
-                       text::format(" to (%.3f, %.3f)", p.end.x(), p.end.y()) +
-                       text::format(" around (%.3f, %.3f)", p.center.x(), p.center.y());
-            case geometry::PrimitiveKind::Circle:
-                return part + text::format(": a circle of radius %.3f m around (%.3f, %.3f)",
-                                           p.radius, p.center.x(), p.center.y());
-        }
-    }
-    if (part.rfind("obstacles[", 0) == 0) {
-        const auto& o = task.obstacles.at(index_of(part));
-        return part + text::format(": a disc of radius %.3f m at (%.3f, %.3f)", o.radius,
-                                   o.center.x(), o.center.y());
-    }
-    if (part == "base_regions") {
-        std::string s = "base_regions: the base must stand in";
-        for (std::size_t k = 0; k < task.base_regions.size(); ++k) {
-            const auto& r = task.base_regions[k];
-            s += (k ? " or" : "") + text::format(" [%.3f, %.3f] x", r.min.x(), r.max.x()) +
-                 text::format(" [%.3f, %.3f]", r.min.y(), r.max.y());
-        }
-        return s;
-    }
-    if (part == "robot.max_link_length")
-        return part + text::format(": links of at most %.3f m", task.robot.max_link_length);
-    if (part == "robot.min_link_length")
-        return part + text::format(": links of at least %.3f m", task.robot.min_link_length);
-    if (part == "robot.link_diameter")
-        return part + text::format(": tubes %.4f m thick", task.robot.link_diameter);
-    if (part == "robot.dof") return part + ": " + joint_counts(task) + " joints";
-    return part;
-}
-
 std::vector<Relaxation> suggest_relaxations(const task::Task& task,
-                                            const std::vector<std::string>& core,
-                                            double solve_seconds, double time_limit,
-                                            const RelaxationOptions& options) {
+                                            const std::vector<TaskPart>& core, double solve_seconds,
+                                            double time_limit, const RelaxationOptions& options) {
     text::require_valid(options);
-    const double kCheck = options.check_seconds;
-    const Clock::time_point deadline = after(time_limit);
-    const auto conflict_free = [&](const task::Task& t, double limit) {
-        return synth::conflict_free(t, limit, deadline);
-    };
-    const auto smallest = [&](double lo, double hi, double tolerance, auto free) {
-        return synth::smallest(lo, hi, tolerance, deadline, free);
-    };
-    std::vector<Relaxation> out;
-    auto offer = [&](const std::string& part, const std::string& change,
-                     const task::Task& relaxed) {
-        // Re-checked here, whatever the search that found it assumed.
-        if (!conflict_free(relaxed, kCheck)) return false;
-        auto [status, outcome] = attempt(relaxed, std::min(solve_seconds, seconds_until(deadline)));
-        out.push_back({part, change, relaxed, std::move(status), std::move(outcome)});
-        return true;
-    };
-    // An obstacle proof's own moves (wall_changes.h) stand for its obstacles
-    // and base regions: one of each kind, the first that also passes the
-    // re-check above.
-    const auto walls = prove_obstacle_infeasible(task);
-    const bool walled = walls && std::set<std::string>(walls->core.begin(), walls->core.end()) ==
-                                     std::set<std::string>(core.begin(), core.end());
-    if (walled) {
-        for (const auto& kind : wall_changes(task, *walls)) {
-            for (const WallChange& c : kind) {
-                if (Clock::now() >= deadline) break;
-                if (offer(c.part, c.change, c.changed)) break;
-            }
-        }
-    }
-    const auto traj = primitive_parts(core);
-    for (const std::string& part : core) {
-        if (Clock::now() >= deadline) break;
-        if (walled && (part == "base_regions" || part.rfind("obstacles[", 0) == 0)) continue;
-        task::Task t = task;
-        if (part == "robot.max_link_length") {
-            const auto v = smallest(task.robot.max_link_length, options.longest_link,
-                                    options.length_tolerance, [&](double x) {
-                                        t.robot.max_link_length = x;
-                                        return conflict_free(t, kCheck);
-                                    });
-            if (!v) continue;
-            t.robot.max_link_length = std::ceil(*v * 100.0) / 100.0;
-            offer(part,
-                  text::format("robot.max_link_length >= %.2f m", t.robot.max_link_length) +
-                      (traj.empty() ? "" : " would make " + listing(traj) + " reachable"),
-                  t);
-        } else if (part == "robot.min_link_length") {
-            const auto v = smallest(-task.robot.min_link_length, 0.0, options.min_length_tolerance,
-                                    [&](double x) {
-                                        t.robot.min_link_length = -x;
-                                        return conflict_free(t, kCheck);
-                                    });
-            if (!v) continue;
-            t.robot.min_link_length = std::floor(-*v * 1000.0) / 1000.0;
-            offer(part, text::format("robot.min_link_length <= %.3f m", t.robot.min_link_length),
-                  t);
-        } else if (part == "robot.link_diameter") {
-            const auto v = smallest(-task.robot.link_diameter, -options.thinnest_tube,
-                                    options.diameter_tolerance, [&](double x) {
-                                        t.robot.link_diameter = -x;
-                                        return conflict_free(t, kCheck);
-                                    });
-            if (!v) continue;
-            t.robot.link_diameter = std::floor(-*v * 1000.0) / 1000.0;
-            offer(part, text::format("robot.link_diameter <= %.3f m", t.robot.link_diameter), t);
-        } else if (part == "base_regions" && !task.base_regions.empty()) {
-            // Grow every region by d on all sides; the satisfied relaxation
-            // then says where the base can stand, and the suggestion extends
-            // the nearest region just to there.
-            auto grown = [&](double d) {
-                task::Task g = task;
-                for (auto& r : g.base_regions)
-                    r.min -= Vec2::Constant(d), r.max += Vec2::Constant(d);
-                return g;
-            };
-            const auto v = smallest(0.0, options.farthest_move, options.length_tolerance,
-                                    [&](double d) { return conflict_free(grown(d), kCheck); });
-            if (!v) continue;
-            // Where the base can stand: the model of a satisfiable joint count.
-            std::optional<Vec2> found;
-            for (int dof : task.robot.dof) {
-                smt::FrontStageOptions o;
-                o.deadline = deadline;
-                smt::FrontStage fs(grown(*v), dof, o);
-                if (fs.check() == smt::FrontStage::Result::Sat) {
-                    found = fs.skeleton().base;
-                    break;
-                }
-            }
-            if (!found) continue;
-            const Vec2 b = *found;
-            std::size_t nearest = 0;
-            double gap = 1e300;
-            for (std::size_t k = 0; k < task.base_regions.size(); ++k) {
-                const Vec2 clamp =
-                    b.cwiseMax(task.base_regions[k].min).cwiseMin(task.base_regions[k].max);
-                if ((b - clamp).norm() < gap) gap = (b - clamp).norm(), nearest = k;
-            }
-            task::Task e = task;
-            e.base_regions[nearest].min = e.base_regions[nearest].min.cwiseMin(b);
-            e.base_regions[nearest].max = e.base_regions[nearest].max.cwiseMax(b);
-            offer(part,
-                  "extend base_regions[" + std::to_string(nearest) + "]" +
-                      text::format(" by %.2f m towards (%.2f, %.2f)", gap, b.x(), b.y()),
-                  e);
-        } else if (part == "robot.dof" && task.robot.dof.back() < task::kMaxDof) {
-            // Only the 2-joint branch and bound names the joint count: one
-            // more joint is a second bend.
-            for (int k = task.robot.dof.back() + 1; k <= task::kMaxDof; ++k)
-                t.robot.dof.push_back(k);
-            if (!conflict_free(t, kCheck)) continue;
-            offer(part, "allow " + joint_counts(t) + " joints", t);
-        } else if (part.rfind("obstacles[", 0) == 0) {
-            const int o = index_of(part);
-            t.obstacles.erase(t.obstacles.begin() + o);
-            if (!conflict_free(t, kCheck)) continue;
-            // The largest radius that still leaves room.
-            task::Task s = task;
-            const auto v = smallest(-task.obstacles[o].radius, -options.smallest_radius,
-                                    options.radius_tolerance, [&](double x) {
-                                        s.obstacles[o].radius = -x;
-                                        return conflict_free(s, kCheck);
-                                    });
-            if (v) {
-                s.obstacles[o].radius = std::floor(-*v * 1000.0) / 1000.0;
-                offer(part, part + text::format(" with radius <= %.3f m", s.obstacles[o].radius),
-                      s);
-            } else {
-                offer(part, "without " + part, t);
-            }
-        } else if (task::primitive_of_part(task, part) && !task.base_regions.empty()) {
-            // Bring the whole path (so it stays connected) towards the base
-            // region nearest to this primitive.
-            const int j = *task::primitive_of_part(task, part);
-            const geometry::Primitive& prim = task.trajectory[j];
-            const Vec2 mid = geometry::point_at(prim, geometry::length(prim) / 2);
-            Vec2 target = 0.5 * (task.base_regions[0].min + task.base_regions[0].max);
-            for (const auto& r : task.base_regions) {
-                const Vec2 c = 0.5 * (r.min + r.max);
-                if ((c - mid).norm() < (target - mid).norm()) target = c;
-            }
-            const Vec2 dir = (target - mid).normalized();
-            auto moved = [&](double d) {
-                task::Task m = task;
-                for (geometry::Primitive& p : m.trajectory)
-                    p.start += d * dir, p.end += d * dir, p.center += d * dir;
-                return m;
-            };
-            const auto v = smallest(0.0, (target - mid).norm(), options.length_tolerance,
-                                    [&](double d) { return conflict_free(moved(d), kCheck); });
-            if (!v) continue;
-            const double d = std::ceil(*v * 100.0) / 100.0;
-            offer(part,
-                  "move the path" +
-                      text::format(" %.2f m towards (%.2f, %.2f)", d, target.x(), target.y()) +
-                      " to bring " + part + " within reach",
-                  moved(d));
-        }
-    }
-    return out;
+    return Relaxers(task, core, solve_seconds, time_limit, options).run();
 }
 
 bool RelaxationOptions::IsValid(std::string* error) const {

@@ -31,14 +31,14 @@ std::vector<int> minimise(std::vector<int> keep, Holds holds) {
     return keep;
 }
 
-std::vector<std::string> core_of(const task::Task& task, const std::vector<int>& obstacles,
-                                 const std::set<int>& primitives,
-                                 const std::vector<std::string>& robot_parts) {
-    std::vector<std::string> core;
-    for (int j : primitives) core.push_back(task::part_name(task, j));
-    for (int i : obstacles) core.push_back("obstacles[" + std::to_string(i) + "]");
-    core.push_back("base_regions");
-    for (const auto& p : robot_parts) core.push_back(p);
+std::vector<task::TaskPart> core_of(const task::Task& task, const std::vector<int>& obstacles,
+                                    const std::set<int>& primitives,
+                                    const std::vector<task::RobotKey>& robot_keys) {
+    std::vector<task::TaskPart> core;
+    for (int j : primitives) core.push_back(task::TaskPart::primitive(task, j));
+    for (int i : obstacles) core.push_back(task::TaskPart::obstacle(i));
+    core.push_back(task::TaskPart::base_regions());
+    for (task::RobotKey k : robot_keys) core.push_back(task::TaskPart::robot(k));
     return core;
 }
 

@@ -6,6 +6,7 @@
 #include <set>
 
 #include <modsynth/io/task_io.h>
+#include <modsynth/synth/conflict_text.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/synthesizer.h>
 
@@ -26,7 +27,8 @@ TEST_CASE("every hand-made infeasible task is proved with its expected core", "[
             testing::read_json(stem + ".core.json")["core"].get<std::vector<std::string>>();
         const synth::Solution s = synth::synthesize(io::load_task(path), {});
         REQUIRE(s.status == synth::Status::Infeasible);
-        CHECK(std::set<std::string>(s.explanation.core.begin(), s.explanation.core.end()) ==
+        const auto core = task::to_strings(s.explanation.core);
+        CHECK(std::set<std::string>(core.begin(), core.end()) ==
               std::set<std::string>(expected.begin(), expected.end()));
         CHECK(s.explanation.message.rfind("Proved infeasible: ", 0) == 0);
         ++checked;
@@ -41,9 +43,9 @@ TEST_CASE("relaxations are the smallest change of one part, and they are re-chec
     const auto proof = synth::prove_infeasible(t, 10.0);
     REQUIRE(proof.proved);
     const auto suggestions = synth::suggest_relaxations(t, proof.core, 5.0);
-    const auto longer =
-        std::find_if(suggestions.begin(), suggestions.end(),
-                     [](const synth::Relaxation& r) { return r.part == "robot.max_link_length"; });
+    const auto longer = std::find_if(
+        suggestions.begin(), suggestions.end(),
+        [](const synth::Relaxation& r) { return r.part.is_robot(task::RobotKey::MaxLinkLength); });
     REQUIRE(longer != suggestions.end());
     // The farthest point, (2.7, 0.3), is 2.61 m from the plate's nearest
     // corner: two links need at least 1.30 m each.
@@ -52,9 +54,9 @@ TEST_CASE("relaxations are the smallest change of one part, and they are re-chec
     CHECK_FALSE(synth::prove_infeasible(longer->relaxed, 10.0).proved);
     CHECK(longer->status == synth::Status::Solved);
     CHECK(longer->outcome.rfind("solved", 0) == 0);
-    const auto moved =
-        std::find_if(suggestions.begin(), suggestions.end(),
-                     [](const synth::Relaxation& r) { return r.part == "base_regions"; });
+    const auto moved = std::find_if(
+        suggestions.begin(), suggestions.end(),
+        [](const synth::Relaxation& r) { return r.part == task::TaskPart::base_regions(); });
     REQUIRE(moved != suggestions.end());
     CHECK(moved->change.find("extend base_regions[0]") != std::string::npos);
     CHECK_FALSE(synth::prove_infeasible(moved->relaxed, 10.0).proved);
@@ -62,13 +64,14 @@ TEST_CASE("relaxations are the smallest change of one part, and they are re-chec
 
 TEST_CASE("task parts are described in words and numbers", "[explain]") {
     const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
-    CHECK(synth::describe_part(t, "trajectory[0]") ==
+    using task::TaskPart;
+    CHECK(synth::describe_part(t, TaskPart::trajectory(0)) ==
           "trajectory[0]: a line from (0.500, 0.050) to (0.500, 0.220)");
-    CHECK(synth::describe_part(t, "trajectory[4]").find("a circle of radius 0.050 m") !=
+    CHECK(synth::describe_part(t, TaskPart::trajectory(4)).find("a circle of radius 0.050 m") !=
           std::string::npos);
-    CHECK(synth::describe_part(t, "obstacles[2]") ==
+    CHECK(synth::describe_part(t, TaskPart::obstacle(2)) ==
           "obstacles[2]: a disc of radius 0.030 m at (0.640, 0.070)");
-    CHECK(synth::describe_part(t, "robot.max_link_length") ==
+    CHECK(synth::describe_part(t, TaskPart::robot(task::RobotKey::MaxLinkLength)) ==
           "robot.max_link_length: links of at most 1.000 m");
 }
 

@@ -8,6 +8,7 @@
 
 #include <modsynth/synth/solution.h>
 #include <modsynth/synth/status.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::synth {
@@ -16,7 +17,7 @@ struct InfeasibilityProof {
     bool proved = false;
     /// Task parts that conflict for every allowed joint count (minimal for
     /// each count on its own).
-    std::vector<std::string> core;
+    std::vector<task::TaskPart> core;
     /// When not proved: which joint counts stayed satisfiable or undecided.
     std::string open;
     /// When proved: the proof in words, and the witnesses of an obstacle
@@ -26,33 +27,20 @@ struct InfeasibilityProof {
     std::optional<GeodesicWitness> geodesic;
 };
 
-/// The front stage over every allowed joint count, within `time_limit`
-/// seconds in all (a proof not finished by then is not one).
+/// The provers of solve (provers.h), in the same order, then the front
+/// stage over every allowed joint count, within `time_limit` seconds in all
+/// (a proof not finished by then is not one).
 InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit);
 
-/// What `explain` says, in one place for the command and the library: a
-/// proof in words ("Proved infeasible: ..."), or without a proof what a full
-/// run `s` found.
+/// What `explain` says: a proof in words ("Proved infeasible: ..."), or
+/// without a proof what a full run `s` found.
 std::string proved_message(const InfeasibilityProof& proof);
 std::string unproved_message(const InfeasibilityProof& proof, const Solution& s);
 
-/// Among per-joint-count cores, one that conflicts for all of them when
-/// there is such (checked with the front stage), else their union.
-std::vector<std::string> common_core(const task::Task& task,
-                                     const std::vector<std::vector<std::string>>& cores,
-                                     double time_limit);
-
-/// One sentence naming what conflicts, in the task's terms and units.
-std::string describe_conflict(const task::Task& task, const std::vector<std::string>& core);
-
-/// What one task part is, in words and numbers: "trajectory[2]: a line from
-/// (0.40, 0.10) to (0.55, 0.10)".
-std::string describe_part(const task::Task& task, const std::string& part);
-
 struct Relaxation {
-    std::string part;    ///< the core part it changes
-    std::string change;  ///< e.g. "robot.max_link_length >= 1.34 m"
-    task::Task relaxed;  ///< the task with the change applied
+    task::TaskPart part;  ///< the core part it changes
+    std::string change;   ///< e.g. "robot.max_link_length >= 1.34 m"
+    task::Task relaxed;   ///< the task with the change applied
     /// The full pipeline on the relaxed task: what it concluded, and the
     /// same in a sentence ("solved: 2 joints, links ..." or why not).
     Status status;
@@ -88,12 +76,12 @@ struct RelaxationOptions {
 };
 
 /// For each part of the core, the smallest change of that part alone that
-/// makes the front stage satisfiable (found by bisection), re-checked, and
-/// then tried with the full pipeline for `solve_seconds`. Everything ends
-/// within `time_limit` seconds: the bisections stop there and the
-/// suggestions found so far are returned.
+/// makes the front stage satisfiable (found by bisection; one relaxer per
+/// kind of part), re-checked, and then tried with the full pipeline for
+/// `solve_seconds`. Everything ends within `time_limit` seconds: the
+/// bisections stop there and the suggestions found so far are returned.
 std::vector<Relaxation> suggest_relaxations(const task::Task& task,
-                                            const std::vector<std::string>& core,
+                                            const std::vector<task::TaskPart>& core,
                                             double solve_seconds, double time_limit = 1e6,
                                             const RelaxationOptions& options = {});
 
