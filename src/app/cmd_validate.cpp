@@ -2,12 +2,12 @@
 #include <memory>
 #include <string>
 
+#include <modsynth/hardware/task_catalog.h>
 #include <modsynth/io/task_io.h>
 
 #include <modsynth/text/printable.h>
 
 #include "command.h"
-#include "module_choice.h"
 
 namespace modsynth::app {
 
@@ -19,7 +19,7 @@ Command add_validate(CLI::App& parent) {
     return {sub, [path] {
                 const task::Task t = io::load_task(*path);
                 // robot.modules must name modules of the catalog.
-                if (!t.robot.modules.empty()) catalog_for(t);
+                if (!t.robot.modules.empty()) hardware::catalog_for(t);
                 std::printf(
                     "%s: valid task '%s': %zu primitives, %zu obstacles, %zu base regions\n",
                     path->c_str(), text::printable(t.name, 80).c_str(), t.trajectory.size(),
