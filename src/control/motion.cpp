@@ -1,6 +1,7 @@
 #include <modsynth/control/motion.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <modsynth/control/travel.h>
@@ -54,7 +55,9 @@ std::string point_name(const task::Task& task, int j, double s) {
 }  // namespace
 
 int primitive_index(const task::Task& task, const Sample& sample) {
-    return task::primitive_index(task, sample.stroke, sample.primitive);
+    const int j = task::primitive_index(task, sample.stroke, sample.primitive);
+    assert(j >= 0 && j < static_cast<int>(task.trajectory.size()));
+    return j;
 }
 
 bool MotionOptions::IsValid(std::string* error) const {

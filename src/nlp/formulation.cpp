@@ -1,6 +1,7 @@
 #include <modsynth/nlp/formulation.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -66,6 +67,12 @@ public:
 
     void build() {
         const kinematics::Robot& start = p_.start;
+        // The start robot is of the skeleton's kind: its links, and with
+        // three joints a proximal angle per primitive.
+        assert(start.dof() == p_.skeleton.dof);
+        assert(!kinematics::has_proximal_link(p_.skeleton.dof) ||
+               start.proximal_angles.size() == t_.trajectory.size());
+        assert(p_.skeleton.base_region < static_cast<int>(t_.base_regions.size()));
         f_.dof = p_.skeleton.dof;
         f_.elbow = p_.skeleton.elbow;
         f_.link_diameter = t_.robot.link_diameter;
@@ -449,6 +456,7 @@ Formulation formulate(const ArmProblem& problem) {
 }
 
 kinematics::Robot robot_from(const Formulation& f, const std::vector<double>& x) {
+    assert(x.size() == static_cast<std::size_t>(f.program.num_variables()));
     kinematics::Robot robot;
     robot.base = Vec2(x[f.base_x], x[f.base_y]);
     for (int r : f.r) robot.link_lengths.push_back(x[r]);

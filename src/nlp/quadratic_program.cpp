@@ -64,8 +64,12 @@ void QuadraticProgram::finalize() {
             if (inserted) jac_.push_back({static_cast<int>(m), col});
             return it->second;
         };
-        for (const auto& [i, a] : g.linear) jac_slot_linear_[m].push_back(slot(i));
+        for (const auto& [i, a] : g.linear) {
+            assert(i >= 0 && i < num_variables());
+            jac_slot_linear_[m].push_back(slot(i));
+        }
         for (const auto& t : g.quadratic) {
+            assert(t.i >= 0 && t.i < num_variables() && t.j >= 0 && t.j < num_variables());
             jac_slot_quadratic_[m].push_back({slot(t.i), slot(t.j)});
             hess_slot_[m].push_back(hess_slot(t.i, t.j));
         }

@@ -3,6 +3,7 @@
 #include <z3++.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -15,8 +16,8 @@
 #include <modsynth/kinematics/clearance_rule.h>
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/task/part.h>
-#include <modsynth/text/format.h>
 #include <modsynth/task/strokes.h>
+#include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
 namespace modsynth::smt {
@@ -369,6 +370,7 @@ struct FrontStage::Impl {
     }
 
     Skeleton skeleton() {
+        assert(model.has_value());  // only after a Sat check
         const z3::model& m = *model;
         Skeleton s;
         s.dof = dof;

@@ -8,6 +8,7 @@
 #include <modsynth/text/format.h>
 
 #include <algorithm>
+#include <cassert>
 #include <iterator>
 #include <set>
 
@@ -36,7 +37,10 @@ std::vector<task::TaskPart> core_of(const task::Task& task, const std::vector<in
                                     const std::vector<task::RobotKey>& robot_keys) {
     std::vector<task::TaskPart> core;
     for (int j : primitives) core.push_back(task::TaskPart::primitive(task, j));
-    for (int i : obstacles) core.push_back(task::TaskPart::obstacle(i));
+    for (int i : obstacles) {
+        assert(i >= 0 && i < static_cast<int>(task.obstacles.size()));
+        core.push_back(task::TaskPart::obstacle(i));
+    }
     core.push_back(task::TaskPart::base_regions());
     for (task::RobotKey k : robot_keys) core.push_back(task::TaskPart::robot(k));
     return core;
