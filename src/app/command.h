@@ -11,9 +11,9 @@
 #include <modsynth/kinematics/robot.h>
 #include <modsynth/output/exports.h>
 
-namespace modsynth::app {
+#include "exit_code.h"
 
-enum Exit { kOk = 0, kInternal = 1, kInvalid = 2, kInfeasible = 3, kUnknown = 4 };
+namespace modsynth::app {
 
 struct Command {
     CLI::App* app = nullptr;

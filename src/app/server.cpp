@@ -9,7 +9,7 @@
 #include <cstring>
 #include <thread>
 
-#include "command.h"
+#include "exit_code.h"
 #include "loopback.h"
 #include "process_pool.h"
 

@@ -10,7 +10,7 @@
 #include <modsynth/io/task_io.h>
 #include <modsynth/text/format.h>
 
-#include "command.h"
+#include "exit_code.h"
 #include "process_pool.h"
 #include "task_files.h"
 
