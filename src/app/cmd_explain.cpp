@@ -9,8 +9,8 @@
 #include <modsynth/explanation/explain.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/prove/conflict_text.h>
 #include <modsynth/run/stopwatch.h>
-#include <modsynth/synth/conflict_text.h>
 
 #include "command.h"
 #include "number_checks.h"

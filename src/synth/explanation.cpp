@@ -6,12 +6,12 @@
 #include <set>
 #include <utility>
 
+#include <modsynth/prove/conflict_text.h>
+#include <modsynth/prove/obstacle_proof.h>
+#include <modsynth/prove/provers.h>
 #include <modsynth/run/deadline.h>
 #include <modsynth/smt/common_core.h>
 #include <modsynth/smt/front_stage.h>
-#include <modsynth/synth/conflict_text.h>
-#include <modsynth/synth/obstacle_proof.h>
-#include <modsynth/synth/provers.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/synth/wall_changes.h>
 #include <modsynth/text/format.h>

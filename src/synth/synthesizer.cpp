@@ -20,13 +20,13 @@
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/nlp/warm_start.h>
+#include <modsynth/prove/conflict_text.h>
+#include <modsynth/prove/provers.h>
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/smt/common_core.h>
 #include <modsynth/smt/front_stage.h>
-#include <modsynth/synth/conflict_text.h>
 #include <modsynth/synth/design_choice.h>
 #include <modsynth/synth/initial_guess.h>
-#include <modsynth/synth/provers.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 #include <modsynth/verify/verifier.h>

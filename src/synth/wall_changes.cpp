@@ -1,6 +1,6 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
-#include <modsynth/synth/no_go.h>
+#include <modsynth/prove/no_go.h>
 #include <modsynth/synth/wall_changes.h>
 #include <modsynth/text/format.h>
 

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/io/task_io.h>
-#include <modsynth/synth/conflict_text.h>
+#include <modsynth/prove/conflict_text.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/limits.h>
 #include <modsynth/text/printable.h>

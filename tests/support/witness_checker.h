@@ -2,7 +2,7 @@
 // Re-checks the witnesses of obstacle proofs from the task alone, with none
 // of the code that found them: sampling, ray casting and a roadmap of its
 // own. An empty answer means the witness holds; otherwise it says what fails.
-#include <modsynth/synth/wall_witness.h>
+#include <modsynth/prove/wall_witness.h>
 #include <modsynth/task/task.h>
 
 #include <string>

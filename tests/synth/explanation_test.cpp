@@ -6,7 +6,7 @@
 #include <set>
 
 #include <modsynth/io/task_io.h>
-#include <modsynth/synth/conflict_text.h>
+#include <modsynth/prove/conflict_text.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/synthesizer.h>
 

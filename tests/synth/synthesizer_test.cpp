@@ -8,7 +8,7 @@
 
 #include <modsynth/geometry/farthest_reach.h>
 #include <modsynth/io/task_io.h>
-#include <modsynth/synth/reach_proof.h>
+#include <modsynth/prove/reach_proof.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/verify/verifier.h>
 

@@ -1,7 +1,7 @@
 #include <modsynth/io/task_io.h>
+#include <modsynth/prove/no_go.h>
+#include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/synth/explanation.h>
-#include <modsynth/synth/no_go.h>
-#include <modsynth/synth/obstacle_proof.h>
 #include <modsynth/synth/wall_changes.h>
 
 #include <algorithm>

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/prove/wall_witness.h>
 #include <modsynth/run/progress.h>
 #include <modsynth/synth/explanation.h>
 #include <modsynth/synth/status.h>
-#include <modsynth/synth/wall_witness.h>
 #include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 

@@ -7,8 +7,8 @@
 #include <modsynth/control/motion.h>
 #include <modsynth/hardware/selection.h>
 #include <modsynth/kinematics/robot.h>
+#include <modsynth/prove/wall_witness.h>
 #include <modsynth/synth/status.h>
-#include <modsynth/synth/wall_witness.h>
 #include <modsynth/task/part.h>
 #include <modsynth/verify/verifier.h>
 

@@ -6,9 +6,9 @@
 
 #include <modsynth/control/motion.h>
 #include <modsynth/control/retime.h>
+#include <modsynth/prove/branch_and_bound.h>
 #include <modsynth/run/progress.h>
 #include <modsynth/smt/front_stage.h>
-#include <modsynth/synth/branch_and_bound.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/synth/swept_choice.h>

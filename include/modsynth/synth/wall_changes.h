@@ -4,7 +4,7 @@
 // to a copy of the task, and offered only when the proof no longer holds on
 // that copy; whether the changed task is then feasible is for the caller
 // to check (explanation.h re-checks every suggestion with the front stage).
-#include <modsynth/synth/obstacle_proof.h>
+#include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 

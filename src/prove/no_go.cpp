@@ -1,5 +1,5 @@
 #include <modsynth/geometry/primitive.h>
-#include <modsynth/synth/no_go.h>
+#include <modsynth/prove/no_go.h>
 #include <modsynth/task/strokes.h>
 
 namespace modsynth::synth {

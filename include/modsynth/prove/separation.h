@@ -4,7 +4,7 @@
 // An arm is a connected tube from its base to its end-effector, so it would
 // have to cross the wall; the polygon through the cycle's centres lies
 // inside the discs, so no arm of any joint count or link lengths can.
-#include <modsynth/synth/wall_witness.h>
+#include <modsynth/prove/wall_witness.h>
 #include <modsynth/task/task.h>
 
 #include <optional>

@@ -1,9 +1,9 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
-#include <modsynth/synth/geodesic_reach.h>
-#include <modsynth/synth/no_go.h>
-#include <modsynth/synth/obstacle_proof.h>
-#include <modsynth/synth/separation.h>
+#include <modsynth/prove/geodesic_reach.h>
+#include <modsynth/prove/no_go.h>
+#include <modsynth/prove/obstacle_proof.h>
+#include <modsynth/prove/separation.h>
 #include <modsynth/task/part.h>
 #include <modsynth/text/format.h>
 

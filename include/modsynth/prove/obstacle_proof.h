@@ -3,8 +3,8 @@
 // closed wall between the base regions and the path (separation.h), or a
 // detour around the obstacles longer than any arm (geodesic_reach.h). Both
 // hold for every allowed joint count and every link length.
-#include <modsynth/synth/branch_and_bound.h>
-#include <modsynth/synth/proof.h>
+#include <modsynth/prove/branch_and_bound.h>
+#include <modsynth/prove/proof.h>
 #include <modsynth/task/task.h>
 
 #include <optional>

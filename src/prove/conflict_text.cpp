@@ -1,4 +1,4 @@
-#include <modsynth/synth/conflict_text.h>
+#include <modsynth/prove/conflict_text.h>
 
 #include <algorithm>
 

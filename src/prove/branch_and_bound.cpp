@@ -2,9 +2,9 @@
 #include <modsynth/geometry/distance_contractor.h>
 #include <modsynth/geometry/interval.h>
 #include <modsynth/geometry/primitive.h>
+#include <modsynth/prove/branch_and_bound.h>
+#include <modsynth/prove/no_go.h>
 #include <modsynth/run/stopwatch.h>
-#include <modsynth/synth/branch_and_bound.h>
-#include <modsynth/synth/no_go.h>
 #include <modsynth/text/option_check.h>
 
 #include <algorithm>

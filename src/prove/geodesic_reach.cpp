@@ -1,6 +1,6 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/tangents.h>
-#include <modsynth/synth/geodesic_reach.h>
+#include <modsynth/prove/geodesic_reach.h>
 
 #include <algorithm>
 #include <array>

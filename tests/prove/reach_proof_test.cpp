@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include <modsynth/synth/reach_proof.h>
+#include <modsynth/prove/reach_proof.h>
 #include <modsynth/task/strokes.h>
 
 using namespace modsynth;

@@ -7,9 +7,9 @@
 #include <optional>
 #include <vector>
 
+#include <modsynth/prove/branch_and_bound.h>
+#include <modsynth/prove/proof.h>
 #include <modsynth/run/deadline.h>
-#include <modsynth/synth/branch_and_bound.h>
-#include <modsynth/synth/proof.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::synth {

@@ -1,8 +1,8 @@
-#include <modsynth/synth/provers.h>
+#include <modsynth/prove/provers.h>
 
-#include <modsynth/synth/conflict_text.h>
-#include <modsynth/synth/obstacle_proof.h>
-#include <modsynth/synth/reach_proof.h>
+#include <modsynth/prove/conflict_text.h>
+#include <modsynth/prove/obstacle_proof.h>
+#include <modsynth/prove/reach_proof.h>
 
 namespace modsynth::synth {
 

@@ -1,4 +1,4 @@
-#include <modsynth/synth/reach_proof.h>
+#include <modsynth/prove/reach_proof.h>
 
 #include <algorithm>
 #include <limits>

@@ -1,7 +1,7 @@
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
-#include <modsynth/synth/no_go.h>
-#include <modsynth/synth/separation.h>
+#include <modsynth/prove/no_go.h>
+#include <modsynth/prove/separation.h>
 
 #include <algorithm>
 #include <array>

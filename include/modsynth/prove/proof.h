@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <modsynth/synth/wall_witness.h>
+#include <modsynth/prove/wall_witness.h>
 #include <modsynth/task/part.h>
 
 namespace modsynth::synth {

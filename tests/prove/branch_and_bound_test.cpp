@@ -1,7 +1,7 @@
 #include <modsynth/io/task_io.h>
-#include <modsynth/synth/branch_and_bound.h>
-#include <modsynth/synth/no_go.h>
-#include <modsynth/synth/obstacle_proof.h>
+#include <modsynth/prove/branch_and_bound.h>
+#include <modsynth/prove/no_go.h>
+#include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/synth/synthesizer.h>
 
 #include <algorithm>

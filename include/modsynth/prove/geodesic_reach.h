@@ -7,8 +7,8 @@
 // segments and arcs of the discs' circles (a visibility graph, exact
 // geometry); the graph keeps every edge that rounding leaves in doubt, so
 // its distances never exceed the true ones.
-#include <modsynth/synth/no_go.h>
-#include <modsynth/synth/wall_witness.h>
+#include <modsynth/prove/no_go.h>
+#include <modsynth/prove/wall_witness.h>
 #include <modsynth/task/task.h>
 
 #include <memory>
