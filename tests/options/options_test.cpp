@@ -13,9 +13,9 @@
 
 #include <modsynth/baseline/baseline.h>
 #include <modsynth/control/motion.h>
+#include <modsynth/explanation/explanation.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/smt/front_stage.h>
-#include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/text/option_check.h>

@@ -1,10 +1,10 @@
+#include <modsynth/explanation/explanation.h>
 #include <modsynth/geometry/distance.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/prove/geodesic_reach.h>
 #include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/prove/separation.h>
-#include <modsynth/synth/explanation.h>
 #include <modsynth/synth/synthesizer.h>
 
 #include <algorithm>

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/explanation/explanation.h>
 #include <modsynth/prove/wall_witness.h>
 #include <modsynth/run/progress.h>
-#include <modsynth/synth/explanation.h>
 #include <modsynth/synth/status.h>
 #include <modsynth/task/part.h>
 #include <modsynth/task/task.h>

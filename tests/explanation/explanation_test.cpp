@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <set>
 
+#include <modsynth/explanation/explanation.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/prove/conflict_text.h>
-#include <modsynth/synth/explanation.h>
 #include <modsynth/synth/synthesizer.h>
 
 #include "../support/fixtures.h"

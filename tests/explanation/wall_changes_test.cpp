@@ -1,8 +1,8 @@
+#include <modsynth/explanation/explanation.h>
+#include <modsynth/explanation/wall_changes.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/prove/no_go.h>
 #include <modsynth/prove/obstacle_proof.h>
-#include <modsynth/synth/explanation.h>
-#include <modsynth/synth/wall_changes.h>
 
 #include <algorithm>
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
+#include <modsynth/explanation/wall_changes.h>
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
 #include <modsynth/prove/no_go.h>
-#include <modsynth/synth/wall_changes.h>
 #include <modsynth/text/format.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include <modsynth/synth/explanation.h>
+#include <modsynth/explanation/explanation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -6,6 +6,7 @@
 #include <set>
 #include <utility>
 
+#include <modsynth/explanation/wall_changes.h>
 #include <modsynth/prove/conflict_text.h>
 #include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/prove/provers.h>
@@ -13,7 +14,6 @@
 #include <modsynth/smt/common_core.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/synthesizer.h>
-#include <modsynth/synth/wall_changes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
