@@ -29,7 +29,7 @@ struct ExplainArgs {
 // Past the time limit by this much, the watchdog answers for the run.
 constexpr double kWatchdogMargin = 0.6;
 
-nlohmann::json suggestion_json(const synth::Relaxation& r) {
+nlohmann::json suggestion_json(const explanation::Relaxation& r) {
     return {{"part", task::to_string(r.part)}, {"change", r.change}, {"outcome", r.outcome}};
 }
 
@@ -77,7 +77,7 @@ int run_explain(const ExplainArgs& a) {
         if (!a.json) {
             std::printf("%s\n\nThe conflicting parts:\n", e.message.c_str());
             for (const auto& part : e.core)
-                std::printf("  - %s\n", synth::describe_part(task, part).c_str());
+                std::printf("  - %s\n", prove::describe_part(task, part).c_str());
             std::printf("\nSmallest changes that remove the conflict (each re-checked):\n");
             std::fflush(stdout);
         }

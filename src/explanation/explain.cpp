@@ -26,8 +26,8 @@ Explanation explain(const task::Task& task, const ExplainOptions& options) {
     };
     Explanation out;
     say(run::Stage::Proofs, "proving infeasibility");
-    const synth::InfeasibilityProof proof =
-        synth::prove_infeasible(task, std::min(options.proof_seconds, left()));
+    const InfeasibilityProof proof =
+        prove_infeasible(task, std::min(options.proof_seconds, left()));
     if (!proof.proved) {
         // Not proved infeasible: say what a full run finds.
         say(run::Stage::Search, "solving the task");
@@ -35,7 +35,7 @@ Explanation explain(const task::Task& task, const ExplainOptions& options) {
         o.time_limit = left();
         const synth::Solution s = synth::synthesize(task, o);
         out.status = s.status;
-        out.message = synth::unproved_message(proof, s);
+        out.message = unproved_message(proof, s);
         out.core = s.explanation.core;
         out.separation = s.explanation.separation;
         out.geodesic = s.explanation.geodesic;
@@ -43,13 +43,13 @@ Explanation explain(const task::Task& task, const ExplainOptions& options) {
     }
     out.proved = true;
     out.status = synth::Status::Infeasible;
-    out.message = synth::proved_message(proof);
+    out.message = proved_message(proof);
     out.core = proof.core;
     out.separation = proof.separation;
     out.geodesic = proof.geodesic;
     if (options.proved) options.proved(out);
     say(run::Stage::Explanation, "looking for the smallest changes");
-    out.suggestions = synth::suggest_relaxations(task, proof.core, options.solve_seconds, left());
+    out.suggestions = suggest_relaxations(task, proof.core, options.solve_seconds, left());
     return out;
 }
 

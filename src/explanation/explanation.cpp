@@ -17,7 +17,22 @@
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
-namespace modsynth::synth {
+namespace modsynth::explanation {
+
+using prove::BranchAndBoundOptions;
+using prove::describe_conflict;
+using prove::joint_counts;
+using prove::listing;
+using prove::Proof;
+using prove::prove_obstacle_infeasible;
+using prove::prove_two_joint_infeasible;
+using prove::Prover;
+using prove::provers;
+using synth::Solution;
+using synth::Status;
+using synth::SynthesisOptions;
+using synth::synthesize;
+
 namespace {
 
 using geometry::Vec2;
@@ -393,4 +408,4 @@ bool RelaxationOptions::IsValid(std::string* error) const {
         .ok();
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::explanation

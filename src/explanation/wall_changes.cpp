@@ -9,10 +9,17 @@
 #include <set>
 #include <utility>
 
-namespace modsynth::synth {
+namespace modsynth::explanation {
 namespace {
 
 using geometry::Vec2;
+using prove::kNoGoSlack;
+using prove::no_go_discs;
+using prove::overlap;
+using prove::path_points;
+using prove::Proof;
+using prove::prove_obstacle_infeasible;
+using prove::RouteStep;
 
 bool breaks(const task::Task& changed) { return !prove_obstacle_infeasible(changed).has_value(); }
 
@@ -234,4 +241,4 @@ std::vector<std::vector<WallChange>> wall_changes(const task::Task& task, const 
             moves(task, proof, per_kind)};
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::explanation

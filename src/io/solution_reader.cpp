@@ -104,9 +104,9 @@ int index(const json& j, const std::string& part) {
     return integer(j, part, 0, std::numeric_limits<int>::max());
 }
 
-synth::SeparationWitness parse_separation(const json& j, const std::string& part) {
+prove::SeparationWitness parse_separation(const json& j, const std::string& part) {
     require_object(j, part);
-    synth::SeparationWitness w;
+    prove::SeparationWitness w;
     const std::string wp = member(part, "walls");
     const json& walls = required(j, part, "walls");
     require_array(walls, wp, "walls");
@@ -114,7 +114,7 @@ synth::SeparationWitness parse_separation(const json& j, const std::string& part
         const std::string p = element(wp, k);
         const json& x = walls[k];
         require_object(x, p);
-        synth::Wall wall;
+        prove::Wall wall;
         wall.base_region = index(required(x, p, "base_region"), member(p, "base_region"));
         wall.primitive = index(required(x, p, "primitive"), member(p, "primitive"));
         wall.point = parse_point(required(x, p, "point"), member(p, "point"));
@@ -134,9 +134,9 @@ synth::SeparationWitness parse_separation(const json& j, const std::string& part
     return w;
 }
 
-synth::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
+prove::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
     require_object(j, part);
-    synth::GeodesicWitness w;
+    prove::GeodesicWitness w;
     w.reach = finite_number(required(j, part, "reach"), member(part, "reach"));
     const std::string op = member(part, "obstacles");
     const json& obstacles = required(j, part, "obstacles");
@@ -150,7 +150,7 @@ synth::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
         const std::string p = element(dp, k);
         const json& x = detours[k];
         require_object(x, p);
-        synth::Detour d;
+        prove::Detour d;
         d.base_region = index(required(x, p, "base_region"), member(p, "base_region"));
         d.primitive = index(required(x, p, "primitive"), member(p, "primitive"));
         d.point = parse_point(required(x, p, "point"), member(p, "point"));
@@ -161,7 +161,7 @@ synth::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
         for (std::size_t i = 0; i < route.size(); ++i) {
             const std::string sp = element(rp, i);
             require_object(route[i], sp);
-            synth::RouteStep s;
+            prove::RouteStep s;
             s.point = parse_point(required(route[i], sp, "point"), member(sp, "point"));
             if (const json* a = optional(route[i], "around"))
                 s.around = index(*a, member(sp, "around"));

@@ -14,7 +14,7 @@ nlohmann::json point(const geometry::Vec2& p) { return {p.x(), p.y()}; }
 
 }  // namespace
 
-nlohmann::json to_json(const synth::SeparationWitness& w) {
+nlohmann::json to_json(const prove::SeparationWitness& w) {
     nlohmann::json walls = nlohmann::json::array();
     for (const auto& x : w.walls)
         walls.push_back({{"base_region", x.base_region},
@@ -25,7 +25,7 @@ nlohmann::json to_json(const synth::SeparationWitness& w) {
     return {{"walls", walls}};
 }
 
-nlohmann::json to_json(const synth::GeodesicWitness& w) {
+nlohmann::json to_json(const prove::GeodesicWitness& w) {
     nlohmann::json detours = nlohmann::json::array();
     for (const auto& d : w.detours) {
         nlohmann::json route = nlohmann::json::array();

@@ -12,7 +12,7 @@
 #include <limits>
 #include <set>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 namespace {
 
 using geometry::Interval;
@@ -372,4 +372,4 @@ BranchAndBoundResult branch_and_bound(const task::Task& task, const std::vector<
     return search.run();
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

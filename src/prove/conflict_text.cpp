@@ -4,7 +4,7 @@
 
 #include <modsynth/text/format.h>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 namespace {
 
 using task::RobotKey;
@@ -147,4 +147,4 @@ std::string describe_part(const task::Task& task, const TaskPart& part) {
     return name;
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

@@ -11,7 +11,7 @@
 #include <queue>
 #include <unordered_map>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 namespace {
 
 using geometry::Vec2;
@@ -400,4 +400,4 @@ std::optional<GeodesicWitness> prove_geodesic_reach(const task::Task& task,
     return GeodesicProver(task, obstacles).prove(obstacles, with_route);
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

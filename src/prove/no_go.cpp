@@ -2,7 +2,7 @@
 #include <modsynth/prove/no_go.h>
 #include <modsynth/task/strokes.h>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 std::vector<NoGoDisc> no_go_discs(const task::Task& task, const std::vector<int>& obstacles) {
     std::vector<NoGoDisc> out;
@@ -44,4 +44,4 @@ bool free_point(const std::vector<NoGoDisc>& discs, const geometry::Vec2& p) {
     return true;
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

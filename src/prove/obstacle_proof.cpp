@@ -12,7 +12,7 @@
 #include <iterator>
 #include <set>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 namespace {
 
 using geometry::Vec2;
@@ -348,4 +348,4 @@ std::optional<Proof> prove_obstacle_infeasible(const task::Task& task) {
     return std::nullopt;
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

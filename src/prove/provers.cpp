@@ -4,7 +4,7 @@
 #include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/prove/reach_proof.h>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 std::vector<Prover> provers(const BranchAndBoundOptions& two_joint) {
     return {
@@ -28,4 +28,4 @@ std::vector<Prover> provers(const BranchAndBoundOptions& two_joint) {
     };
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

@@ -5,7 +5,7 @@
 
 #include <modsynth/geometry/farthest_reach.h>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 std::optional<std::vector<task::TaskPart>> out_of_reach_core(const task::Task& task) {
     if (task.base_regions.empty() || task.robot.dof.empty()) return std::nullopt;
@@ -38,4 +38,4 @@ std::optional<std::vector<task::TaskPart>> out_of_reach_core(const task::Task& t
     return std::nullopt;
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

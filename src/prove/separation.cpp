@@ -7,7 +7,7 @@
 #include <array>
 #include <queue>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 namespace {
 
 using geometry::Vec2;
@@ -193,4 +193,4 @@ std::optional<SeparationWitness> prove_separation(const task::Task& task,
     return out;
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

@@ -32,6 +32,13 @@
 #include <modsynth/verify/verifier.h>
 
 namespace modsynth::synth {
+
+using prove::BranchAndBoundOptions;
+using prove::describe_conflict;
+using prove::Proof;
+using prove::Prover;
+using prove::provers;
+
 namespace {
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
@@ -133,7 +140,7 @@ private:
         std::vector<smt::Skeleton> searched;  ///< every skeleton tried, for the retries
         bool all_unsat = true;                ///< every joint count proved infeasible
     };
-    std::optional<Proof> prove();
+    std::optional<Proof> find_proof();
     std::optional<Solution> search_skeletons(FrontStageVerdicts& verdicts);
     Solution infeasible(Proof proof) const;
     Solution unknown(const std::vector<std::vector<task::TaskPart>>& cores) const;
@@ -174,7 +181,7 @@ private:
 };
 
 Solution Search::run() {
-    if (auto proof = prove()) return infeasible(std::move(*proof));
+    if (auto proof = find_proof()) return infeasible(std::move(*proof));
     FrontStageVerdicts verdicts;
     if (auto found = search_skeletons(verdicts)) return timed(std::move(*found));
     // Blocking skeletons proves nothing: while time is left, their other
@@ -195,7 +202,7 @@ Solution Search::run() {
 
 // The provers first (provers.h): exact geometry in milliseconds, where the
 // front stage could only search.
-std::optional<Proof> Search::prove() {
+std::optional<Proof> Search::find_proof() {
     // Two joints only: the branch and bound gets a small share of the run,
     // and its core is shrunk only within what the proof leaves of it.
     BranchAndBoundOptions bnb = opt_.branch_and_bound;

@@ -42,15 +42,15 @@ TEST_CASE("every change offered against a wall or a detour breaks its proof", "[
     for (const std::string name : {"ring-around-path", "sieve-around-path", "long-wall"}) {
         INFO(name);
         const task::Task t = load(name);
-        const auto proof = synth::prove_obstacle_infeasible(t);
+        const auto proof = prove::prove_obstacle_infeasible(t);
         REQUIRE(proof);
-        const auto kinds = synth::wall_changes(t, *proof);
+        const auto kinds = explanation::wall_changes(t, *proof);
         REQUIRE(kinds.size() == 3);
         for (const auto& kind : kinds) {
             CHECK_FALSE(kind.empty());
             for (const auto& c : kind) {
                 INFO(c.change);
-                CHECK_FALSE(synth::prove_obstacle_infeasible(c.changed));
+                CHECK_FALSE(prove::prove_obstacle_infeasible(c.changed));
             }
         }
         // Removal: the smallest obstacle of the core whose removal breaks it.
@@ -64,14 +64,15 @@ TEST_CASE("every change offered against a wall or a detour breaks its proof", "[
             if (t.obstacles[i].radius >= t.obstacles[k].radius) continue;
             task::Task without = t;
             without.obstacles.erase(without.obstacles.begin() + i);
-            CHECK(synth::prove_obstacle_infeasible(without));  // a smaller one would not do
+            CHECK(prove::prove_obstacle_infeasible(without));  // a smaller one would not do
         }
         // Widening: the gap is at least the tube (plus the margin) afterwards,
         // and what it asks for is needed: half the move leaves the proof.
         const auto& widening = kinds[1].at(0);
         CHECK(widening.change.rfind("widen the gap between", 0) == 0);
         const auto [i, j] = widened_pair(widening.change);
-        CHECK(gap(widening.changed, i, j) >= t.robot.link_diameter + synth::kGapMargin - 1e-9);
+        CHECK(gap(widening.changed, i, j) >=
+              t.robot.link_diameter + explanation::kGapMargin - 1e-9);
         CHECK(gap(t, i, j) < t.robot.link_diameter);
         if (widening.change.find(" further from ") != std::string::npos) {
             const int moved = index_in(widening.part);
@@ -79,7 +80,7 @@ TEST_CASE("every change offered against a wall or a detour breaks its proof", "[
             half.obstacles[moved].center =
                 0.5 * (t.obstacles[moved].center + widening.changed.obstacles[moved].center);
             const double still = gap(half, i, j);
-            if (still < t.robot.link_diameter) CHECK(synth::prove_obstacle_infeasible(half));
+            if (still < t.robot.link_diameter) CHECK(prove::prove_obstacle_infeasible(half));
         }
         // Moving the base region keeps its size.
         const auto& move = kinds[2].at(0);
@@ -98,11 +99,11 @@ TEST_CASE("a gap as wide as the tube plus the margin lets a ring's proof go", "[
     // no longer a wall; pulled apart by a millimetre less than the overlap
     // needs: still one.
     const task::Task t = load("ring-around-path");
-    const auto proof = synth::prove_obstacle_infeasible(t);
+    const auto proof = prove::prove_obstacle_infeasible(t);
     REQUIRE(proof);
     REQUIRE(proof->separation);
     const auto& w = proof->separation->walls.at(0);
-    const auto kinds = synth::wall_changes(t, *proof, 100);
+    const auto kinds = explanation::wall_changes(t, *proof, 100);
     for (const auto& c : kinds[1]) {
         const auto [i, j] = widened_pair(c.change);
         INFO(c.change);
@@ -116,7 +117,7 @@ TEST_CASE("a gap as wide as the tube plus the margin lets a ring's proof go", "[
         task::Task short_of = t;
         short_of.obstacles[moved].center += (overlap_depth - 0.001) * u;
         if (std::find(w.cycle.begin(), w.cycle.end(), moved) != w.cycle.end())
-            CHECK(synth::prove_obstacle_infeasible(short_of));
+            CHECK(prove::prove_obstacle_infeasible(short_of));
     }
 }
 
@@ -125,9 +126,9 @@ TEST_CASE("explain suggests removing an obstacle, widening a gap and moving the 
     for (const std::string name : {"ring-around-path", "long-wall"}) {
         INFO(name);
         const task::Task t = load(name);
-        const auto proof = synth::prove_infeasible(t, 10.0);
+        const auto proof = explanation::prove_infeasible(t, 10.0);
         REQUIRE(proof.proved);
-        const auto suggestions = synth::suggest_relaxations(t, proof.core, 2.0, 60.0);
+        const auto suggestions = explanation::suggest_relaxations(t, proof.core, 2.0, 60.0);
         const auto with = [&](const std::string& start) {
             return std::find_if(suggestions.begin(), suggestions.end(),
                                 [&](const auto& r) { return r.change.rfind(start, 0) == 0; });
@@ -137,8 +138,8 @@ TEST_CASE("explain suggests removing an obstacle, widening a gap and moving the 
             INFO(kind);
             const auto it = with(kind);
             REQUIRE(it != suggestions.end());
-            CHECK_FALSE(synth::prove_obstacle_infeasible(it->relaxed));
-            CHECK_FALSE(synth::prove_infeasible(it->relaxed, 10.0).proved);
+            CHECK_FALSE(prove::prove_obstacle_infeasible(it->relaxed));
+            CHECK_FALSE(explanation::prove_infeasible(it->relaxed, 10.0).proved);
         }
     }
 }

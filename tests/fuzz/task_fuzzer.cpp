@@ -62,13 +62,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using modsynth::task::RobotKey;
     using modsynth::task::TaskPart;
     for (std::size_t j = 0; j < task.trajectory.size() && j < 8; ++j)
-        (void)modsynth::synth::describe_part(task, TaskPart::primitive(task, static_cast<int>(j)));
+        (void)modsynth::prove::describe_part(task, TaskPart::primitive(task, static_cast<int>(j)));
     for (std::size_t i = 0; i < task.obstacles.size() && i < 8; ++i)
-        (void)modsynth::synth::describe_part(task, TaskPart::obstacle(static_cast<int>(i)));
+        (void)modsynth::prove::describe_part(task, TaskPart::obstacle(static_cast<int>(i)));
     for (const TaskPart& part :
          {TaskPart::base_regions(), TaskPart::robot(RobotKey::MaxLinkLength),
           TaskPart::robot(RobotKey::MinLinkLength), TaskPart::robot(RobotKey::LinkDiameter),
           TaskPart::robot(RobotKey::Dof)})
-        (void)modsynth::synth::describe_part(task, part);
+        (void)modsynth::prove::describe_part(task, part);
     return 0;
 }

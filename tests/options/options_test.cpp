@@ -243,7 +243,7 @@ TEST_CASE("initial guess options: defaults valid, each bad field named", "[optio
 }
 
 TEST_CASE("relaxation options: defaults valid, each bad field named", "[options][explain]") {
-    using O = synth::RelaxationOptions;
+    using O = explanation::RelaxationOptions;
     check_options<O>({
         {"RelaxationOptions::check_seconds", [](O& o) { o.check_seconds = 0.0; }},
         {"RelaxationOptions::longest_link", [](O& o) { o.longest_link = kNaN; }},
@@ -257,7 +257,7 @@ TEST_CASE("relaxation options: defaults valid, each bad field named", "[options]
     });
     O bad;
     bad.check_seconds = -1.0;
-    CHECK_THROWS_WITH(synth::suggest_relaxations(
+    CHECK_THROWS_WITH(explanation::suggest_relaxations(
                           testing::line_task(),
                           {task::TaskPart::robot(task::RobotKey::MaxLinkLength)}, 1.0, 1.0, bad),
                       Catch::Contains("RelaxationOptions::check_seconds"));

@@ -13,7 +13,7 @@
 
 using namespace modsynth;
 using geometry::Vec2;
-using Outcome = synth::BranchAndBoundResult::Outcome;
+using Outcome = prove::BranchAndBoundResult::Outcome;
 
 namespace {
 
@@ -40,8 +40,8 @@ task::Task zigzag(double top_a = 0.25, double bottom_b = -0.25) {
     return t;
 }
 
-synth::BranchAndBoundOptions generous() {
-    synth::BranchAndBoundOptions o;
+prove::BranchAndBoundOptions generous() {
+    prove::BranchAndBoundOptions o;
     o.time_limit = 30.0;
     o.max_boxes = 5000000;
     return o;
@@ -50,21 +50,21 @@ synth::BranchAndBoundOptions generous() {
 }  // namespace
 
 TEST_CASE("branch and bound options are validated", "[bnb]") {
-    synth::BranchAndBoundOptions o;
+    prove::BranchAndBoundOptions o;
     std::string error;
     CHECK(o.IsValid(&error));
     o.delta = 0.0;
     CHECK_FALSE(o.IsValid(&error));
     CHECK(error.find("BranchAndBoundOptions::delta") != std::string::npos);
-    CHECK_THROWS_AS(synth::branch_and_bound(zigzag(), synth::all_obstacles(zigzag()), o),
+    CHECK_THROWS_AS(prove::branch_and_bound(zigzag(), prove::all_obstacles(zigzag()), o),
                     std::invalid_argument);
 }
 
 TEST_CASE("branch and bound proves a corridor with two bends closed to two joints", "[bnb][slow]") {
     const task::Task t = zigzag();
     // Neither a wall nor a detour proves it.
-    REQUIRE_FALSE(synth::prove_obstacle_infeasible(t).has_value());
-    const auto r = synth::branch_and_bound(t, synth::all_obstacles(t), generous());
+    REQUIRE_FALSE(prove::prove_obstacle_infeasible(t).has_value());
+    const auto r = prove::branch_and_bound(t, prove::all_obstacles(t), generous());
     INFO("boxes " << r.boxes << ", " << r.seconds << " s");
     REQUIRE(r.outcome == Outcome::Infeasible);
     CHECK(!r.obstacles.empty());
@@ -78,7 +78,7 @@ TEST_CASE("branch and bound finds a box when the corridor needs one bend", "[bnb
     open.obstacles.clear();
     post_row(open, 0.3, -1.5, 0.25);
     post_row(open, 0.55, -1.5, 0.25);
-    const auto r = synth::branch_and_bound(open, synth::all_obstacles(open), generous());
+    const auto r = prove::branch_and_bound(open, prove::all_obstacles(open), generous());
     REQUIRE(r.outcome == Outcome::Box);
     REQUIRE(r.box.has_value());
     CHECK(r.violation < 4 * generous().delta);
@@ -94,9 +94,9 @@ TEST_CASE("branch and bound never refutes a planted 2-joint task", "[bnb][slow]"
             if (name.rfind("p2-", 0) != 0 || name.find(".task.json") == std::string::npos) continue;
             task::Task t = io::load_task(f.path().string());
             t.robot.dof = {2};
-            synth::BranchAndBoundOptions o;
+            prove::BranchAndBoundOptions o;
             o.time_limit = 3.0;
-            const auto r = synth::branch_and_bound(t, synth::all_obstacles(t), o);
+            const auto r = prove::branch_and_bound(t, prove::all_obstacles(t), o);
             INFO(name << ": boxes " << r.boxes);
             CHECK(r.outcome != Outcome::Infeasible);
             ++tried;
@@ -149,12 +149,12 @@ TEST_CASE("branch and bound proves random two-bend corridors and never one-bend 
     for (unsigned seed = 1; seed <= 4; ++seed) {
         INFO("seed " << seed);
         const task::Task closed = random_zigzag(seed, false);
-        const auto r = synth::branch_and_bound(closed, synth::all_obstacles(closed), generous());
+        const auto r = prove::branch_and_bound(closed, prove::all_obstacles(closed), generous());
         CHECK(r.outcome == Outcome::Infeasible);
         // Moving the second wall's opening to the first one's side opens a
         // way with one bend: the proof must go.
         const task::Task open = random_zigzag(seed, true);
-        const auto q = synth::branch_and_bound(open, synth::all_obstacles(open), generous());
+        const auto q = prove::branch_and_bound(open, prove::all_obstacles(open), generous());
         CHECK(q.outcome == Outcome::Box);
     }
 }
@@ -181,7 +181,7 @@ TEST_CASE("a 2-joint search answers infeasible from the branch and bound, naming
     // With 3 joints allowed the 2-joint proof says nothing.
     task::Task more = t;
     more.robot.dof = {2, 3};
-    CHECK_FALSE(synth::prove_two_joint_infeasible(more, {}).has_value());
+    CHECK_FALSE(prove::prove_two_joint_infeasible(more, {}).has_value());
 }
 
 namespace {
@@ -199,12 +199,12 @@ std::vector<int> core_obstacles(const std::vector<task::TaskPart>& core) {
 // budget no loaded machine exhausts, so that "no proof" is the obstacles'
 // doing, not the clock's).
 void check_minimal(const task::Task& t, const std::vector<int>& keep) {
-    const auto all = synth::branch_and_bound(t, keep, generous());
+    const auto all = prove::branch_and_bound(t, keep, generous());
     CHECK(all.outcome == Outcome::Infeasible);
     for (std::size_t k = 0; k < keep.size(); ++k) {
         std::vector<int> fewer = keep;
         fewer.erase(fewer.begin() + static_cast<long>(k));
-        const auto r = synth::branch_and_bound(t, fewer, generous());
+        const auto r = prove::branch_and_bound(t, fewer, generous());
         INFO("without obstacle " << keep[k] << ": boxes " << r.boxes << ", " << r.seconds << " s");
         CHECK(r.outcome != Outcome::Infeasible);
     }
@@ -218,18 +218,18 @@ TEST_CASE("the 2-joint proof's core is minimal: without any obstacle listed the 
     // search that ends in a box, and on zigzag() those take minutes in all.
     for (const task::Task& t : {random_zigzag(1, false)}) {
         INFO(t.name);
-        synth::BranchAndBoundOptions unshrunk = generous();
+        prove::BranchAndBoundOptions unshrunk = generous();
         unshrunk.core_time_limit = 0.0;
-        const auto before = synth::prove_two_joint_infeasible(t, unshrunk);
+        const auto before = prove::prove_two_joint_infeasible(t, unshrunk);
         REQUIRE(before.has_value());
         CHECK_FALSE(before->minimal);
         CHECK(before->message.find("core not minimised within the time limit") !=
               std::string::npos);
 
-        synth::BranchAndBoundOptions shrinking = generous();
+        prove::BranchAndBoundOptions shrinking = generous();
         shrinking.core_time_limit = 300.0;
         shrinking.core_run_time_limit = 30.0;
-        const auto after = synth::prove_two_joint_infeasible(t, shrinking);
+        const auto after = prove::prove_two_joint_infeasible(t, shrinking);
         REQUIRE(after.has_value());
         REQUIRE(after->minimal);
         CHECK(after->message.find("not minimised") == std::string::npos);
@@ -244,20 +244,20 @@ TEST_CASE("the 2-joint proof's core is minimal: without any obstacle listed the 
 
 TEST_CASE("a 2-joint proof out of time to shrink keeps a sound core and says so", "[bnb][slow]") {
     const task::Task t = zigzag();
-    synth::BranchAndBoundOptions o = generous();
+    prove::BranchAndBoundOptions o = generous();
     // Far less than the proof itself takes: no time is left to shrink.
     o.core_time_limit = 1e-6;
-    const auto p = synth::prove_two_joint_infeasible(t, o);
+    const auto p = prove::prove_two_joint_infeasible(t, o);
     REQUIRE(p.has_value());
     CHECK_FALSE(p->minimal);
     CHECK(p->message.find("core not minimised within the time limit") != std::string::npos);
     // What it lists still proves the task.
-    const auto r = synth::branch_and_bound(t, core_obstacles(p->core), generous());
+    const auto r = prove::branch_and_bound(t, core_obstacles(p->core), generous());
     CHECK(r.outcome == Outcome::Infeasible);
 }
 
 TEST_CASE("branch and bound core options are validated", "[bnb]") {
-    synth::BranchAndBoundOptions o;
+    prove::BranchAndBoundOptions o;
     std::string error;
     o.core_time_limit = -1.0;
     CHECK_FALSE(o.IsValid(&error));

@@ -73,7 +73,7 @@ double seconds(const std::chrono::steady_clock::time_point t0) {
 TEST_CASE("a ring of posts around the path is a closed wall", "[walls]") {
     const task::Task t = load("ring-around-path");
     const auto t0 = std::chrono::steady_clock::now();
-    const auto proof = synth::prove_obstacle_infeasible(t);
+    const auto proof = prove::prove_obstacle_infeasible(t);
     const double took = seconds(t0);
     REQUIRE(proof);
     REQUIRE(proof->separation);
@@ -93,18 +93,18 @@ TEST_CASE("a ring of posts around the path is a closed wall", "[walls]") {
     // disc covers its inner part: still separated, cell by cell.
     task::Task across = t;
     across.base_regions = {{{0.66, 0.28}, {0.78, 0.32}}};
-    const auto still = synth::prove_obstacle_infeasible(across);
+    const auto still = prove::prove_obstacle_infeasible(across);
     REQUIRE(still);
     REQUIRE(still->separation);
     CHECK(testing::check_separation_witness(across, *still->separation).empty());
     // Past the disc, into the ring: not any more.
     across.base_regions = {{{0.60, 0.28}, {0.78, 0.32}}};
-    CHECK_FALSE(synth::prove_obstacle_infeasible(across));
+    CHECK_FALSE(prove::prove_obstacle_infeasible(across));
 }
 
 TEST_CASE("an open sieve whose gaps are narrower than the tube is a closed wall", "[walls]") {
     const task::Task t = load("sieve-around-path");
-    const auto proof = synth::prove_obstacle_infeasible(t);
+    const auto proof = prove::prove_obstacle_infeasible(t);
     REQUIRE(proof);
     REQUIRE(proof->separation);
     CHECK(testing::check_separation_witness(t, *proof->separation).empty());
@@ -114,13 +114,13 @@ TEST_CASE("an open sieve whose gaps are narrower than the tube is a closed wall"
     // Posts apart in the task, closed only by the tube: a thinner one passes.
     task::Task thin = t;
     thin.robot.link_diameter = 0.02;
-    CHECK_FALSE(synth::prove_obstacle_infeasible(thin));
+    CHECK_FALSE(prove::prove_obstacle_infeasible(thin));
 }
 
 TEST_CASE("a long wall whose way around is beyond reach", "[walls]") {
     const task::Task t = load("long-wall");
     const auto t0 = std::chrono::steady_clock::now();
-    const auto proof = synth::prove_obstacle_infeasible(t);
+    const auto proof = prove::prove_obstacle_infeasible(t);
     const double took = seconds(t0);
     REQUIRE(proof);
     REQUIRE(proof->geodesic);
@@ -144,24 +144,24 @@ TEST_CASE("removing any obstacle of a core breaks its proof", "[walls]") {
     for (const char* name : {"ring-around-path", "sieve-around-path", "long-wall"}) {
         INFO(name);
         const task::Task t = load(name);
-        const auto proof = synth::prove_obstacle_infeasible(t);
+        const auto proof = prove::prove_obstacle_infeasible(t);
         REQUIRE(proof);
         const auto core = core_obstacles(proof->core);
         const bool separation = proof->separation.has_value();
-        CHECK((separation ? synth::prove_separation(t, core).has_value()
-                          : synth::prove_geodesic_reach(t, core).has_value()));
+        CHECK((separation ? prove::prove_separation(t, core).has_value()
+                          : prove::prove_geodesic_reach(t, core).has_value()));
         for (int k : core) {
             std::vector<int> fewer;
             for (int i : core)
                 if (i != k) fewer.push_back(i);
             INFO("without obstacles[" << k << "]");
-            CHECK_FALSE((separation ? synth::prove_separation(t, fewer).has_value()
-                                    : synth::prove_geodesic_reach(t, fewer).has_value()));
+            CHECK_FALSE((separation ? prove::prove_separation(t, fewer).has_value()
+                                    : prove::prove_geodesic_reach(t, fewer).has_value()));
             // And in the task itself: only the rest of the core is left.
             task::Task rest = t;
             rest.obstacles.clear();
             for (int i : fewer) rest.obstacles.push_back(t.obstacles[i]);
-            CHECK_FALSE(synth::prove_obstacle_infeasible(rest));
+            CHECK_FALSE(prove::prove_obstacle_infeasible(rest));
         }
     }
 }
@@ -190,7 +190,7 @@ TEST_CASE("the witnesses travel in the solution JSON and still check after readi
 
 TEST_CASE("explain states the wall", "[walls]") {
     const task::Task t = load("sieve-around-path");
-    const auto proof = synth::prove_infeasible(t, 10.0);
+    const auto proof = explanation::prove_infeasible(t, 10.0);
     REQUIRE(proof.proved);
     CHECK(proof.message.find("form a closed wall") != std::string::npos);
     REQUIRE(proof.separation);
@@ -221,14 +221,14 @@ TEST_CASE("rings: a wall exactly when every gap is narrower than the tube", "[wa
         if (!valid || std::abs(widest - t.robot.link_diameter) < 1e-6) continue;
         const bool closed = widest < t.robot.link_diameter;
         INFO("trial " << trial << ": widest gap " << widest);
-        const auto proof = synth::prove_obstacle_infeasible(t);
+        const auto proof = prove::prove_obstacle_infeasible(t);
         CHECK(proof.has_value() == closed);
         if (proof && proof->separation)
             CHECK(testing::check_separation_witness(t, *proof->separation).empty());
         // The base moved inside the ring: base and path on one side.
         task::Task inside = t;
         inside.base_regions = {{{0.47, 0.27}, {0.53, 0.33}}};
-        CHECK_FALSE(synth::prove_obstacle_infeasible(inside));
+        CHECK_FALSE(prove::prove_obstacle_infeasible(inside));
         (closed ? walls : open) += 1;
     }
     CHECK(walls > 30);
@@ -258,15 +258,15 @@ TEST_CASE("walls: a detour proof exactly when the way around is beyond reach",
         if (lower > reach + 1e-6 || upper < reach - 1e-6) {
             const bool far = lower > reach;
             INFO("trial " << trial << ": half " << half << ", reach " << reach);
-            const auto proof = synth::prove_obstacle_infeasible(t);
+            const auto proof = prove::prove_obstacle_infeasible(t);
             if (far) {
                 REQUIRE(proof);
                 REQUIRE(proof->geodesic);
                 CHECK(proof->geodesic->detours[0].lower_bound > reach);
                 CHECK(testing::check_geodesic_witness(t, *proof->geodesic).empty());
                 // With every obstacle, the bound is at least the way over the end.
-                const auto discs = synth::no_go_discs(t, synth::all_obstacles(t));
-                CHECK(synth::geodesic_distance(discs, t.base_regions[0].min, t.base_regions[0].max,
+                const auto discs = prove::no_go_discs(t, prove::all_obstacles(t));
+                CHECK(prove::geodesic_distance(discs, t.base_regions[0].min, t.base_regions[0].max,
                                                proof->geodesic->detours[0].point) >= lower - 1e-9);
                 ++proved;
             } else {
@@ -287,8 +287,8 @@ TEST_CASE("the detour bound never exceeds a way the roadmap finds", "[walls][pro
         for (int k = 0; k < 8; ++k) t.obstacles.push_back({{u(rng), u(rng)}, 0.03 + 0.1 * u(rng)});
         const task::BaseRegion region{{-0.3, -0.3}, {-0.2, -0.1}};
         const Vec2 p(1.2, 1.1);
-        const auto discs = synth::no_go_discs(t, synth::all_obstacles(t));
-        const double bound = synth::geodesic_distance(discs, region.min, region.max, p);
+        const auto discs = prove::no_go_discs(t, prove::all_obstacles(t));
+        const double bound = prove::geodesic_distance(discs, region.min, region.max, p);
         const double found = testing::roadmap_distance(t, region, p, 64);
         INFO("trial " << trial);
         CHECK(bound <= found + 1e-9);
@@ -313,7 +313,7 @@ TEST_CASE("no planted feasible task is proved infeasible by its obstacles", "[wa
                 continue;  // not a task (a solution, a fixture of another kind)
             }
             INFO(path);
-            CHECK_FALSE(synth::prove_obstacle_infeasible(t));
+            CHECK_FALSE(prove::prove_obstacle_infeasible(t));
             ++checked;
         }
     }

@@ -9,11 +9,11 @@
 
 namespace modsynth::testing {
 
-std::string check_separation_witness(const task::Task& task, const synth::SeparationWitness& w);
+std::string check_separation_witness(const task::Task& task, const prove::SeparationWitness& w);
 
 /// Also searches a roadmap of its own (points around every no-go circle and
 /// across the base region) for a way shorter than the claimed lower bound.
-std::string check_geodesic_witness(const task::Task& task, const synth::GeodesicWitness& w);
+std::string check_geodesic_witness(const task::Task& task, const prove::GeodesicWitness& w);
 
 /// The shortest way the roadmap finds from the region to p (an upper bound
 /// on the true shortest way from some point of the region).

@@ -160,7 +160,7 @@ TEST_CASE("a long path out of reach is proved infeasible well within a 10 s limi
     t.base_regions.push_back({geometry::Vec2(-0.08, -0.08), geometry::Vec2(0.08, 0.08)});
     t.robot.dof = {2, 3};
     t.robot.max_link_length = 0.15;
-    REQUIRE_FALSE(synth::out_of_reach_core(t));
+    REQUIRE_FALSE(prove::out_of_reach_core(t));
     synth::SynthesisOptions options;
     options.time_limit = 10.0;
     const synth::Solution s = synth::synthesize(t, options);

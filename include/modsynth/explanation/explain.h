@@ -29,11 +29,11 @@ struct Explanation {
     std::vector<task::TaskPart> core;
     /// The data of an obstacle proof (formats.md, "explanation.separation",
     /// ".geodesic"), when the task was proved infeasible that way.
-    std::optional<synth::SeparationWitness> separation;
-    std::optional<synth::GeodesicWitness> geodesic;
+    std::optional<prove::SeparationWitness> separation;
+    std::optional<prove::GeodesicWitness> geodesic;
     /// When proved infeasible: the smallest changes of one part each that
     /// remove the conflict, each re-checked with the full pipeline.
-    std::vector<synth::Relaxation> suggestions;
+    std::vector<Relaxation> suggestions;
 };
 
 struct ExplainOptions {

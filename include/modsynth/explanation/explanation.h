@@ -11,7 +11,7 @@
 #include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 
-namespace modsynth::synth {
+namespace modsynth::explanation {
 
 struct InfeasibilityProof {
     bool proved = false;
@@ -23,8 +23,8 @@ struct InfeasibilityProof {
     /// When proved: the proof in words, and the witnesses of an obstacle
     /// proof (then `core` is that proof's).
     std::string message;
-    std::optional<SeparationWitness> separation;
-    std::optional<GeodesicWitness> geodesic;
+    std::optional<prove::SeparationWitness> separation;
+    std::optional<prove::GeodesicWitness> geodesic;
 };
 
 /// The provers of solve (provers.h), in the same order, then the front
@@ -35,7 +35,7 @@ InfeasibilityProof prove_infeasible(const task::Task& task, double time_limit);
 /// What `explain` says: a proof in words ("Proved infeasible: ..."), or
 /// without a proof what a full run `s` found.
 std::string proved_message(const InfeasibilityProof& proof);
-std::string unproved_message(const InfeasibilityProof& proof, const Solution& s);
+std::string unproved_message(const InfeasibilityProof& proof, const synth::Solution& s);
 
 struct Relaxation {
     task::TaskPart part;  ///< the core part it changes
@@ -43,7 +43,7 @@ struct Relaxation {
     task::Task relaxed;   ///< the task with the change applied
     /// The full pipeline on the relaxed task: what it concluded, and the
     /// same in a sentence ("solved: 2 joints, links ..." or why not).
-    Status status;
+    synth::Status status;
     std::string outcome;
 };
 
@@ -85,4 +85,4 @@ std::vector<Relaxation> suggest_relaxations(const task::Task& task,
                                             double solve_seconds, double time_limit = 1e6,
                                             const RelaxationOptions& options = {});
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::explanation

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace modsynth::synth {
+namespace modsynth::explanation {
 
 struct WallChange {
     task::TaskPart part;  ///< the task part it changes (obstacles[3], base_regions)
@@ -31,7 +31,7 @@ constexpr double kGapMargin = 0.002;
 /// base region (keeping its size): inside the wall, to the path's side of
 /// it, or along the detour to where the rest of the way is within reach.
 /// At most `per_kind` candidates of each kind.
-std::vector<std::vector<WallChange>> wall_changes(const task::Task& task, const Proof& proof,
+std::vector<std::vector<WallChange>> wall_changes(const task::Task& task, const prove::Proof& proof,
                                                   std::size_t per_kind = 3);
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::explanation

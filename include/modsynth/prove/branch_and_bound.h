@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 struct BranchAndBoundOptions {
     /// m: a design box whose sides are all at most delta, and that no check
@@ -105,4 +105,4 @@ BranchAndBoundResult branch_and_bound(const task::Task& task, const std::vector<
                                       const BranchAndBoundOptions& options = {},
                                       run::Deadline deadline = {});
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

@@ -8,7 +8,7 @@
 #include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 /// One sentence naming what conflicts.
 std::string describe_conflict(const task::Task& task, const std::vector<task::TaskPart>& core);
@@ -23,4 +23,4 @@ std::string listing(const std::vector<std::string>& items, const char* last = " 
 /// The joint counts the task allows, in words: "2 or 3".
 std::string joint_counts(const task::Task& task);
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

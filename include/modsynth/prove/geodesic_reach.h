@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 /// For every base region, a path point whose distance through the free
 /// space (of the listed obstacles) from the region exceeds the reach;
@@ -52,4 +52,4 @@ double geodesic_distance(const std::vector<NoGoDisc>& discs, const geometry::Vec
                          const geometry::Vec2& hi, const geometry::Vec2& p,
                          std::vector<RouteStep>* route = nullptr);
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 struct NoGoDisc {
     geometry::Vec2 center = geometry::Vec2::Zero();
@@ -21,13 +21,13 @@ struct NoGoDisc {
 constexpr double kNoGoSlack = 1e-9;
 
 /// Sizes beyond which the obstacle proofs are not tried, so that they stay
-/// a matter of milliseconds before the front stage (src/synth/obstacle_proof.cpp).
+/// a matter of milliseconds before the front stage (src/prove/obstacle_proof.cpp).
 constexpr std::size_t kMaxPathPoints = 24;
 constexpr std::size_t kMaxWallObstacles = 400;
 constexpr std::size_t kMaxDetourObstacles = 120;
 constexpr std::size_t kMaxProofRegions = 10;
 /// The 2-joint branch and bound only looks at the discs near each design
-/// box, so it copes with more (src/synth/branch_and_bound.cpp).
+/// box, so it copes with more (src/prove/branch_and_bound.cpp).
 constexpr std::size_t kMaxBranchObstacles = 200;
 
 /// The no-go discs of the listed obstacles.
@@ -52,4 +52,4 @@ std::vector<PathPoint> path_points(const task::Task& task);
 /// Whether p is outside every disc by more than kNoGoSlack.
 bool free_point(const std::vector<NoGoDisc>& discs, const geometry::Vec2& p);
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 /// A proof when the obstacles make the task infeasible in one of these two
 /// ways (always minimal, with its witness); nullopt otherwise (also when the path itself runs into
@@ -37,4 +37,4 @@ std::optional<Proof> prove_two_joint_infeasible(const task::Task& task,
 /// "0-8", "2, 5, 7-9": obstacle indices in words.
 std::string index_ranges(std::vector<int> indices);
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

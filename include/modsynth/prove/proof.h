@@ -9,7 +9,7 @@
 #include <modsynth/prove/wall_witness.h>
 #include <modsynth/task/part.h>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 struct Proof {
     /// The task parts the proof needs, minimal where `minimal` says so:
@@ -24,4 +24,4 @@ struct Proof {
     std::optional<GeodesicWitness> geodesic;
 };
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

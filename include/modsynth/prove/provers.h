@@ -12,7 +12,7 @@
 #include <modsynth/run/deadline.h>
 #include <modsynth/task/task.h>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 struct Prover {
     const char* name;  ///< how progress names it: "reach", "obstacles"
@@ -25,4 +25,4 @@ struct Prover {
 /// when its time_limit is 0).
 std::vector<Prover> provers(const BranchAndBoundOptions& two_joint);
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

@@ -12,7 +12,7 @@
 #include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 /// The core of such a proof for the primitive farthest out of reach:
 /// robot.max_link_length, base_regions and that primitive's part name (a
@@ -21,4 +21,4 @@ namespace modsynth::synth {
 /// as far as the bound can tell, and for tasks without base regions.
 std::optional<std::vector<task::TaskPart>> out_of_reach_core(const task::Task& task);
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 /// A wall for every base region, using only the listed obstacles (each
 /// wall the shortest such cycle found); nullopt when there is none, or when
@@ -23,4 +23,4 @@ std::optional<SeparationWitness> prove_separation(const task::Task& task,
 /// centres, a region cell at a time where the polygon crosses the region.
 bool wall_separates(const task::Task& task, const Wall& wall);
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

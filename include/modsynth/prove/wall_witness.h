@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 /// A closed wall: obstacles whose tubes' no-go discs (radius + link_diameter
 /// / 2) overlap in a cycle, so that the polygon through their centres lies
@@ -51,4 +51,4 @@ struct GeodesicWitness {
     std::vector<Detour> detours;  ///< one per base region
 };
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

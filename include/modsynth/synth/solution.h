@@ -19,8 +19,8 @@ struct Explanation {
     std::vector<task::TaskPart> core;  ///< the task parts involved
     /// The data of an obstacle proof, when the task was proved infeasible
     /// that way (formats.md, "explanation.separation", ".geodesic").
-    std::optional<SeparationWitness> separation;
-    std::optional<GeodesicWitness> geodesic;
+    std::optional<prove::SeparationWitness> separation;
+    std::optional<prove::GeodesicWitness> geodesic;
 };
 
 struct Solution {

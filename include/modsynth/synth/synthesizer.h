@@ -43,8 +43,8 @@ struct SynthesisOptions {
     /// started, so that a walled-in task is answered within 2 s in all (the
     /// shrinking took every second it was given). `explain` shrinks a core
     /// with its own, longer budget.
-    BranchAndBoundOptions branch_and_bound = [] {
-        BranchAndBoundOptions o;
+    prove::BranchAndBoundOptions branch_and_bound = [] {
+        prove::BranchAndBoundOptions o;
         o.core_time_limit = 0.75 * o.time_limit;
         return o;
     }();
