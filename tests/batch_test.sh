@@ -39,6 +39,8 @@ rose = by_name["rose.json"]
 assert rose["status"] == "solved" and rose["exit_code"] == 0, rose
 assert rose["dof"] == 2 and 0.1 < rose["total_link_length"] < 3.0, rose
 assert rose["clearance_margin"] is not None and rose["clearance_margin"] >= 0, rose
+assert rose["motion_seconds"] is not None and rose["motion_seconds"] > 0, rose
+assert bad["motion_seconds"] is None, bad
 assert os.path.isfile(rose["solution"]), rose
 # Stage seconds come from the run's summary line: each one a share of the run.
 stages = [rose[k] for k in ("front_seconds", "refine_seconds", "verify_seconds")]

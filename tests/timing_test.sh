@@ -156,6 +156,38 @@ check_task strokes-two-circles "$tmp/strokes.json"
 with_limits "$root/tasks/strokes-around-post.json" "$tmp/post.json" '{"velocity": 3.35, "acceleration": 10}'
 check_task strokes-around-post "$tmp/post.json"
 
+# Jerk limits (docs/formats.md): the contract's rules hold, and this test's
+# own finite differences of qdd over t stay within the jerk limit, with qd
+# consistent with qdd and qdd 0 at both ends. The smooth s-wave does not
+# stop on the way.
+with_limits "$root/tasks/s-wave.json" "$tmp/wave.json" '{"velocity": 1.2, "acceleration": 3, "jerk": 30}'
+check_task s-wave "$tmp/wave.json"
+python3 - "$tmp/s-wave/solution.json" <<'PY' || fail "s-wave: the jerk rules or the stops: see above"
+import json, sys
+samples = json.load(open(sys.argv[1]))["samples"]
+J = 30.0
+for i in range(1, len(samples)):
+    a, b = samples[i - 1], samples[i]
+    dt = b["t"] - a["t"]
+    for k in range(len(b["q"])):
+        assert abs(b["qdd"][k] - a["qdd"][k]) / dt <= J * (1 + 1e-6) + 1e-6 / dt, ("jerk", i, k)
+        rate = (b["qd"][k] - a["qd"][k]) / dt
+        assert abs(rate - (a["qdd"][k] + b["qdd"][k]) / 2) <= J * dt / 4 + 1e-6, ("qd against qdd", i, k)
+for s in (samples[0], samples[-1]):
+    assert max(abs(v) for v in s["qdd"]) <= 1e-9, "qdd is not 0 at an end"
+inside = [i for i, s in enumerate(samples[1:-1], 1) if max(abs(v) for v in s["qd"]) <= 1e-9]
+assert not inside, ("stops inside a smooth path", inside)
+PY
+grep -q 'id="chart-jerk"' "$tmp/s-wave/r.html" || fail "s-wave: the report has no jerk chart"
+
+# --ee-speed: the tool runs at that speed, and the summary says where the
+# limits force it slower.
+with_limits "$root/tasks/rose.json" "$tmp/even.json" '{"velocity": 1.2, "acceleration": 3}'
+"$bin" solve "$tmp/even.json" -o "$tmp/even-solution.json" --quiet --ee-speed 0.08 >"$tmp/even.out" 2>&1 ||
+    fail "solve --ee-speed: $(tail -3 "$tmp/even.out")"
+grep -q "tool at 0.080 m/s along the path" "$tmp/even.out" || fail "no tool speed line: $(cat "$tmp/even.out")"
+grep -q "trajectory\[4\] at" "$tmp/even.out" || fail "no slower stretch named: $(cat "$tmp/even.out")"
+
 if [ -f "$planter" ]; then
     python3 "$planter" --kind 2dof --seed 7 --out "$tmp/planted" >/dev/null ||
         fail "plant.py failed"

@@ -13,6 +13,7 @@
 #include <modsynth/synth/solution.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/part.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth {
@@ -23,6 +24,7 @@ using run::ProgressSink;
 using synth::Solution;
 using synth::Status;
 using task::InputError;
+using task::SpatialTask;
 using task::Task;
 using task::TaskPart;
 using verify::Certificate;
@@ -32,6 +34,14 @@ using verify::Certificate;
 Task read_task(std::string_view json_text);
 /// The same from a file; an unreadable file is an InputError too.
 Task load_task(const std::string& path);
+
+/// Whether a task document (JSON text) is a spatial task, `"space": "3d"`
+/// (docs/formats.md "Spatial tasks"), which read_task refuses by name.
+/// Throws InputError when the text is not JSON.
+bool is_spatial_task(std::string_view json_text);
+/// A spatial task document, validated; InputError naming the offending part.
+SpatialTask read_spatial_task(std::string_view json_text);
+SpatialTask load_spatial_task(const std::string& path);
 
 struct SolveOptions {
     double time_limit = 60.0;  ///< seconds for the whole synthesis; > 0
@@ -58,6 +68,9 @@ Explanation explain(const Task& task, double time_limit = 60.0, double solve_sec
 /// independently of how it was made (docs/verification.md). A solution
 /// that is not "solved" gets a certificate that is not ok.
 Certificate certify(const Task& task, const Solution& solution);
+/// The same for a spatial task, whose solution carries a DH robot
+/// (Solution::dh_robot; an InputError when it does not).
+Certificate certify(const SpatialTask& task, const Solution& solution);
 
 /// A solution as a modsynth-solution/1 document, and back (the reader
 /// throws InputError naming the part).

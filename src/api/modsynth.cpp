@@ -2,7 +2,10 @@
 
 #include <utility>
 
+#include <modsynth/io/input.h>
 #include <modsynth/io/solution_io.h>
+#include <modsynth/io/spatial_task_io.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/output/recertify.h>
 #include <modsynth/synth/solve.h>
@@ -14,6 +17,16 @@ namespace modsynth {
 Task read_task(std::string_view json_text) { return io::parse_task_text(json_text); }
 
 Task load_task(const std::string& path) { return io::load_task(path); }
+
+bool is_spatial_task(std::string_view json_text) {
+    return io::is_spatial(io::parse_json_text(json_text));
+}
+
+SpatialTask read_spatial_task(std::string_view json_text) {
+    return io::parse_spatial_task_text(json_text);
+}
+
+SpatialTask load_spatial_task(const std::string& path) { return io::load_spatial_task(path); }
 
 Solution solve(const Task& task, const SolveOptions& options) {
     synth::SynthesisOptions o;
@@ -33,6 +46,13 @@ Explanation explain(const Task& task, double time_limit, double solve_seconds) {
 Certificate certify(const Task& task, const Solution& solution) {
     if (solution.status != Status::Solved) return {};
     // The same re-verification export gives a solution read from a file.
+    io::ParsedSolution parsed{solution, true};
+    output::recertify(task, parsed);
+    return std::move(parsed.solution.certificate);
+}
+
+Certificate certify(const SpatialTask& task, const Solution& solution) {
+    if (solution.status != Status::Solved) return {};
     io::ParsedSolution parsed{solution, true};
     output::recertify(task, parsed);
     return std::move(parsed.solution.certificate);

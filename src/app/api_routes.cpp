@@ -2,21 +2,26 @@
 
 #include <modsynth/drawing/import.h>
 #include <modsynth/io/input.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <regex>
 #include <sstream>
+#include <variant>
 
-#include "imported_task.h"
+#include "import_runner.h"
 #include "loopback.h"
+#include "planar_task.h"
 #include "solve_jobs.h"
 #include "stream_slots.h"
 #include "web_assets.h"
@@ -43,6 +48,10 @@ constexpr std::size_t kLongestPath = 1024;
 // Request text echoed in a reply is cut here: enough for any message the
 // routes write, never a megabyte of a body quoted back.
 constexpr std::size_t kEchoChars = 2000;
+// The placement `modsynth import` takes: --width and --scale at most this,
+// --at and --base coordinates at most this far out.
+constexpr double kLargestScale = 1e9;
+constexpr double kFarthestPoint = 1e9;
 
 std::string printable(std::string_view text) { return text::printable(text, kEchoChars); }
 
@@ -134,6 +143,7 @@ json outcome_json(const SolveOutcome& o) {
     out["dof"] = o.dof ? json(*o.dof) : json(nullptr);
     out["total_link_length"] = o.total_link_length ? json(*o.total_link_length) : json(nullptr);
     out["clearance_margin"] = o.clearance_margin ? json(*o.clearance_margin) : json(nullptr);
+    out["motion_seconds"] = o.motion_seconds ? json(*o.motion_seconds) : json(nullptr);
     return out;
 }
 
@@ -198,9 +208,10 @@ std::optional<json> read_body(const std::string& text, Response& res) {
     return std::nullopt;
 }
 
-/// A positive number from the query string; nothing when absent. Throws
-/// task::InputError naming the parameter when it is not one.
-std::optional<double> query_number(const Request& req, const char* name) {
+/// A positive number from the query string, at most `largest`; nothing when
+/// absent. Throws task::InputError naming the parameter when it is not one.
+std::optional<double> query_number(const Request& req, const char* name,
+                                   double largest = std::numeric_limits<double>::max()) {
     if (!req.has_param(name)) return std::nullopt;
     const std::string text = req.get_param_value(name);
     std::size_t used = 0;
@@ -212,14 +223,17 @@ std::optional<double> query_number(const Request& req, const char* name) {
     }
     if (used != text.size() || !std::isfinite(v) || v <= 0.0)
         throw task::InputError(name, "not a positive number: '" + printable(text) + "'");
+    if (v > largest)
+        throw task::InputError(name, text::format("%g is more than the %g allowed", v, largest));
     return v;
 }
 
 /// Comma-separated numbers from the query string, exactly `count` of them,
-/// each finite; nothing when absent. Throws task::InputError naming the
-/// parameter otherwise.
-std::optional<std::vector<double>> query_numbers(const Request& req, const char* name,
-                                                 std::size_t count) {
+/// each finite and at most `largest` in size; nothing when absent. Throws
+/// task::InputError naming the parameter otherwise.
+std::optional<std::vector<double>> query_numbers(
+    const Request& req, const char* name, std::size_t count,
+    double largest = std::numeric_limits<double>::max()) {
     if (!req.has_param(name)) return std::nullopt;
     const std::string text = req.get_param_value(name);
     std::vector<double> out;
@@ -234,7 +248,8 @@ std::optional<std::vector<double>> query_numbers(const Request& req, const char*
         } catch (const std::exception&) {
             used = 0;
         }
-        if (item.empty() || used != item.size() || !std::isfinite(v)) break;
+        if (item.empty() || used != item.size() || !std::isfinite(v) || std::abs(v) > largest)
+            break;
         out.push_back(v);
         at = comma + 1;
     }
@@ -242,18 +257,6 @@ std::optional<std::vector<double>> query_numbers(const Request& req, const char*
         throw task::InputError(name, "expected " + std::to_string(count) +
                                          " numbers separated by commas: '" + printable(text) + "'");
     return out;
-}
-
-/// The SVG matrix(a, b, c, d, e, f) of a map: x' = a x + c y + e,
-/// y' = b x + d y + f.
-json svg_matrix(const drawing::Affine& m) {
-    return {m.m(0, 0), m.m(1, 0), m.m(0, 1), m.m(1, 1), m.offset.x(), m.offset.y()};
-}
-
-/// True when the map turns the plane over (an SVG page, y down, to the
-/// task's y up).
-bool is_mirror(const drawing::Affine& a) {
-    return a.m(0, 0) * a.m(1, 1) - a.m(0, 1) * a.m(1, 0) < 0.0;
 }
 
 bool host_is_loopback(const Request& req) {
@@ -266,10 +269,12 @@ bool host_is_loopback(const Request& req) {
 
 class Routes : public std::enable_shared_from_this<Routes> {
 public:
-    Routes(SolveJobs& jobs, const ApiSettings& settings)
+    Routes(SolveJobs& jobs, const ApiSettings& settings, ImportRunner* imports)
         : jobs_(jobs),
           settings_(settings),
-          streams_(settings.max_streams, settings.max_streams_per_client) {}
+          streams_(settings.max_streams, settings.max_streams_per_client),
+          own_imports_(imports ? nullptr : std::make_unique<ImportRunner>(ImportLimits{}, "")),
+          imports_(imports ? *imports : *own_imports_) {}
 
     // Every handler holds the routes, so they live as long as the server.
     void install(httplib::Server& server) {
@@ -283,9 +288,10 @@ public:
              [self](const Request& req, Response& res, const std::string& body) {
                  self->solve(req, res, body);
              });
-        post(server, "/api/import", [](const Request& req, Response& res, const std::string& body) {
-            import_drawing(req, res, body);
-        });
+        post(server, "/api/import",
+             [self](const Request& req, Response& res, const std::string& body) {
+                 self->import_drawing(req, res, body);
+             });
         server.Get(R"(/api/jobs/([0-9a-f]+))",
                    [self](const Request& req, Response& res) { self->job(req, res); });
         server.Get(R"(/api/jobs/([0-9a-f]+)/events)",
@@ -414,14 +420,18 @@ private:
         const auto doc = read_body(body, res);
         if (!doc) return;
         try {
-            const task::Task t = io::parse_task(*doc);
-            send_json(res, 200,
-                      {{"valid", true},
-                       {"name", t.name},
-                       {"primitives", t.trajectory.size()},
-                       {"obstacles", t.obstacles.size()},
-                       {"base_regions", t.base_regions.size()},
-                       {"errors", json::array()}});
+            // A spatial task is validated too; the editor shows it read-only.
+            std::visit(
+                [&](const auto& t) {
+                    send_json(res, 200,
+                              {{"valid", true},
+                               {"name", t.name},
+                               {"primitives", t.trajectory.size()},
+                               {"obstacles", t.obstacles.size()},
+                               {"base_regions", t.base_regions.size()},
+                               {"errors", json::array()}});
+                },
+                io::parse_task_document(*doc));
         } catch (const task::InputError& e) {
             send_json(res, 200,
                       {{"valid", false},
@@ -432,25 +442,27 @@ private:
 
     /// A drawing (the file's bytes) to a task, as `modsynth import` makes
     /// it, with what a page needs to draw the original under it: the map
-    /// from the file's page (SVG pixels, y down) to task metres.
-    static void import_drawing(const Request& req, Response& res, const std::string& body) {
-        drawing::DrawingFormat format = drawing::DrawingFormat::Svg;
-        drawing::ImportOptions options;
-        task::Task base;
-        base.name = "drawing";
+    /// from the file's page (SVG pixels, y down) to task metres. The import
+    /// runs where it can be bounded and killed (import_runner.h).
+    void import_drawing(const Request& req, Response& res, const std::string& body) {
+        ImportRequest request;
+        request.body = body;
+        request.base.name = "drawing";
+        drawing::ImportOptions& options = request.options;
         try {
             const std::string f = req.has_param("format") ? req.get_param_value("format") : "";
             if (equals_ignoring_case(f, "dxf")) {
-                format = drawing::DrawingFormat::Dxf;
+                request.format = drawing::DrawingFormat::Dxf;
             } else if (!equals_ignoring_case(f, "svg")) {
                 throw task::InputError("format", "expected svg or dxf, not '" + printable(f) + "'");
             }
-            if (req.has_param("name")) base.name = req.get_param_value("name");
-            options.placement.width = query_number(req, "width");
-            options.placement.scale = query_number(req, "scale");
+            if (req.has_param("name")) request.base.name = req.get_param_value("name");
+            // The ranges `modsynth import` takes.
+            options.placement.width = query_number(req, "width", kLargestScale);
+            options.placement.scale = query_number(req, "scale", kLargestScale);
             if (options.placement.width && options.placement.scale)
                 throw task::InputError("scale", "give width or scale, not both");
-            if (const auto at = query_numbers(req, "at", 2))
+            if (const auto at = query_numbers(req, "at", 2, kFarthestPoint))
                 options.placement.at = geometry::Vec2((*at)[0], (*at)[1]);
             if (const auto r = query_numbers(req, "rotate", 1)) {
                 if (std::abs((*r)[0]) > 3600.0)
@@ -460,43 +472,28 @@ private:
             options.tolerance = query_number(req, "tolerance").value_or(options.tolerance);
             if (!(options.tolerance >= 1e-9 && options.tolerance <= 1.0))
                 throw task::InputError("tolerance", "metres within 1e-9 to 1");
-            if (const auto b = query_numbers(req, "base", 4)) {
+            if (const auto b = query_numbers(req, "base", 4, kFarthestPoint)) {
                 const auto& v = *b;
                 if (!(v[0] <= v[2]) || !(v[1] <= v[3]))
                     throw task::InputError("base", "expected xmin,ymin,xmax,ymax with min <= max");
-                base.base_regions.push_back(
+                request.base.base_regions.push_back(
                     {geometry::Vec2(v[0], v[1]), geometry::Vec2(v[2], v[3])});
             }
         } catch (const task::InputError& e) {
             return send_error(res, 400, e.what(), e.part());
         }
-        try {
-            const drawing::ImportResult r = drawing::import_drawing(body, format, options);
-            std::size_t primitives = 0;
-            for (const auto& s : r.strokes) primitives += s.size();
-            json underlay = nullptr;
-            if (r.page_size.x() > 0.0 && r.page_size.y() > 0.0) {
-                underlay = {{"width", r.page_size.x()},
-                            {"height", r.page_size.y()},
-                            {"transform", svg_matrix(r.page_to_task)},
-                            {"y_flip", is_mirror(r.page_to_task)}};
-            }
-            send_json(res, 200,
-                      {{"task", imported_task_json(r, base)},
-                       {"strokes", r.strokes.size()},
-                       {"primitives", primitives},
-                       {"obstacles", r.obstacles.size()},
-                       {"deviation", r.deviation},
-                       {"tolerance", options.tolerance},
-                       {"travel", r.travel},
-                       {"placement",
-                        {{"metres_per_unit", r.metres_per_unit},
-                         {"rotate_degrees", options.placement.rotate_degrees},
-                         {"transform", svg_matrix(r.placement)}}},
-                       {"underlay", underlay}});
-        } catch (const task::InputError& e) {
-            send_error(res, 422, e.what(), e.part());
+        const ImportReply reply = imports_.run(request);
+        if (reply.retry_later) res.set_header("Retry-After", "5");
+        if (reply.status != 200) {
+            const json& b = reply.body;
+            return send_error(
+                res, reply.status,
+                b.contains("error") && b["error"].is_string() ? b["error"].get<std::string>()
+                                                              : std::string("the import failed"),
+                b.contains("part") && b["part"].is_string() ? b["part"].get<std::string>()
+                                                            : std::string());
         }
+        send_json(res, 200, reply.body);
     }
 
     void solve(const Request& req, Response& res, const std::string& body) {
@@ -504,7 +501,7 @@ private:
         if (!doc) return;
         double time_limit = 0.0;
         try {
-            io::parse_task(*doc);
+            parse_planar_task(*doc, "serve");
             time_limit = query_number(req, "time_limit").value_or(0.0);
         } catch (const task::InputError& e) {
             send_error(res, e.part() == "time_limit" ? 400 : 422, e.what(), e.part());
@@ -637,12 +634,15 @@ private:
     SolveJobs& jobs_;
     ApiSettings settings_;
     StreamSlots streams_;
+    std::unique_ptr<ImportRunner> own_imports_;
+    ImportRunner& imports_;
 };
 
 }  // namespace
 
-void add_routes(httplib::Server& server, SolveJobs& jobs, const ApiSettings& settings) {
-    std::make_shared<Routes>(jobs, settings)->install(server);
+void add_routes(httplib::Server& server, SolveJobs& jobs, const ApiSettings& settings,
+                ImportRunner* imports) {
+    std::make_shared<Routes>(jobs, settings, imports)->install(server);
 }
 
 }  // namespace modsynth::app

@@ -11,6 +11,7 @@ class Server;
 namespace modsynth::app {
 
 class SolveJobs;
+class ImportRunner;
 
 struct ApiSettings {
     std::size_t max_body = 1 << 20;  ///< bytes; larger request bodies get 413
@@ -25,7 +26,10 @@ struct ApiSettings {
 };
 
 /// Installs the page, the API routes and the error replies on `server`.
-/// `jobs` must outlive the server's listening.
-void add_routes(httplib::Server& server, SolveJobs& jobs, const ApiSettings& settings);
+/// `jobs` and `imports` must outlive the server's listening; without
+/// `imports`, drawings are imported in this process (ImportRunner's
+/// default limits).
+void add_routes(httplib::Server& server, SolveJobs& jobs, const ApiSettings& settings,
+                ImportRunner* imports = nullptr);
 
 }  // namespace modsynth::app

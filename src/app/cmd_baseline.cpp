@@ -13,6 +13,7 @@
 
 #include "command.h"
 #include "number_checks.h"
+#include "planar_task.h"
 
 namespace modsynth::app {
 namespace {
@@ -52,7 +53,7 @@ void print_result(const task::Task& task, const baseline::BaselineResult& r) {
 }
 
 int run_baseline(BaselineArgs& a) {
-    const task::Task task = io::load_task(a.task);
+    const task::Task task = load_planar_task(a.task, "baseline");
     if (!a.quiet)
         a.options.progress = [](const run::ProgressEvent& e) {
             std::cerr << run::console_line(e) << std::endl;

@@ -3,6 +3,8 @@
 // infeasible or unknown), 1 when any run failed, 2 on bad usage.
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/task/input_error.h>
+#include <modsynth/text/format.h>
+#include <modsynth/text/printable.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -37,8 +39,9 @@ struct BatchArgs {
 };
 
 std::vector<std::string> all_tasks(const std::string& input) {
-    if (fs::is_directory(input)) return find_task_files(input);
-    if (fs::is_regular_file(input)) return read_task_list(input);
+    std::error_code ec;
+    if (fs::is_directory(input, ec)) return find_task_files(input);
+    if (fs::is_regular_file(input, ec)) return read_task_list(input);
     throw task::InputError(input, "no such folder or task list");
 }
 
@@ -115,6 +118,7 @@ nlohmann::ordered_json result_line(const std::string& path, const SolveOutcome& 
     line["dof"] = o.dof ? nlohmann::json(*o.dof) : nlohmann::json(nullptr);
     line["total_link_length"] = optional_json(o.total_link_length, 9);
     line["clearance_margin"] = optional_json(o.clearance_margin, 9);
+    line["motion_seconds"] = optional_json(o.motion_seconds, 3);
     if (!o.core.empty()) line["core"] = o.core;
     if (!o.message.empty() && o.status != synth::Status::Solved) line["message"] = o.message;
     if (o.signal != 0) line["signal"] = o.signal;
@@ -134,10 +138,11 @@ public:
         if (tty_) {
             draw("");
         } else {
-            char buf[128];
-            std::snprintf(buf, sizeof buf, "  %s: %s %.2f s", o.name.c_str(),
-                          to_string(o.status).c_str(), o.seconds);
-            draw(buf);
+            // A task's name is the task's to choose: escaped, as validate
+            // and solve print it, so that it cannot move the cursor or
+            // fake a line.
+            draw(text::format("  %s: %s %.2f s", text::printable(o.name, 80).c_str(),
+                              to_string(o.status).c_str(), o.seconds));
         }
     }
     void tick() {
@@ -223,10 +228,11 @@ private:
 int run_batch(const BatchArgs& a) {
     const Shard shard = parse_shard(a.shard);
     const std::vector<std::string> all = all_tasks(a.input);
+    std::error_code ignored;
     // Named after the path below the suite folder, so that a/x and b/x
     // keep apart and a task's files keep their names as the suite grows.
     const std::vector<std::string> names =
-        output_names(all, fs::is_directory(a.input) ? a.input : std::string());
+        output_names(all, fs::is_directory(a.input, ignored) ? a.input : std::string());
     std::optional<TempDir> scratch;
     std::string dir = a.solutions;
     if (dir.empty()) {

@@ -14,6 +14,7 @@
 
 #include "command.h"
 #include "number_checks.h"
+#include "planar_task.h"
 #include "watchdog.h"
 
 namespace modsynth::app {
@@ -95,7 +96,7 @@ void print_table(const baseline::Comparison& c, int points) {
 constexpr double kWatchdogMargin = 1.0;
 
 int run_compare(CompareArgs& a) {
-    const task::Task task = io::load_task(a.task);
+    const task::Task task = load_planar_task(a.task, "compare");
     const double limit = a.time_limit + a.options.time_limit;
     Watchdog watchdog(limit + kWatchdogMargin, [&] {
         std::fprintf(stderr, "compare: stopped after %.3g s (the two time limits) while: %s\n",

@@ -14,6 +14,7 @@
 
 #include "command.h"
 #include "number_checks.h"
+#include "planar_task.h"
 #include "watchdog.h"
 
 namespace modsynth::app {
@@ -37,7 +38,7 @@ nlohmann::json suggestion_json(const explanation::Relaxation& r) {
 // there is none, and then the suggestions (explanation/explain.h).
 int run_explain(const ExplainArgs& a) {
     const run::Stopwatch clock;
-    const task::Task task = io::load_task(a.task);
+    const task::Task task = load_planar_task(a.task, "explain");
     std::mutex mutex;  // `out` is shared with the watchdog
     nlohmann::json out;
     // What the JSON says so far: unknown until a proof or a full run answers.

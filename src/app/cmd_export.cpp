@@ -2,6 +2,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <modsynth/hardware/task_catalog.h>
 #include <modsynth/io/solution_io.h>
@@ -11,6 +13,7 @@
 #include <modsynth/synth/module_choice.h>
 
 #include "command.h"
+#include "planar_task.h"
 
 namespace modsynth::app {
 namespace {
@@ -18,6 +21,7 @@ namespace {
 struct ExportArgs {
     std::string task, solution;
     output::ExportPaths exports;
+    bool write_uncertified = false;
 };
 
 int run_export(const ExportArgs& a) {
@@ -27,7 +31,7 @@ int run_export(const ExportArgs& a) {
                      "--joint-trajectory and/or --build-sheet\n");
         return kInvalid;
     }
-    const task::Task task = io::load_task(a.task);
+    const task::Task task = load_planar_task(a.task, "export");
     const hardware::TaskCatalog catalog = hardware::catalog_for(task);
     if (!catalog.note.empty()) std::fprintf(stderr, "note: %s\n", catalog.note.c_str());
     io::ParsedSolution parsed = io::load_solution(a.solution);
@@ -37,10 +41,26 @@ int run_export(const ExportArgs& a) {
     const std::string overload = synth::overload_warning(parsed.solution);
     if (!overload.empty()) std::fprintf(stderr, "warning: %s\n", overload.c_str());
     const synth::Solution& s = parsed.solution;
-    if (s.status == synth::Status::Solved && !s.certificate.ok)
+    output::ExportPaths paths = a.exports;
+    std::vector<std::string> refused;
+    if (s.status == synth::Status::Solved && !s.certificate.ok) {
         std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),
                      output::uncertified_reason(s.certificate).c_str());
-    const auto skipped = output::write_exports(task, parsed.solution, a.exports, figures);
+        // A controller commands what these files say: a motion that fails
+        // verification is not handed to one unless the user says so.
+        if (!a.write_uncertified) {
+            for (auto [path, option] : {std::pair{&paths.csv, "--csv"},
+                                        std::pair{&paths.joint_trajectory, "--joint-trajectory"}}) {
+                if (path->empty()) continue;
+                refused.push_back(std::string(option) + " " + *path +
+                                  ": not written; the motion is not certified (give "
+                                  "--write-uncertified to write it anyway)");
+                path->clear();
+            }
+        }
+    }
+    auto skipped = output::write_exports(task, parsed.solution, paths, figures);
+    skipped.insert(skipped.end(), refused.begin(), refused.end());
     for (const auto& s : skipped) std::fprintf(stderr, "error: %s\n", s.c_str());
     return skipped.empty() ? kOk : kInvalid;
 }
@@ -67,6 +87,9 @@ Command add_export(CLI::App& parent) {
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file the solution is for")->required();
     sub->add_option("SOLUTION", a->solution, "modsynth-solution/1 JSON file")->required();
     add_export_options(*sub, a->exports);
+    sub->add_flag("--write-uncertified", a->write_uncertified,
+                  "write --csv and --joint-trajectory even for a motion that fails "
+                  "verification again (by default they are not written, and the exit code is 2)");
     return {sub, [a] { return run_export(*a); }};
 }
 

@@ -1,5 +1,6 @@
 // `modsynth import`: a drawing (SVG, DXF) to a task; `modsynth export-svg`:
 // a task's primitives back to an SVG drawing.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,11 +14,17 @@
 #include <modsynth/drawing/svg_writer.h>
 #include <modsynth/io/atomic_file.h>
 #include <modsynth/io/input.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/task/input_error.h>
+#include <modsynth/task/strokes.h>
+#include <modsynth/text/format.h>
 
 #include "command.h"
 #include "imported_task.h"
+#include "number_checks.h"
+#include "planar_task.h"
+#include "watchdog.h"
 
 namespace modsynth::app {
 
@@ -27,8 +34,9 @@ using geometry::Vec2;
 using task::InputError;
 
 struct ImportArgs {
-    std::string input, output, name;
+    std::string input, output, name, reply;
     double width = 0.0, scale = 0.0, rotate = 0.0, tolerance = 1e-4;
+    double time_limit = 60.0;
     std::vector<double> at;
     std::vector<std::vector<double>> bases;
     std::string obstacle_layer;
@@ -51,15 +59,33 @@ std::string file_stem(const std::string& path) {
     return std::filesystem::path(path).stem().string();
 }
 
+/// --reply: why the drawing was not imported, as the server answers it.
+void write_error_reply(const ImportArgs& a, const std::string& message, const std::string& part) {
+    if (a.reply.empty()) return;
+    nlohmann::json body = {{"error", message}};
+    if (!part.empty()) body["part"] = part;
+    io::write_file_atomically(a.reply, body.dump() + "\n");
+}
+
+// Past the time limit by this much, the watchdog answers for the import.
+constexpr double kWatchdogMargin = 0.6;
+
 int run_import(ImportArgs& a) {
-    const drawing::DrawingFormat format = drawing::format_of(a.input);
-    std::error_code ec;
-    const auto size = std::filesystem::file_size(a.input, ec);
-    if (!ec && size > drawing::kMaxDrawingBytes) {
-        throw InputError(a.input, "larger than " + std::to_string(drawing::kMaxDrawingBytes >> 20) +
-                                      " MB: too large for a drawing");
-    }
-    const std::string text = io::read_input_file(a.input, "drawing");
+    const auto start = drawing::Clock::now();
+    const auto limit = std::chrono::duration_cast<drawing::Clock::duration>(
+        std::chrono::duration<double>(a.time_limit));
+    const auto timed_out = [&](const std::string& why) {
+        const std::string message =
+            text::format("not imported within the time limit (%g s): ", a.time_limit) + why;
+        write_error_reply(a, message, {});
+        std::fprintf(stderr, "error: %s: %s\n", a.input.c_str(), message.c_str());
+        return int{kUnknown};
+    };
+    // The importer checks its deadline as it goes; this ends the command
+    // even inside a library call that does not return.
+    Watchdog watchdog(a.time_limit + kWatchdogMargin,
+                      [&] { return timed_out("the import did not stop at its deadline"); });
+    if (a.name.empty()) a.name = file_stem(a.input);
     drawing::ImportOptions options;
     options.read.obstacle_layer = a.obstacle_layer;
     if (a.width > 0.0) options.placement.width = a.width;
@@ -68,17 +94,39 @@ int run_import(ImportArgs& a) {
     options.placement.rotate_degrees = a.rotate;
     options.tolerance = a.tolerance;
     options.keep_order = a.keep_order;
+    options.deadline = start + limit;
     drawing::ImportResult r;
+    nlohmann::json doc, reply;
     try {
-        r = drawing::import_drawing(text, format, options);
+        const drawing::DrawingFormat format = drawing::format_of(a.input);
+        const std::string text = io::read_input_file(a.input, "drawing", drawing::kMaxDrawingBytes);
+        try {
+            r = drawing::import_drawing(text, format, options);
+        } catch (const InputError& e) {
+            // Name the file too: "drawing.svg: path#p3 (line 12): ...".
+            write_error_reply(a, e.what(), e.part());
+            const std::string problem =
+                e.part().empty() ? e.what() : e.what() + e.part().size() + 2;
+            throw InputError(a.input + ": " + e.part(), problem);
+        }
+        if (a.reply.empty()) {
+            doc = imported_task_json(r, base_task(a));
+        } else {
+            reply = import_reply_json(r, options, base_task(a));
+            doc = reply["task"];
+        }
+    } catch (const drawing::ImportTimeout& e) {
+        watchdog.claim();
+        return timed_out(e.what());
     } catch (const InputError& e) {
-        // Name the file too: "drawing.svg: path#p3 (line 12): ...".
-        const std::string problem = e.part().empty() ? e.what() : e.what() + e.part().size() + 2;
-        throw InputError(a.input + ": " + e.part(), problem);
+        watchdog.claim();
+        if (!a.reply.empty() && !std::filesystem::exists(a.reply))
+            write_error_reply(a, e.what(), e.part());
+        throw;
     }
-    if (a.name.empty()) a.name = file_stem(a.input);
-    const nlohmann::json doc = imported_task_json(r, base_task(a));
+    watchdog.claim();
     io::write_file_atomically(a.output, doc.dump(2) + "\n");
+    if (!a.reply.empty()) io::write_file_atomically(a.reply, reply.dump() + "\n");
 
     std::size_t total = 0;
     std::string counts;
@@ -95,26 +143,15 @@ int run_import(ImportArgs& a) {
     return kOk;
 }
 
-/// The primitives of each stroke of a task file (one for a trajectory).
+/// The primitives of each stroke of a task file (one for a trajectory),
+/// read and checked as every command reads a task.
 std::vector<drawing::Chain> task_strokes(const std::string& path) {
-    const nlohmann::json doc = io::parse_json_text(io::read_input_file(path, "task"));
+    const task::Task t = load_planar_task(path, "export-svg");
     std::vector<drawing::Chain> out;
-    if (doc.is_object() && doc.contains("strokes") && doc["strokes"].is_array()) {
-        // Each stroke is read as the trajectory of a task of its own.
-        for (std::size_t s = 0; s < doc["strokes"].size(); ++s) {
-            nlohmann::json one = doc;
-            one.erase("strokes");
-            one["trajectory"] = doc["strokes"][s];
-            try {
-                out.push_back(io::parse_task(one).trajectory);
-            } catch (const InputError& e) {
-                throw InputError(path, "strokes[" + std::to_string(s) + "]: " + e.what());
-            }
-        }
-        if (out.empty()) throw InputError(path, "strokes: empty");
-        return out;
+    for (int s = 0; s < task::stroke_count(t); ++s) {
+        out.emplace_back(t.trajectory.begin() + task::stroke_first(t, s),
+                         t.trajectory.begin() + task::stroke_last(t, s) + 1);
     }
-    out.push_back(io::parse_task(doc).trajectory);
     return out;
 }
 
@@ -127,39 +164,44 @@ Command add_import(CLI::App& parent) {
     sub->add_option("DRAWING", a->input, "drawing.svg or drawing.dxf")->required();
     sub->add_option("-o,--output", a->output, "task file to write")->required();
     auto* width =
-        sub->add_option("--width", a->width, "drawing width in metres")->check(CLI::PositiveNumber);
+        sub->add_option("--width", a->width, "drawing width in metres")->check(positive());
     sub->add_option("--scale", a->scale,
                     "metres per drawing unit (default: the file's units; SVG in mm)")
-        ->check(CLI::PositiveNumber)
+        ->check(positive())
         ->excludes(width);
     sub->add_option("--at", a->at, "X,Y: where the drawing's centre goes (metres)")
         ->delimiter(',')
-        ->expected(2);
+        ->expected(2)
+        ->check(within(-1e9, 1e9));
     sub->add_option("--rotate", a->rotate, "degrees, counter-clockwise about --at")
-        ->check(CLI::Range(-3600.0, 3600.0));
+        ->check(within(-3600.0, 3600.0));
     sub->add_option("--tolerance", a->tolerance,
                     "largest deviation from the drawing, metres (default 1e-4)")
-        ->check(CLI::Range(1e-9, 1.0));
+        ->check(within(1e-9, 1.0));
+    sub->add_option("--time-limit", a->time_limit,
+                    "seconds for the whole import (default 60); past it, exit 4")
+        ->check(seconds());
     sub->add_option("--base", a->bases, "xmin,ymin,xmax,ymax: a base region (repeatable)")
         ->delimiter(',')
         ->expected(4)
-        ->allow_extra_args(false);
+        ->allow_extra_args(false)
+        ->check(within(-1e9, 1e9));
     sub->add_option(
         "--obstacles-from", a->obstacle_layer,
         "layer (SVG group id or inkscape:label, DXF layer) whose circles are obstacles");
     sub->add_option("--name", a->name, "task name (default: the file name)");
     sub->add_option("--dof", a->dof, "allowed joint counts, e.g. 2,3")->delimiter(',');
     sub->add_option("--link-diameter", a->link_diameter, "tube diameter, metres")
-        ->check(CLI::PositiveNumber);
+        ->check(positive());
     sub->add_flag("--keep-order", a->keep_order,
                   "draw the strokes in the file's order and direction");
+    // What `serve` runs an import with: the reply of POST /api/import (or
+    // its error) as JSON. Not for users: no help line.
+    sub->add_option("--reply", a->reply)->group("");
     return {sub, [a] {
-                if (!a->bases.empty() || true) {
-                    for (const auto& b : a->bases) {
-                        if (b.size() != 4 || !(b[0] <= b[2]) || !(b[1] <= b[3])) {
-                            throw InputError("--base",
-                                             "expected xmin,ymin,xmax,ymax with min <= max");
-                        }
+                for (const auto& b : a->bases) {
+                    if (b.size() != 4 || !(b[0] <= b[2]) || !(b[1] <= b[3])) {
+                        throw InputError("--base", "expected xmin,ymin,xmax,ymax with min <= max");
                     }
                 }
                 return run_import(*a);

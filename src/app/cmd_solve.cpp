@@ -15,11 +15,13 @@
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/synth/module_choice.h>
 #include <modsynth/synth/solve.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
 #include "command.h"
 #include "number_checks.h"
+#include "planar_task.h"
 #include "watchdog.h"
 
 namespace modsynth::app {
@@ -39,8 +41,21 @@ struct SolveArgs {
     output::ExportPaths exports;
 };
 
+/// Where along the path a stretch of samples lies, by the task's names.
+std::string stretch_text(const task::Task& task, const std::vector<control::Sample>& s,
+                         const control::SlowStretch& st) {
+    const auto at = [&](const control::Sample& x) {
+        return task::part_name(task, control::primitive_index(task, x)) +
+               text::format(" at %.3f m", x.s);
+    };
+    return at(s[st.first]) + " to " + at(s[st.last]) +
+           text::format(" (down to %.3f m/s; joint %d near its %s limit)", st.slowest, st.joint + 1,
+                        st.limit.c_str());
+}
+
 void print_summary(const task::Task& task, const synth::Solution& solution, double seconds,
-                   const synth::SynthesisStats& stats, const std::string& output) {
+                   const synth::SynthesisStats& stats, const std::string& output,
+                   double ee_speed = std::numeric_limits<double>::infinity()) {
     // A certified motion that no allowed module carries is still solved;
     // the status line says which joint is overloaded.
     const bool overloaded = solution.modules && solution.modules->overloaded_joint > 0;
@@ -76,8 +91,23 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
             "  refinement: certified by the %s model (first certified robot: %s; %d "
             "fallback(s))\n",
             stats.certified_by.c_str(), stats.first_certified_by.c_str(), stats.fallbacks);
-    std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
-                solution.samples.back().t, output.c_str());
+    std::printf("  motion: %.3f s, %zu samples -> %s\n", solution.samples.back().t,
+                solution.samples.size(), output.c_str());
+    const control::RetimeStats& timing = stats.timing;
+    if (timing.rests > 0)
+        std::printf("  stops inside the motion: %d (corners, transitions, pen up and down)\n",
+                    std::max(0, timing.rests - 2));
+    if (std::isfinite(ee_speed) && timing.traced_seconds > 0.0) {
+        std::printf("  tool at %.3f m/s along the path but for the ramps at stops", ee_speed);
+        if (timing.slow.empty()) {
+            std::printf("\n");
+        } else {
+            std::printf("; the limits force it slower for %.2f s of %.2f s:\n", timing.slow_seconds,
+                        timing.traced_seconds);
+            for (const auto& st : timing.slow)
+                std::printf("    %s\n", stretch_text(task, solution.samples, st).c_str());
+        }
+    }
     if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
 }
 
@@ -86,7 +116,7 @@ constexpr double kWatchdogMargin = 0.6;
 
 int run_solve(const SolveArgs& a) {
     const run::Stopwatch clock;
-    const task::Task task = io::load_task(a.task);
+    const task::Task task = load_planar_task(a.task, "solve");
     const auto elapsed = [&] { return clock.seconds(); };
     Watchdog watchdog(a.time_limit + kWatchdogMargin - elapsed(), [&] {
         synth::Solution unknown;
@@ -135,7 +165,7 @@ int run_solve(const SolveArgs& a) {
              {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}})) {
         std::fprintf(stderr, "note: %s\n", note.c_str());
     }
-    print_summary(task, solution, seconds, stats, a.output);
+    print_summary(task, solution, seconds, stats, a.output, a.ee_speed);
     switch (solution.status) {
         case synth::Status::Solved:
             return kOk;
@@ -167,7 +197,8 @@ Command add_solve(CLI::App& parent) {
     sub->add_option("--seed", a->seed,
                     "varies initial guesses; same seed, same output (default 0)");
     sub->add_option("--ee-speed", a->ee_speed,
-                    "cap on the end-effector speed along the path, m/s (default: none; the "
+                    "end-effector speed along the path, m/s: held where the joint limits allow, "
+                    "and the summary says where they force it slower (default: none; the "
                     "joint limits decide)")
         ->check(positive());
     sub->add_option("--joint-speed", a->joint_speed,

@@ -1,10 +1,10 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <variant>
 
 #include <modsynth/hardware/task_catalog.h>
-#include <modsynth/io/task_io.h>
-
+#include <modsynth/io/task_document.h>
 #include <modsynth/text/printable.h>
 
 #include "command.h"
@@ -17,13 +17,28 @@ Command add_validate(CLI::App& parent) {
         parent.add_subcommand("validate", "Check a task file (exit 0 valid, 2 invalid)");
     sub->add_option("TASK", *path, "modsynth-task/1 JSON file")->required();
     return {sub, [path] {
-                const task::Task t = io::load_task(*path);
+                const io::TaskDocument doc = io::load_task_document(*path);
                 // robot.modules must name modules of the catalog.
-                if (!t.robot.modules.empty()) hardware::catalog_for(t);
-                std::printf(
-                    "%s: valid task '%s': %zu primitives, %zu obstacles, %zu base regions\n",
-                    path->c_str(), text::printable(t.name, 80).c_str(), t.trajectory.size(),
-                    t.obstacles.size(), t.base_regions.size());
+                if (const auto* t = std::get_if<task::Task>(&doc)) {
+                    if (!t->robot.modules.empty()) hardware::catalog_for(*t);
+                } else if (const auto& s = std::get<task::SpatialTask>(doc);
+                           !s.robot.modules.empty()) {
+                    task::Task names;
+                    names.robot.modules = s.robot.modules;
+                    hardware::catalog_for(names);
+                }
+                std::visit(
+                    [&](const auto& t) {
+                        const bool spatial =
+                            std::is_same_v<std::decay_t<decltype(t)>, task::SpatialTask>;
+                        std::printf(
+                            "%s: valid %stask '%s': %zu primitives, %zu obstacles, %zu "
+                            "base regions\n",
+                            path->c_str(), spatial ? "spatial " : "",
+                            text::printable(t.name, 80).c_str(), t.trajectory.size(),
+                            t.obstacles.size(), t.base_regions.size());
+                    },
+                    doc);
                 return int{kOk};
             }};
 }

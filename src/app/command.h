@@ -25,6 +25,7 @@ Command add_solve(CLI::App& parent);
 Command add_batch(CLI::App& parent);
 Command add_regress(CLI::App& parent);
 Command add_export(CLI::App& parent);
+Command add_certify(CLI::App& parent);
 Command add_explain(CLI::App& parent);
 Command add_serve(CLI::App& parent);
 Command add_baseline(CLI::App& parent);

@@ -16,6 +16,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string_view>
+#include <vector>
 
 namespace modsynth::app {
 namespace {
@@ -29,6 +30,12 @@ constexpr std::size_t kPeekBytes = 64 * 1024;
 // this much, so that the client reads the reply instead of a reset.
 constexpr auto kLinger = std::chrono::seconds(2);
 constexpr std::size_t kLingerBytes = 8u << 20;
+// Bodies are read in the room up to the server's payload limit and no
+// further (past it a worker refuses them); chunked framing may add this
+// much to a body of that size, and a chunk's size line this much.
+constexpr std::size_t kLargestBody = 64u << 20;
+constexpr std::size_t kChunkFraming = 64u << 10;
+constexpr std::size_t kLongestChunkLine = 1024;
 
 Clock::time_point after(double seconds) {
     return Clock::now() +
@@ -81,29 +88,75 @@ std::string seconds_text(double seconds) {
     return text;
 }
 
-bool contains_ignoring_case(const std::string& text, const std::string& lower_needle) {
+bool contains_ignoring_case(std::string_view text, std::string_view lower_needle) {
     return std::search(text.begin(), text.end(), lower_needle.begin(), lower_needle.end(),
                        [](char a, char b) {
                            return std::tolower(static_cast<unsigned char>(a)) == b;
                        }) != text.end();
 }
 
+std::string_view trimmed(std::string_view v) {
+    const auto b = v.find_first_not_of(" \t");
+    if (b == std::string_view::npos) return {};
+    return v.substr(b, v.find_last_not_of(" \t") - b + 1);
+}
+
+bool equals_ignoring_case(std::string_view a, std::string_view lower) {
+    return a.size() == lower.size() && contains_ignoring_case(a, lower);
+}
+
+/// One header line of a request head: where it starts and ends (at its
+/// CRLF) and its name and value.
+struct HeaderLine {
+    std::size_t begin = 0, end = 0;
+    std::string_view name, value;
+};
+
+/// The header lines of a head (the request line and headers, each ending
+/// in CRLF).
+std::vector<HeaderLine> header_lines(std::string_view head) {
+    std::vector<HeaderLine> out;
+    std::size_t at = head.find("\r\n");
+    while (at != std::string_view::npos && at + 2 < head.size()) {
+        const std::size_t begin = at + 2;
+        const std::size_t end = head.find("\r\n", begin);
+        if (end == std::string_view::npos || end == begin) break;
+        const std::string_view line = head.substr(begin, end - begin);
+        const auto colon = line.find(':');
+        if (colon != std::string_view::npos)
+            out.push_back(
+                {begin, end, trimmed(line.substr(0, colon)), trimmed(line.substr(colon + 1))});
+        at = end;
+    }
+    return out;
+}
+
+/// How far the chunked framing of a body reaches.
+struct ChunkScan {
+    bool done = false;  ///< the last chunk and its trailers are in; `end` is where they end
+    bool bad = false;   ///< not chunked framing: the worker says so
+    std::size_t end = 0;
+};
+
 /// One request on a connection whose head has come: reads bounded by the
 /// request's deadline, writes by the write timeout.
 class RequestStream : public httplib::Stream {
 public:
+    /// `received`: what the waiting room already read of the request.
     RequestStream(int sock, const std::string& remote_ip, int remote_port,
-                  const std::string& local_ip, int local_port, const ConnectionLimits& limits)
+                  const std::string& local_ip, int local_port, const ConnectionLimits& limits,
+                  std::string received)
         : sock_(sock),
           remote_ip_(remote_ip),
           local_ip_(local_ip),
           remote_port_(remote_port),
           local_port_(local_port),
           read_deadline_(after(limits.read_timeout)),
-          write_timeout_ms_(static_cast<int>(limits.write_timeout * 1000)) {}
+          write_timeout_ms_(static_cast<int>(limits.write_timeout * 1000)),
+          received_(std::move(received)) {}
 
     bool is_readable() const override {
-        return wait_for(sock_, POLLIN, millis_until(read_deadline_));
+        return taken_ < received_.size() || wait_for(sock_, POLLIN, millis_until(read_deadline_));
     }
 
     bool is_writable() const override {
@@ -115,6 +168,12 @@ public:
     }
 
     ssize_t read(char* ptr, std::size_t size) override {
+        if (taken_ < received_.size()) {
+            const std::size_t n = std::min(size, received_.size() - taken_);
+            std::memcpy(ptr, received_.data() + taken_, n);
+            taken_ += n;
+            return static_cast<ssize_t>(n);
+        }
         for (;;) {
             const auto n = ::recv(sock_, ptr, size, MSG_DONTWAIT);
             if (n >= 0) return n;
@@ -160,8 +219,51 @@ private:
     int remote_port_, local_port_;
     Clock::time_point read_deadline_;
     int write_timeout_ms_;
+    std::string received_;  ///< read before the socket
+    std::size_t taken_ = 0;
     std::string head_;  ///< the start of what was written: the reply's head
 };
+
+/// Follows a chunked body's framing in `c.received` from where it stopped.
+template <class Connection>
+ChunkScan scan_chunks(Connection& c, std::size_t largest_chunk) {
+    const std::string& b = c.received;
+    for (;;) {
+        if (c.chunk_phase == 1) {  // a chunk's data and its CRLF
+            const std::size_t come = b.size() - c.chunk_at;
+            if (come < c.chunk_left) {
+                c.chunk_at = b.size();
+                c.chunk_left -= come;
+                return {};
+            }
+            c.chunk_at += c.chunk_left;
+            c.chunk_left = 0;
+            c.chunk_phase = 0;
+            continue;
+        }
+        const std::size_t eol = b.find("\r\n", c.chunk_at);
+        if (eol == std::string::npos) {
+            ChunkScan waiting;
+            waiting.bad = b.size() - c.chunk_at > kLongestChunkLine;
+            return waiting;
+        }
+        if (c.chunk_phase == 2) {  // trailers, up to an empty line
+            if (eol == c.chunk_at) return {true, false, eol + 2};
+            c.chunk_at = eol + 2;
+            continue;
+        }
+        std::size_t size = 0, k = c.chunk_at;
+        for (; k < eol && std::isxdigit(static_cast<unsigned char>(b[k])); ++k) {
+            const char d = static_cast<char>(std::tolower(static_cast<unsigned char>(b[k])));
+            size = size * 16 + static_cast<std::size_t>(d <= '9' ? d - '0' : d - 'a' + 10);
+            if (size > largest_chunk) return {false, true, 0};
+        }
+        if (k == c.chunk_at) return {false, true, 0};
+        c.chunk_at = eol + 2;
+        c.chunk_phase = size == 0 ? 2 : 1;
+        c.chunk_left = size + 2;
+    }
+}
 
 /// Runs each accepted connection's task at once, in the accepting thread:
 /// the task only hands the connection to the waiting room.
@@ -295,6 +397,22 @@ void ConnectionServer::wait_room() {
                 }
                 continue;
             }
+            if (c.reading_body) {
+                const Progress p = events ? read_body(c, peek) : Progress::Waiting;
+                if (p == Progress::Gone) {
+                    close(c);
+                } else if (p == Progress::Ready) {
+                    ready.push_back(std::move(c));
+                } else if (now >= c.deadline) {
+                    reply_directly(c.sock, 408, "Request Timeout",
+                                   "the request body did not arrive within " +
+                                       seconds_text(limits_.read_timeout) + " s");
+                    close(c);
+                } else {
+                    still.push_back(std::move(c));
+                }
+                continue;
+            }
             ssize_t n = -1;
             bool gone = false;
             if (events || now >= c.deadline) {
@@ -302,12 +420,22 @@ void ConnectionServer::wait_room() {
                 gone =
                     n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR);
             }
-            const bool head = n > 0 && (std::string_view(peek.data(), n).find("\r\n\r\n") !=
-                                            std::string_view::npos ||
+            const std::size_t head_end =
+                n > 0 ? std::string_view(peek.data(), n).find("\r\n\r\n") : std::string_view::npos;
+            // A whole head: its body, if any, is read here too, before a
+            // worker is given the request.
+            Progress body = Progress::Ready;
+            if (!gone && head_end != std::string_view::npos) {
+                body = start_body(c, std::string_view(peek.data(), head_end + 4));
+                if (body == Progress::Waiting) body = read_body(c, peek);
+            }
+            const bool head = n > 0 && (head_end != std::string_view::npos ||
                                         static_cast<std::size_t>(n) >= peek.size() ||
                                         (events & (POLLRDHUP | POLLHUP | POLLERR)));
-            if (gone) {
+            if (gone || body == Progress::Gone) {
                 close(c);
+            } else if (body == Progress::Waiting) {
+                still.push_back(std::move(c));
             } else if (head) {
                 ready.push_back(std::move(c));
             } else if (now >= c.deadline) {
@@ -348,8 +476,109 @@ void ConnectionServer::work() {
     }
 }
 
+ConnectionServer::Progress ConnectionServer::start_body(Connection& c, std::string_view head) {
+    bool chunked = false;
+    std::vector<std::string_view> lengths;
+    for (const HeaderLine& h : header_lines(head)) {
+        if (equals_ignoring_case(h.name, "transfer-encoding") &&
+            contains_ignoring_case(h.value, "chunked"))
+            chunked = true;
+        if (equals_ignoring_case(h.name, "content-length")) lengths.push_back(h.value);
+    }
+    const std::size_t largest = std::min(payload_max_length_, kLargestBody);
+    std::size_t length = 0;
+    if (!chunked) {
+        // No body, or one a worker refuses unread (a length that is not one
+        // number, or too large).
+        if (lengths.size() != 1 || lengths[0].empty() || lengths[0].size() > 19 ||
+            lengths[0].find_first_not_of("0123456789") != std::string_view::npos)
+            return Progress::Ready;
+        length = std::stoull(std::string(lengths[0]));
+        if (length == 0 || length > largest) return Progress::Ready;
+    }
+    // The head is taken off the socket: from here on the room reads the
+    // request, and the worker gets it from c.received.
+    std::string received(head.size(), '\0');
+    for (std::size_t got = 0; got < received.size();) {
+        const auto n = ::recv(c.sock, received.data() + got, received.size() - got, MSG_DONTWAIT);
+        if (n > 0) {
+            got += static_cast<std::size_t>(n);
+        } else if (n < 0 && errno == EINTR) {
+            continue;
+        } else {
+            return Progress::Gone;  // it was peeked: only a broken connection loses it
+        }
+    }
+    // A client that waits for "100 Continue" before it sends the body gets
+    // it now; the header goes, so that the worker does not send another.
+    for (const HeaderLine& h : header_lines(received)) {
+        if (!equals_ignoring_case(h.name, "expect") ||
+            !equals_ignoring_case(h.value, "100-continue"))
+            continue;
+        received.erase(h.begin, h.end + 2 - h.begin);
+        const char reply[] = "HTTP/1.1 100 Continue\r\n\r\n";
+        [[maybe_unused]] const auto sent =
+            ::send(c.sock, reply, sizeof reply - 1, MSG_DONTWAIT | MSG_NOSIGNAL);
+        break;
+    }
+    c.received = std::move(received);
+    c.reading_body = true;
+    c.chunked = chunked;
+    c.body_end = c.received.size() + length;
+    c.chunk_at = c.received.size();
+    c.chunk_left = 0;
+    c.chunk_phase = 0;
+    c.deadline = after(limits_.read_timeout);
+    return Progress::Waiting;
+}
+
+ConnectionServer::Progress ConnectionServer::read_body(Connection& c, std::vector<char>& scratch) {
+    const std::size_t largest = std::min(payload_max_length_, kLargestBody);
+    for (;;) {
+        std::size_t want = scratch.size();
+        if (!c.chunked) want = std::min(want, c.body_end - c.received.size());
+        if (want == 0) return Progress::Ready;
+        // Chunked bodies are peeked first: what follows the last chunk
+        // belongs to the next request and stays on the socket.
+        const auto n =
+            ::recv(c.sock, scratch.data(), want, MSG_DONTWAIT | (c.chunked ? MSG_PEEK : 0));
+        if (n == 0) return Progress::Ready;  // all the client sends: the worker answers it
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            if (errno == EAGAIN || errno == EWOULDBLOCK) return Progress::Waiting;
+            return Progress::Gone;
+        }
+        if (!c.chunked) {
+            c.received.append(scratch.data(), static_cast<std::size_t>(n));
+            if (c.received.size() >= c.body_end) return Progress::Ready;
+            continue;
+        }
+        const std::size_t before = c.received.size();
+        c.received.append(scratch.data(), static_cast<std::size_t>(n));
+        const ChunkScan scan = scan_chunks(c, largest);
+        if (scan.done) c.received.resize(scan.end);
+        const std::size_t take = c.received.size() - before;
+        for (std::size_t got = 0; got < take;) {
+            const auto m = ::recv(c.sock, scratch.data(), take - got, MSG_DONTWAIT);
+            if (m > 0) {
+                got += static_cast<std::size_t>(m);
+            } else if (m < 0 && errno == EINTR) {
+                continue;
+            } else {
+                return Progress::Gone;
+            }
+        }
+        // Past the limit, or not chunked framing: the worker refuses it.
+        if (scan.done || scan.bad || c.received.size() > largest + kChunkFraming)
+            return Progress::Ready;
+    }
+}
+
 void ConnectionServer::serve(Connection c) {
-    RequestStream stream(c.sock, c.remote_ip, c.remote_port, c.local_ip, c.local_port, limits_);
+    RequestStream stream(c.sock, c.remote_ip, c.remote_port, c.local_ip, c.local_port, limits_,
+                         std::move(c.received));
+    c.received.clear();
+    c.reading_body = false;
     const bool last = ++c.served >= keep_alive_max_count_ || svr_sock_ == INVALID_SOCKET;
     bool closed = false;
     const bool ok = process_request(stream, last, closed, nullptr);

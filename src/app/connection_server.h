@@ -1,9 +1,10 @@
 #pragma once
 // An HTTP server whose connections cost a worker only while a request is
-// being answered. A connection waits for its next request head in one
-// polling thread, not in a worker, so clients that send slowly or keep idle
-// connections open cannot take every worker; each head must arrive within a
-// deadline, and closing connections are drained there too.
+// being answered. A connection waits for its next request head, and then
+// for the request's body, in one polling thread, not in a worker, so
+// clients that send slowly or keep idle connections open cannot take every
+// worker; each head and each body must arrive within a deadline, and
+// closing connections are drained there too.
 //
 // Include it last: <httplib.h> pulls in <resolv.h>, whose `_res` macro
 // breaks Eigen's headers.
@@ -14,6 +15,7 @@
 #include <deque>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -50,10 +52,28 @@ private:
         bool draining = false;  ///< replied and closing: what the client still sends is dropped
         std::size_t drained = 0;
         Clock::time_point deadline;
+        /// The request read so far, its head first, once its head has come
+        /// and it has a body: the worker reads this before the socket.
+        std::string received;
+        bool reading_body = false;
+        std::size_t body_end = 0;  ///< received.size() once a Content-Length body is in
+        bool chunked = false;
+        std::size_t chunk_at = 0;    ///< chunked: where the framing is parsed up to
+        std::size_t chunk_left = 0;  ///< chunked: data and CRLF still to come of this chunk
+        int chunk_phase = 0;         ///< chunked: 0 size line, 1 data, 2 trailers
     };
+    enum class Progress { Ready, Waiting, Gone };
 
     bool process_and_close_socket(socket_t sock) override;
     void wait_room();
+    /// A head has come (`head` bytes of it peeked): Ready when the request
+    /// has no body the room should wait for, else its body is read from
+    /// now on.
+    Progress start_body(Connection& c, std::string_view head);
+    /// Reads what has come of the body: Ready once it is all in (or cannot
+    /// be, and the worker must say so), Gone when the connection broke.
+    Progress read_body(Connection& c, std::vector<char>& scratch);
+
     void work();
     void serve(Connection c);
     void to_room(Connection c);

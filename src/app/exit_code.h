@@ -4,6 +4,14 @@
 // processes read them back.
 namespace modsynth::app {
 
-enum Exit { kOk = 0, kInternal = 1, kInvalid = 2, kInfeasible = 3, kUnknown = 4 };
+/// kNotCertified: `certify` found the solution's motion not certified.
+enum Exit {
+    kOk = 0,
+    kInternal = 1,
+    kInvalid = 2,
+    kInfeasible = 3,
+    kUnknown = 4,
+    kNotCertified = 5
+};
 
 }  // namespace modsynth::app

@@ -1,35 +1,64 @@
 #include "imported_task.h"
 
-#include <string>
-
 #include <modsynth/io/task_io.h>
-#include <modsynth/task/input_error.h>
 
 namespace modsynth::app {
+namespace {
 
-nlohmann::json imported_task_json(const drawing::ImportResult& r, const task::Task& base) {
-    nlohmann::json doc;
-    nlohmann::json strokes = nlohmann::json::array();
-    for (std::size_t s = 0; s < r.strokes.size(); ++s) {
-        // A task holding one stroke as its trajectory: how the task writer
-        // and reader, which know trajectories, check and write each stroke.
-        task::Task t = base;
-        t.trajectory = r.strokes[s];
-        t.obstacles = r.obstacles;
-        const nlohmann::json one = io::to_json(t);
-        try {
-            io::parse_task(one);
-        } catch (const task::InputError& e) {
-            throw task::InputError("strokes[" + std::to_string(s) + "]", e.what());
-        }
-        if (s == 0) doc = one;
-        strokes.push_back(one["trajectory"]);
+using nlohmann::json;
+
+/// The SVG matrix(a, b, c, d, e, f) of a map: x' = a x + c y + e,
+/// y' = b x + d y + f.
+json svg_matrix(const drawing::Affine& m) {
+    return {m.m(0, 0), m.m(1, 0), m.m(0, 1), m.m(1, 1), m.offset.x(), m.offset.y()};
+}
+
+/// True when the map turns the plane over (an SVG page, y down, to the
+/// task's y up).
+bool is_mirror(const drawing::Affine& a) {
+    return a.m(0, 0) * a.m(1, 1) - a.m(0, 1) * a.m(1, 0) < 0.0;
+}
+
+}  // namespace
+
+json imported_task_json(const drawing::ImportResult& r, const task::Task& base) {
+    task::Task t = base;
+    t.obstacles = r.obstacles;
+    t.trajectory.clear();
+    t.stroke_starts.clear();
+    for (const auto& stroke : r.strokes) {
+        if (r.strokes.size() > 1) t.stroke_starts.push_back(static_cast<int>(t.trajectory.size()));
+        t.trajectory.insert(t.trajectory.end(), stroke.begin(), stroke.end());
     }
-    if (r.strokes.size() > 1) {
-        doc.erase("trajectory");
-        doc["strokes"] = strokes;
-    }
+    const json doc = io::to_json(t);
+    // Checked as any task is, once: every stroke against every obstacle.
+    io::parse_task(doc);
     return doc;
+}
+
+json import_reply_json(const drawing::ImportResult& r, const drawing::ImportOptions& options,
+                       const task::Task& base) {
+    std::size_t primitives = 0;
+    for (const auto& s : r.strokes) primitives += s.size();
+    json underlay = nullptr;
+    if (r.page_size.x() > 0.0 && r.page_size.y() > 0.0) {
+        underlay = {{"width", r.page_size.x()},
+                    {"height", r.page_size.y()},
+                    {"transform", svg_matrix(r.page_to_task)},
+                    {"y_flip", is_mirror(r.page_to_task)}};
+    }
+    return {{"task", imported_task_json(r, base)},
+            {"strokes", r.strokes.size()},
+            {"primitives", primitives},
+            {"obstacles", r.obstacles.size()},
+            {"deviation", r.deviation},
+            {"tolerance", options.tolerance},
+            {"travel", r.travel},
+            {"placement",
+             {{"metres_per_unit", r.metres_per_unit},
+              {"rotate_degrees", options.placement.rotate_degrees},
+              {"transform", svg_matrix(r.placement)}}},
+            {"underlay", underlay}};
 }
 
 }  // namespace modsynth::app

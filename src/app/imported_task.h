@@ -9,9 +9,16 @@
 namespace modsynth::app {
 
 /// One stroke as `trajectory`, several as `strokes`, with the drawing's
-/// obstacles; the name, base regions and robot come from `base`. Every
-/// stroke goes through the task reader, so what is returned is valid;
-/// throws task::InputError naming the stroke otherwise.
+/// obstacles; the name, base regions and robot come from `base`. The whole
+/// task goes through the task reader once, so what is returned is valid;
+/// throws task::InputError naming the part (`strokes[2][5]`, `obstacles`)
+/// otherwise.
 nlohmann::json imported_task_json(const drawing::ImportResult& r, const task::Task& base);
+
+/// What POST /api/import answers for an imported drawing (README, "serve"):
+/// the task, its counts, the deviation reached and the pen-up travel, the
+/// placement, and the map that puts the file's page under the task.
+nlohmann::json import_reply_json(const drawing::ImportResult& r,
+                                 const drawing::ImportOptions& options, const task::Task& base);
 
 }  // namespace modsynth::app

@@ -1,5 +1,6 @@
-// The modsynth command line. Exit codes: 0 solved (or valid), 1 internal
-// error, 2 invalid input or usage, 3 infeasible, 4 unknown.
+// The modsynth command line. Exit codes: 0 solved (or valid, or certified),
+// 1 internal error, 2 invalid input or usage, 3 infeasible, 4 unknown,
+// 5 not certified (certify).
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -13,10 +14,10 @@ int main(int argc, char** argv) {
     CLI::App app{"modsynth: synthesise a modular planar manipulator and its control for a task"};
     app.set_version_flag("--version", std::string("modsynth ") + MODSYNTH_VERSION);
     app.require_subcommand(1);
-    const std::vector<Command> commands = {add_validate(app), add_solve(app),     add_export(app),
-                                           add_batch(app),    add_regress(app),   add_explain(app),
-                                           add_serve(app),    add_baseline(app),  add_compare(app),
-                                           add_import(app),   add_export_svg(app)};
+    const std::vector<Command> commands = {
+        add_validate(app), add_solve(app),   add_export(app),     add_batch(app),
+        add_regress(app),  add_explain(app), add_serve(app),      add_baseline(app),
+        add_compare(app),  add_import(app),  add_export_svg(app), add_certify(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

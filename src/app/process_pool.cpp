@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -95,6 +96,10 @@ double seconds_since(Clock::time_point t) {
             close(fd);
     // After the opens, so that their relative paths mean the same as here.
     if (!spec.working_dir.empty() && chdir(spec.working_dir.c_str()) != 0) _exit(127);
+    if (spec.memory_limit > 0) {
+        const rlimit limit{spec.memory_limit, spec.memory_limit};
+        if (setrlimit(RLIMIT_AS, &limit) != 0) _exit(127);
+    }
     execve(argv[0], argv, environ);
     _exit(127);
 }

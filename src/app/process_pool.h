@@ -19,6 +19,8 @@ struct ProcessSpec {
     std::string stderr_path;        ///< when set, stderr goes here instead of log_path
     double wall_limit = 0.0;        ///< seconds before SIGKILL; <= 0: no limit
     std::string working_dir;        ///< where the child starts; empty: here
+    /// Bytes of address space the child may take (RLIMIT_AS); 0: no limit.
+    std::size_t memory_limit = 0;
 };
 
 struct ProcessResult {

@@ -7,11 +7,14 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <thread>
 
 #include "exit_code.h"
+#include "import_runner.h"
 #include "loopback.h"
 #include "process_pool.h"
+#include "watchdog.h"
 
 // Last: it pulls in <resolv.h>, whose `_res` macro breaks Eigen's headers.
 #include "connection_server.h"
@@ -63,6 +66,9 @@ private:
 
 // Workers beyond those that progress streams and long polls may hold.
 constexpr std::size_t kFreeWorkers = 6;
+// After SIGTERM the server stops within this even if some request is stuck:
+// the process then ends without waiting for it (its children die with it).
+constexpr double kLongestShutdown = 3.0;
 
 std::string url_host(const std::string& host) {
     return host.find(':') != std::string::npos ? "[" + host + "]" : host;
@@ -72,7 +78,9 @@ std::string url_host(const std::string& host) {
 
 int run_server(const ServerOptions& options) {
     ShutdownSignals signals;
+    std::optional<Watchdog> shutdown_limit;  // outlives everything below it
     SolveJobs jobs(options.jobs, self_executable());
+    ImportRunner imports(options.imports, self_executable());
     // Progress streams and long polls hold a worker each; they get all but
     // a few, which stay free for the page's other requests.
     ApiSettings api = options.api;
@@ -83,7 +91,7 @@ int run_server(const ServerOptions& options) {
     limits.workers = api.max_streams + kFreeWorkers;
     ConnectionServer server(limits);
     server.set_payload_max_length(api.max_body);
-    add_routes(server, jobs, api);
+    add_routes(server, jobs, api, &imports);
 
     int port = options.port;
     errno = 0;
@@ -99,7 +107,7 @@ int run_server(const ServerOptions& options) {
             std::fprintf(stderr, "error: cannot listen on %s:%d%s%s\n", options.host.c_str(),
                          options.port, errno ? ": " : "", errno ? std::strerror(errno) : "");
         }
-        return kInternal;
+        return kInvalid;  // the --host or --port asked for cannot be had
     }
     if (!is_loopback_host(options.host)) {
         std::fprintf(stderr,
@@ -111,6 +119,14 @@ int run_server(const ServerOptions& options) {
     std::fflush(stdout);
     signals.stop_on_signal(server);
     server.listen_after_bind();
+    shutdown_limit.emplace(kLongestShutdown, [] {
+        std::printf("modsynth serve: stopped (requests still running were cut off)\n");
+        return int{kOk};
+    });
+    // Whatever a worker waits for ends now: imports are killed, solves'
+    // long polls and progress streams return.
+    imports.stop();
+    jobs.shutdown();
     signals.release();
     std::printf("modsynth serve: stopped\n");
     return kOk;

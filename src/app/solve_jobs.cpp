@@ -72,14 +72,18 @@ SolveJobs::SolveJobs(const JobLimits& limits, std::string executable)
 }
 
 SolveJobs::~SolveJobs() {
+    shutdown();
+    supervisor_.join();
+    // Each job's ChildProcess kills its process, then its TempDir goes.
+    jobs_.clear();
+}
+
+void SolveJobs::shutdown() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         stopping_ = true;
     }
     changed_.notify_all();
-    supervisor_.join();
-    // Each job's ChildProcess kills its process, then its TempDir goes.
-    jobs_.clear();
 }
 
 std::string SolveJobs::start(const std::string& task_text, double time_limit) {

@@ -95,6 +95,11 @@ public:
     int running();
     const JobLimits& limits() const { return limits_; }
 
+    /// From now on no job starts and every wait returns at once, so that a
+    /// server stopping is not held by a long poll; the destructor kills the
+    /// jobs still running.
+    void shutdown();
+
 private:
     struct Job;
     using Clock = std::chrono::steady_clock;

@@ -37,6 +37,7 @@ std::string unreadable_reason(const std::string& path) {
     namespace fs = std::filesystem;
     std::error_code ec;
     const fs::file_status st = fs::status(path, ec);
+    if (ec && ec != std::errc::no_such_file_or_directory) return "cannot be read: " + ec.message();
     if (!fs::exists(st)) return "no such file";
     if (fs::is_directory(st)) return "is a folder, not a task file";
     if (!fs::is_regular_file(st)) return "is not a regular file";
@@ -97,6 +98,7 @@ void read_solution(const std::string& path, SolveOutcome& o) {
     if (s.status != synth::Status::Solved) return;
     o.dof = s.robot.dof();
     o.total_link_length = s.robot.total_length();
+    if (!s.samples.empty()) o.motion_seconds = s.samples.back().t - s.samples.front().t;
     if (parsed.has_certificate && std::isfinite(s.certificate.min_clearance))
         o.clearance_margin = s.certificate.min_clearance;
 }

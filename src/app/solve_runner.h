@@ -38,6 +38,7 @@ struct SolveOutcome {
     std::optional<int> dof;
     std::optional<double> total_link_length;
     std::optional<double> clearance_margin;  ///< certified; none when no obstacle bounds it
+    std::optional<double> motion_seconds;    ///< the timed motion's duration (solved)
     std::vector<std::string> core;
     std::string message;  ///< explanation, or the error a failed run printed
 };

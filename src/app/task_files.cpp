@@ -1,14 +1,17 @@
 #include "task_files.h"
 
+#include <modsynth/io/input.h>
 #include <modsynth/task/input_error.h>
+#include <modsynth/task/limits.h>
 #include <modsynth/text/printable.h>
 
 #include <algorithm>
+#include <deque>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <regex>
 #include <set>
+#include <sstream>
 
 namespace modsynth::app {
 namespace {
@@ -25,17 +28,8 @@ bool is_companion(const std::string& name) {
            ends_with(name, ".planted.json") || ends_with(name, ".solution.json");
 }
 
-std::vector<std::string> tasks_in_folder(const fs::path& folder) {
-    std::vector<std::string> json, planted;
-    for (const auto& e : fs::directory_iterator(folder)) {
-        if (!e.is_regular_file()) continue;
-        const std::string name = e.path().filename().string();
-        if (ends_with(name, ".task.json")) planted.push_back(e.path().generic_string());
-        if (ends_with(name, ".json") && !is_companion(name))
-            json.push_back(e.path().generic_string());
-    }
-    return planted.empty() ? json : planted;
-}
+/// Whether a folder entry that is no folder is named as a task.
+bool task_named(const std::string& name) { return ends_with(name, ".json") && !is_companion(name); }
 
 std::string trim(const std::string& s) {
     const auto b = s.find_first_not_of(" \t\r");
@@ -46,20 +40,48 @@ std::string trim(const std::string& s) {
 }  // namespace
 
 std::vector<std::string> find_task_files(const std::string& dir) {
-    if (!fs::is_directory(dir)) throw task::InputError(dir, "not a folder");
-    std::vector<std::string> out = tasks_in_folder(dir);
-    for (const auto& e : fs::recursive_directory_iterator(dir)) {
-        if (!e.is_directory()) continue;
-        const auto more = tasks_in_folder(e.path());
-        out.insert(out.end(), more.begin(), more.end());
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) throw task::InputError(dir, "not a folder");
+    std::vector<std::string> out;
+    // Folders by what they are, not by the path that reached them: a link
+    // to a folder already searched (itself, an ancestor) adds nothing, so
+    // every task is found once and the search ends.
+    // Breadth first, each folder's subfolders in name order: of two paths to
+    // one folder, the shorter (then the first by name) names its tasks, the
+    // same on every run.
+    std::set<fs::path> searched;
+    std::deque<fs::path> folders{fs::path(dir)};
+    while (!folders.empty()) {
+        const fs::path folder = folders.front();
+        folders.pop_front();
+        const fs::path real = fs::canonical(folder, ec);
+        if (ec || !searched.insert(real).second) continue;
+        std::vector<std::string> json, planted;
+        std::vector<fs::path> subfolders;
+        for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+            const fs::path& path = it->path();
+            std::error_code kind;
+            if (it->is_directory(kind)) {
+                subfolders.push_back(path);
+                continue;
+            }
+            // Anything else named as a task is one, also what cannot be read
+            // (a link to itself, a FIFO): the run says why, as one row.
+            const std::string name = path.filename().string();
+            if (ends_with(name, ".task.json")) planted.push_back(path.generic_string());
+            if (task_named(name)) json.push_back(path.generic_string());
+        }
+        const auto& found = planted.empty() ? json : planted;
+        out.insert(out.end(), found.begin(), found.end());
+        std::sort(subfolders.begin(), subfolders.end());
+        folders.insert(folders.end(), subfolders.begin(), subfolders.end());
     }
     std::sort(out.begin(), out.end());
     return out;
 }
 
 std::vector<std::string> read_task_list(const std::string& list_file) {
-    std::ifstream in(list_file);
-    if (!in) throw task::InputError(list_file, "cannot be read");
+    std::istringstream in(io::read_input_file(list_file, "task list", task::kMaxTaskBytes));
     std::vector<std::string> out;
     for (std::string line; std::getline(in, line);) {
         line = trim(line);

@@ -9,13 +9,16 @@ namespace modsynth::app {
 /// Task files under `dir`, recursively, sorted by path. In a folder that
 /// holds *.task.json files (plant.py's layout) only those are tasks;
 /// elsewhere every *.json is, except plant.py's companions (*.expect.json,
-/// *.planted.json) and solutions (*.solution.json). Throws task::InputError
-/// when `dir` is not a folder.
+/// *.planted.json) and solutions (*.solution.json). Links to folders are
+/// followed, each folder searched once however many links reach it; an
+/// entry named as a task that cannot be read (a link to itself) is listed,
+/// for its run to say why. Throws task::InputError when `dir` is not a
+/// folder.
 std::vector<std::string> find_task_files(const std::string& dir);
 
 /// The paths listed in a text file, one per line (blank lines and lines
 /// starting with '#' skipped), sorted. Throws task::InputError when the file
-/// cannot be read.
+/// cannot be read (or is not a regular file, or larger than a task file).
 std::vector<std::string> read_task_list(const std::string& list_file);
 
 /// The file name without ".task.json" or ".json": "tasks/rose.json" -> "rose".

@@ -30,7 +30,8 @@ JointLimits joint_limits_for(const task::Task& task, int dof) {
     const auto& spec = task.robot.joint_limits;
     if (!spec) return default_joint_limits(dof);
     return {spread(spec->velocity, dof, "velocity"),
-            spread(spec->acceleration, dof, "acceleration")};
+            spread(spec->acceleration, dof, "acceleration"),
+            spec->jerk.empty() ? std::vector<double>{} : spread(spec->jerk, dof, "jerk")};
 }
 
 bool valid(const JointLimits& limits, std::string* error) {
@@ -41,6 +42,14 @@ bool valid(const JointLimits& limits, std::string* error) {
     if (limits.velocity.empty()) return fail("JointLimits: no joints");
     if (limits.acceleration.size() != limits.velocity.size())
         return fail("JointLimits: one velocity and one acceleration per joint");
+    if (!limits.jerk.empty() && limits.jerk.size() != limits.velocity.size())
+        return fail("JointLimits: one jerk per joint, or none");
+    for (std::size_t k = 0; k < limits.jerk.size(); ++k) {
+        const double j = limits.jerk[k];
+        if (!std::isfinite(j) || j <= 0.0)
+            return fail(text::format(
+                "JointLimits::jerk[%zu] must be a finite number greater than 0, got %g", k, j));
+    }
     for (std::size_t k = 0; k < limits.velocity.size(); ++k) {
         const double v = limits.velocity[k], a = limits.acceleration[k];
         if (!std::isfinite(v) || v <= 0.0)

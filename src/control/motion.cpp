@@ -64,6 +64,7 @@ bool MotionOptions::IsValid(std::string* error) const {
     return text::OptionCheck("MotionOptions", error)
         .greater("max_joint_step", max_joint_step, 0.0)
         .greater("max_ee_step", max_ee_step, 0.0)
+        .greater("junction_step", junction_step, 0.0)
         .greater("ee_speed", ee_speed, 0.0)
         .greater("joint_speed", joint_speed, 0.0)
         .holds("max_samples", max_samples >= 2, "must be at least 2")
@@ -93,17 +94,18 @@ std::optional<std::vector<double>> transition_configuration(const task::Task& ta
 namespace {
 
 // Walks a parameter from `from` to `to`, each step as long as the joints
-// allow, appending a sample per step (the first one excluded).
+// allow and at most `max_step`, the first at most `first_step`, appending a
+// sample per step (the first one excluded).
 // On failure, *failed_at is the parameter that could not be reached.
 // Stops (returning false with *gave_up set) at the sample cap or the deadline.
 // `primitive` and `stroke` tag the samples as the document does.
 template <typename ConfigAt>
-bool walk(double from, double to, double first_step, const MotionOptions& options, Phase phase,
-          int primitive, int stroke, std::vector<Sample>& out, double* failed_at, bool* gave_up,
-          ConfigAt config_at) {
+bool walk(double from, double to, double first_step, double max_step, const MotionOptions& options,
+          Phase phase, int primitive, int stroke, std::vector<Sample>& out, double* failed_at,
+          bool* gave_up, ConfigAt config_at) {
     const double max_joint_step = options.max_joint_step;
     const double dir = to >= from ? 1.0 : -1.0;
-    double u = from, du = first_step;
+    double u = from, du = 0.5 * std::min(first_step, max_step);
     while (dir * (to - u) > 1e-12) {
         if (out.size() >= options.max_samples ||
             (out.size() % 1024 == 0 && options.deadline.expired())) {
@@ -111,11 +113,15 @@ bool walk(double from, double to, double first_step, const MotionOptions& option
             *failed_at = u;
             return false;
         }
-        du = std::min(2.0 * du, first_step);
+        du = std::min(2.0 * du, max_step);
         std::optional<std::vector<double>> next;
         double candidate = u;
         for (int attempt = 0; attempt < options.step_attempts; ++attempt) {
-            candidate = dir * (to - u) <= du ? to : u + dir * du;
+            // What is left after a full step, when less than another, is
+            // shared with it: a last step of a few nanometres would point
+            // the joint path anywhere, a kink that is only rounding.
+            const double left = dir * (to - u);
+            candidate = left <= du ? to : u + dir * (left < 2.0 * du ? 0.5 * left : du);
             next = config_at(candidate, &out.back().q);
             if (!next) break;
             const double change = largest_change(out.back().q, *next);
@@ -172,6 +178,9 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
         const int stroke = task::stroke_of(task, j);
         const int k = task::index_in_stroke(task, j);
         std::optional<std::vector<double>> q;
+        // Primitive j follows j - 1 in its stroke with no transition
+        // between: the last sample of j - 1 stands at the junction.
+        bool junction = j > 0 && k > 0 && !robot.has_proximal_link();
         if (j > 0 && k > 0 && robot.has_proximal_link()) {
             // The EE holds the transition point while the first joint sweeps
             // the short way round to its angle for the next primitive.
@@ -179,13 +188,17 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             const double to =
                 from + std::remainder(robot.proximal_angles[j] - from, geometry::kTau);
             const std::size_t before = out.size();
-            const bool ok =
-                walk(from, to, options.max_joint_step, options, Phase::Transition, k - 1, stroke,
-                     out, &failed_at, &gave_up, [&](double q1, const std::vector<double>* prev) {
-                         return transition_configuration(task, robot, j - 1, q1, prev);
-                     });
+            const bool ok = walk(from, to, options.max_joint_step, options.max_joint_step, options,
+                                 Phase::Transition, k - 1, stroke, out, &failed_at, &gave_up,
+                                 [&](double q1, const std::vector<double>* prev) {
+                                     return transition_configuration(task, robot, j - 1, q1, prev);
+                                 });
             if (!ok) return fail(j - 1, true, failed_at);
-            if (out.size() > before) out.pop_back();  // the last pose is the next trace's first
+            if (out.size() > before) {
+                out.pop_back();  // the last pose is the next trace's first
+            } else {
+                junction = true;
+            }
         } else if (j > 0 && k == 0) {
             // A new stroke: travel, pen up, to the pose that starts it.
             const auto start = configuration_at(task, robot, j, 0.0, &out.back().q);
@@ -200,16 +213,25 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                 out.push_back({0.0, Phase::Travel, last, 0.0, plan->poses[i], stroke - 1});
             q = plan->poses.back();
         }
-        if (!q) {
-            const std::vector<double>* prev = out.empty() ? nullptr : &out.back().q;
-            q = configuration_at(task, robot, j, 0.0, prev);
-        }
-        if (!q) return fail(j, false, 0.0);
-        out.push_back({0.0, Phase::Trace, k, 0.0, *q, stroke});
         const double length = geometry::length(task.trajectory[j]);
+        // At a junction the sample there ends primitive j - 1, and the
+        // trace of j begins a short step past it (its start is the same
+        // pose): a repeated pose would be a step that does not move, where
+        // any timing must stop.
+        double first_step = options.max_ee_step;
+        if (junction) {
+            first_step = std::min(options.junction_step, 0.5 * length);
+        } else {
+            if (!q) {
+                const std::vector<double>* prev = out.empty() ? nullptr : &out.back().q;
+                q = configuration_at(task, robot, j, 0.0, prev);
+            }
+            if (!q) return fail(j, false, 0.0);
+            out.push_back({0.0, Phase::Trace, k, 0.0, *q, stroke});
+        }
         const bool ok =
-            walk(0.0, length, options.max_ee_step, options, Phase::Trace, k, stroke, out,
-                 &failed_at, &gave_up, [&](double s, const std::vector<double>* p) {
+            walk(0.0, length, first_step, options.max_ee_step, options, Phase::Trace, k, stroke,
+                 out, &failed_at, &gave_up, [&](double s, const std::vector<double>* p) {
                      return configuration_at(task, robot, j, s, p);
                  });
         if (!ok) return fail(j, false, failed_at);
@@ -236,6 +258,12 @@ bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
             const double s = 0.5 * (a.s + b.s);
             if (auto q = configuration_at(task, robot, primitive_index(task, a), s, &a.q))
                 mid = Sample{a.t, Phase::Trace, a.primitive, s, *q, a.stroke};
+        } else if (a.phase == Phase::Trace && b.phase == Phase::Trace &&
+                   b.primitive == a.primitive + 1 && b.s > 0.0) {
+            // Across a junction: a stands where b's primitive starts.
+            const double s = 0.5 * b.s;
+            if (auto q = configuration_at(task, robot, primitive_index(task, b), s, &a.q))
+                mid = Sample{a.t, Phase::Trace, b.primitive, s, *q, b.stroke};
         } else if (robot.has_proximal_link() &&
                    (a.phase == Phase::Transition || b.phase == Phase::Transition)) {
             const Sample& t = a.phase == Phase::Transition ? a : b;

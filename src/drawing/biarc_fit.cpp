@@ -6,6 +6,7 @@
 #include <optional>
 
 #include <modsynth/task/input_error.h>
+#include <modsynth/text/printable.h>
 
 namespace modsynth::drawing {
 
@@ -28,12 +29,40 @@ constexpr int kSamples = 48;
 constexpr double kMargin = 0.95;
 /// Splits deeper than this cannot narrow a range usefully (2^-60).
 constexpr int kMaxDepth = 60;
-/// Pieces shorter than this are folded into their neighbour: they would
-/// be degenerate primitives (formats.md wants length > 0; the task reader
-/// treats 1e-9 m as zero).
-constexpr double kMinPiece = 1e-8;
+// kMinPiece (biarc_fit.h): shorter pieces would be degenerate primitives
+// (formats.md wants length > 0; the task reader treats 1e-9 m as zero).
 /// Radii beyond this are straight lines for any robot.
 constexpr double kMaxRadius = 1e3;
+/// Where no biarc spans anything from a point on (a cusp), the recursive
+/// split takes over for a stretch of at least this share of the curve's
+/// parameter, so that the greedy walk ends after at most this many such
+/// stretches whatever the curve.
+constexpr double kMinStretch = 1.0 / 4096;
+/// Calls of the recursive split per piece it may add (and a few over): each
+/// call that adds nothing splits a range in two, so only ranges of no
+/// length (which add nothing) could make more.
+constexpr std::size_t kSplitsPerPiece = 4;
+constexpr std::size_t kSplitsSpare = 4096;
+
+/// Why a curve is refused when it needs more pieces than it may have: the
+/// pieces left for it of what the drawing may have.
+std::string too_many(std::size_t left) {
+    return "needs more than the " + std::to_string(left) + " primitives left for it";
+}
+
+/// The bounding box of samples of segments; size() is its diagonal.
+struct Extent {
+    Vec2 min = Vec2::Constant(std::numeric_limits<double>::infinity());
+    Vec2 max = Vec2::Constant(-std::numeric_limits<double>::infinity());
+    void add(const Segment& s) {
+        for (int i = 0; i <= 32; ++i) {
+            const Vec2 p = point(s, i / 32.0);
+            min = min.cwiseMin(p);
+            max = max.cwiseMax(p);
+        }
+    }
+    double size() const { return std::hypot(max.x() - min.x(), max.y() - min.y()); }
+};
 
 /// Unit tangent at t, from inside [t0, t1]: at a cusp (zero derivative)
 /// the direction the curve leaves in, or arrives from.
@@ -165,7 +194,11 @@ struct Fitter {
     std::size_t max_primitives;
     const std::string& source;
     std::vector<Primitive>& out;
+    Clock::time_point deadline;
     double worst = 0.0;
+    std::size_t splits = 0;
+
+    void check_time() const { check_deadline(deadline, "fitting " + source); }
 
     /// One biarc over [t0, t1] when it lies within the tolerance.
     std::optional<std::vector<Primitive>> within(double t0, double t1, double& dev) const {
@@ -185,9 +218,10 @@ struct Fitter {
     void fit_greedy() {
         double t = 0.0;
         while (t < 1.0) {
+            check_time();
             if (out.size() > max_primitives) {
-                throw InputError(source, "needs more than " + std::to_string(max_primitives) +
-                                             " primitives at this tolerance: raise --tolerance");
+                throw InputError(
+                    source, too_many(max_primitives) + " at this tolerance: raise --tolerance");
             }
             double dev = 0.0;
             if (auto whole = within(t, 1.0, dev)) {
@@ -213,7 +247,7 @@ struct Fitter {
                 t = lo;
                 continue;
             }
-            const double next = std::min(1.0, t + (1.0 - t) / 64.0);
+            const double next = std::min(1.0, t + std::max((1.0 - t) / 64.0, kMinStretch));
             fit(t, next, point(segment, t), tangent(segment, t, t, next, true),
                 point(segment, next), tangent(segment, next, t, next, false), 0);
             t = next;
@@ -223,9 +257,15 @@ struct Fitter {
     void fit(double t0, double t1, const Vec2& p0, const Vec2& tan0, const Vec2& p1,
              const Vec2& tan1, int depth) {
         if (out.size() > max_primitives) {
-            throw InputError(source, "needs more than " + std::to_string(max_primitives) +
-                                         " primitives at this tolerance: raise --tolerance");
+            throw InputError(source,
+                             too_many(max_primitives) + " at this tolerance: raise --tolerance");
         }
+        if (++splits > kSplitsPerPiece * max_primitives + kSplitsSpare) {
+            throw InputError(source,
+                             "cannot be followed within the tolerance: it splits into more "
+                             "ranges than its pieces can cover; raise --tolerance");
+        }
+        if (splits % 64 == 0) check_time();
         const auto arcs = biarc(p0, tan0, p1, tan1);
         Measured m;
         if (arcs) {
@@ -266,10 +306,12 @@ struct Fitter {
     }
 };
 
-/// Exact primitives for lines and circular arcs; empty otherwise.
+/// Exact primitives for lines and circular arcs; empty otherwise. An arc
+/// of a radius beyond kMaxRadius is fitted instead, as lines.
 std::optional<Primitive> exact(const Segment& s) {
     if (const auto* l = std::get_if<LineSegment>(&s)) return make_line(l->a, l->b);
-    if (const auto* e = std::get_if<EllipticArc>(&s); e && is_circular(*e)) {
+    if (const auto* e = std::get_if<EllipticArc>(&s);
+        e && is_circular(*e) && e->u.norm() <= kMaxRadius) {
         const bool ccw = (e->t1 - e->t0) * cross(e->u, e->v) > 0.0;
         const Vec2 start = point(s, 0.0);
         if (std::abs(e->t1 - e->t0) >= kTau * (1.0 - 1e-12))
@@ -405,22 +447,44 @@ double deviation(const Segment& segment, double t0, double t1,
     return measure(segment, t0, t1, primitives, samples).deviation;
 }
 
-FittedCurve fit_curve(const Curve& curve, double tolerance, std::size_t max_primitives) {
+FittedCurve fit_curve(const Curve& curve, double tolerance, std::size_t max_primitives,
+                      Clock::time_point deadline) {
     FittedCurve result;
+    // A curve this small (a drawing scaled to 1e-200, coordinates of
+    // 1e-160 mm) has nothing a piece could follow, and squared distances
+    // across it underflow: refused before any fitting.
+    Extent whole;
+    for (const Segment& s : curve.segments) whole.add(s);
+    if (!(whole.size() >= kMinPiece)) {
+        throw InputError(curve.source,
+                         "is " + text::compact(whole.size()) +
+                             " m across once placed, less than the " + text::compact(kMinPiece) +
+                             " m the fitting resolves: check --width, --scale or the file's units");
+    }
     std::vector<Primitive> pieces;
     for (const Segment& s : curve.segments) {
+        check_deadline(deadline, "fitting " + curve.source);
+        // A segment below the resolution is its chord (or nothing), folded
+        // into its neighbours below.
+        Extent own;
+        own.add(s);
+        if (!(own.size() >= kMinPiece)) {
+            if (start_point(s) != end_point(s))
+                pieces.push_back(make_line(start_point(s), end_point(s)));
+            continue;
+        }
         if (const auto p = exact(s)) {
             pieces.push_back(*p);
             continue;
         }
         std::vector<Primitive> fitted;
-        Fitter f{s, tolerance, max_primitives, curve.source, fitted};
+        Fitter f{s, tolerance, max_primitives, curve.source, fitted, deadline};
         f.fit_greedy();
         result.deviation = std::max(result.deviation, f.worst);
         pieces.insert(pieces.end(), fitted.begin(), fitted.end());
         if (pieces.size() > max_primitives) {
-            throw InputError(curve.source, "needs more than " + std::to_string(max_primitives) +
-                                               " primitives at this tolerance: raise --tolerance");
+            throw InputError(curve.source,
+                             too_many(max_primitives) + " at this tolerance: raise --tolerance");
         }
     }
     result.primitives = without_slivers(merged(pieces));

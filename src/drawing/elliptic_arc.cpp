@@ -1,5 +1,6 @@
 #include "elliptic_arc.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace modsynth::drawing {
@@ -21,32 +22,50 @@ std::optional<EllipticArc> arc_from_endpoints(const Vec2& p0, const Vec2& p1, do
     const double c = std::cos(phi), s = std::sin(phi);
     const Vec2 half = (p0 - p1) / 2.0;
     const Vec2 q(c * half.x() + s * half.y(), -s * half.x() + c * half.y());
-    const double lambda = q.x() * q.x() / (rx * rx) + q.y() * q.y() / (ry * ry);
-    if (lambda > 1.0) {
-        rx *= std::sqrt(lambda);
-        ry *= std::sqrt(lambda);
+    // Everything in units of the radii, (a, b) = (qx / rx, qy / ry): SVG's
+    // formulas multiply squared radii, which underflow or overflow for
+    // radii far from 1 (1e-170 is a valid radius, scaled up below).
+    double a = q.x() / rx, b = q.y() / ry;
+    const double reach = std::hypot(a, b);  // sqrt of F.6.6's lambda
+    double k = 0.0;
+    if (reach > 1.0) {
+        // Radii too small: scaled up, in proportion, until the ellipse just
+        // spans the end points; its centre is then halfway between them.
+        const double scaled_rx = std::hypot(q.x(), q.y() * (rx / ry));
+        const double scaled_ry = std::hypot(q.x() * (ry / rx), q.y());
+        rx = scaled_rx;
+        ry = scaled_ry;
+        a = q.x() / rx;
+        b = q.y() / ry;
+    } else {
+        // The centre's offset from the midpoint, in units of the radii
+        // (F.6.5.2): sqrt((1 - lambda) / lambda), signed by the flags.
+        k = std::sqrt(std::max(0.0, (1.0 - reach) * (1.0 + reach))) / reach;
+        if (large_arc == sweep) k = -k;
     }
-    const double num = rx * rx * ry * ry - rx * rx * q.y() * q.y() - ry * ry * q.x() * q.x();
-    const double den = rx * rx * q.y() * q.y() + ry * ry * q.x() * q.x();
-    double k = std::sqrt(std::max(0.0, num / den));
-    if (large_arc == sweep) k = -k;
-    const Vec2 cq(k * rx * q.y() / ry, -k * ry * q.x() / rx);
+    const Vec2 cq(k * rx * b, -k * ry * a);
     EllipticArc arc;
     arc.center = Vec2(c * cq.x() - s * cq.y(), s * cq.x() + c * cq.y()) + (p0 + p1) / 2.0;
     arc.u = rx * Vec2(c, s);
     arc.v = ry * Vec2(-s, c);
-    const Vec2 a((q.x() - cq.x()) / rx, (q.y() - cq.y()) / ry);
-    const Vec2 b((-q.x() - cq.x()) / rx, (-q.y() - cq.y()) / ry);
-    arc.t0 = angle_between(Vec2::UnitX(), a);
-    double dt = angle_between(a, b);
+    const Vec2 from(a - k * b, b + k * a);
+    const Vec2 to(-a - k * b, -b + k * a);
+    arc.t0 = angle_between(Vec2::UnitX(), from);
+    double dt = angle_between(from, to);
     if (!sweep && dt > 0.0) dt -= geometry::kTau;
     if (sweep && dt < 0.0) dt += geometry::kTau;
     arc.t1 = arc.t0 + dt;
+    const bool finite = arc.center.allFinite() && arc.u.allFinite() && arc.v.allFinite() &&
+                        std::isfinite(arc.t0) && std::isfinite(arc.t1);
+    if (!finite || !(rx > 0.0) || !(ry > 0.0)) return std::nullopt;
     return arc;
 }
 
 std::optional<EllipticArc> arc_from_bulge(const Vec2& p0, const Vec2& p1, double bulge) {
-    if (bulge == 0.0 || p0 == p1) return std::nullopt;
+    // Below kStraightBulge the centre lies so far out (chord / (4 bulge))
+    // that evaluating the arc through it errs by more than the arc strays
+    // from its chord (bulge * chord / 2): the chord is the better line.
+    if (std::abs(bulge) < kStraightBulge || p0 == p1) return std::nullopt;
     const double sweep = 4.0 * std::atan(bulge);
     const double chord = (p1 - p0).norm();
     const double radius = chord / (2.0 * std::abs(std::sin(sweep / 2.0)));

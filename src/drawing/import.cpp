@@ -81,6 +81,7 @@ ImportResult import_drawing(std::string_view text, DrawingFormat format,
     }
     const Drawing drawing =
         format == DrawingFormat::Svg ? read_svg(text, options.read) : read_dxf(text, options.read);
+    check_deadline(options.deadline, "reading the drawing");
     const Affine map = placement_map(drawing, options.placement);
     ImportResult result;
     result.placement = map;
@@ -104,7 +105,13 @@ ImportResult import_drawing(std::string_view text, DrawingFormat format,
             check(start_point(placed.segments.back()), c.source);
             check(end_point(placed.segments.back()), c.source);
         }
-        FittedCurve f = fit_curve(placed, options.tolerance, task::kMaxPrimitives - total);
+        if (total >= task::kMaxPrimitives) {
+            throw InputError(c.source, "the drawing needs more than " +
+                                           std::to_string(task::kMaxPrimitives) +
+                                           " primitives: raise --tolerance or simplify it");
+        }
+        FittedCurve f =
+            fit_curve(placed, options.tolerance, task::kMaxPrimitives - total, options.deadline);
         for (const geometry::Primitive& p : f.primitives) {
             check(p.center, c.source + " (an arc's center)");
         }

@@ -16,6 +16,11 @@ using geometry::Vec2;
 /// greedy order alone is kept.
 constexpr std::size_t kMaxTwoOpt = 1000;
 constexpr int kMaxPasses = 50;
+/// Chains moved by 2-opt's reversals, in all: each pass compares at most
+/// kMaxTwoOpt^2 / 2 pairs, but every improvement found reverses a run, so
+/// the moves are capped too (the same for every run: the order stays
+/// repeatable).
+constexpr std::size_t kMaxMoves = 50'000'000;
 
 Chain reversed_chain(const Chain& c) {
     Chain out;
@@ -78,7 +83,8 @@ StrokeOrder order_strokes(std::vector<Chain> chains, bool keep_order) {
         // 2-opt: reversing the run i..j (order and directions) replaces the
         // gaps before i and after j; keep it when shorter.
         if (n <= kMaxTwoOpt) {
-            for (int pass = 0; pass < kMaxPasses; ++pass) {
+            std::size_t moves = 0;
+            for (int pass = 0; pass < kMaxPasses && moves < kMaxMoves; ++pass) {
                 bool improved = false;
                 for (std::size_t i = 1; i < n; ++i) {
                     for (std::size_t j = i; j < n; ++j) {
@@ -89,7 +95,8 @@ StrokeOrder order_strokes(std::vector<Chain> chains, bool keep_order) {
                         const double new_gap =
                             (end_of(tour[j]) - before).norm() +
                             (j + 1 < n ? (start_of(tour[j + 1]) - start_of(tour[i])).norm() : 0.0);
-                        if (new_gap < old_gap - 1e-12) {
+                        if (new_gap < old_gap - 1e-12 && moves < kMaxMoves) {
+                            moves += j + 1 - i;
                             std::reverse(tour.begin() + i, tour.begin() + j + 1);
                             for (std::size_t k = i; k <= j; ++k) tour[k].flipped = !tour[k].flipped;
                             improved = true;

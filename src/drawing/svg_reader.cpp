@@ -1,10 +1,12 @@
 #include <modsynth/drawing/svg_reader.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 // SVG++ nests Boost.Parameter lists deeper than Boost's default arity.
@@ -15,6 +17,7 @@
 #include <svgpp/svgpp.hpp>
 
 #include <modsynth/task/input_error.h>
+#include <modsynth/text/printable.h>
 
 #include "elliptic_arc.h"
 #include "svg_xml_policy.h"
@@ -32,8 +35,8 @@ constexpr double kMmPerPx = 25.4 / kPxPerInch;
 
 /// "path#p3 (line 12)": how messages name an element.
 std::string element_label(XmlElement e) {
-    std::string label = svg_xml::local_name(e->Name());
-    if (const char* id = e->Attribute("id")) label += std::string("#") + id;
+    std::string label = text::printable(svg_xml::local_name(e->Name()), 40);
+    if (const char* id = e->Attribute("id")) label += "#" + text::printable(id, 40);
     return label + " (line " + std::to_string(e->GetLineNum()) + ")";
 }
 
@@ -57,11 +60,67 @@ bool in_layer(XmlElement e, const std::string& layer) {
     return false;
 }
 
+std::string_view trimmed(std::string_view v) {
+    const auto b = v.find_first_not_of(" \t\r\n");
+    if (b == std::string_view::npos) return {};
+    return v.substr(b, v.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+std::string lower(std::string_view v) {
+    std::string out(v);
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return out;
+}
+
+/// The value an element gives a presentation property, in lower case: its
+/// style attribute's declaration (which wins) or the attribute of that
+/// name; empty when it gives none. Style sheets are not read.
+std::string property(XmlElement e, std::string_view name) {
+    std::string value;
+    if (const char* a = e->Attribute(std::string(name).c_str())) value = lower(trimmed(a));
+    const char* style = e->Attribute("style");
+    for (std::string_view rest = style ? style : ""; !rest.empty();) {
+        const auto semi = rest.find(';');
+        const std::string_view declaration = rest.substr(0, semi);
+        rest = semi == std::string_view::npos ? std::string_view{} : rest.substr(semi + 1);
+        const auto colon = declaration.find(':');
+        if (colon == std::string_view::npos || lower(trimmed(declaration.substr(0, colon))) != name)
+            continue;
+        value = lower(trimmed(declaration.substr(colon + 1)));
+        const auto important = value.find("!important");
+        if (important != std::string::npos)
+            value = std::string(trimmed(value.substr(0, important)));
+    }
+    return value;
+}
+
+/// Whether an element is rendered, as far as its parent's state and its own
+/// display and visibility say: display none hides it and all it holds;
+/// visibility is inherited, and a child may turn it back on.
+struct Rendering {
+    bool displayed = true;
+    bool visible = true;
+
+    Rendering of(XmlElement e) const {
+        Rendering r = *this;
+        if (property(e, "display") == "none") r.displayed = false;
+        const std::string v = property(e, "visibility");
+        if (v == "hidden" || v == "collapse") r.visible = false;
+        if (v == "visible") r.visible = true;
+        return r;
+    }
+    bool drawn() const { return displayed && visible; }
+};
+
 /// Walks what SVG++ will walk, before it does: every element must be one
 /// that can be drawn (or one that draws nothing), so that nothing in the
-/// drawing is dropped without a word. Returns whether the obstacle layer
-/// was seen.
-void check_elements(XmlElement e, const ReadOptions& options, std::vector<std::string>& unsupported,
+/// drawing is dropped without a word. Elements that are not rendered
+/// (display none, visibility hidden) are not drawn: the shapes among them
+/// go to `not_drawn`, and an element that cannot be drawn is no error there.
+/// Sets `layer_seen` when the obstacle layer was seen.
+void check_elements(XmlElement e, const Rendering& rendering, const ReadOptions& options,
+                    std::vector<std::string>& unsupported, std::set<XmlElement>& not_drawn,
                     bool& layer_seen, std::size_t& count) {
     for (XmlElement c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
         if (!svg_xml::is_svg_element(c)) continue;
@@ -71,7 +130,11 @@ void check_elements(XmlElement e, const ReadOptions& options, std::vector<std::s
         }
         const std::string_view name = svg_xml::local_name(c->Name());
         if (kNotDrawn.count(name)) continue;
-        if (kShapes.count(name)) continue;
+        const Rendering own = rendering.of(c);
+        if (kShapes.count(name)) {
+            if (!own.drawn()) not_drawn.insert(c);
+            continue;
+        }
         if (kContainers.count(name)) {
             if (!options.obstacle_layer.empty() && name == "g") {
                 const char* id = c->Attribute("id");
@@ -81,9 +144,10 @@ void check_elements(XmlElement e, const ReadOptions& options, std::vector<std::s
                     layer_seen = true;
                 }
             }
-            check_elements(c, options, unsupported, layer_seen, count);
+            check_elements(c, own, options, unsupported, not_drawn, layer_seen, count);
             continue;
         }
+        if (!own.drawn()) continue;
         std::string why;
         if (name == "text") why = " (convert text to paths first)";
         if (name == "image") why = " (a bitmap has no strokes)";
@@ -95,6 +159,8 @@ void check_elements(XmlElement e, const ReadOptions& options, std::vector<std::s
 /// Shared by every element's context: what has been read so far.
 struct SvgState {
     const ReadOptions* options = nullptr;
+    /// Shapes that are not rendered (display none, visibility hidden).
+    std::set<XmlElement> not_drawn;
     std::vector<Curve> curves;  ///< in the outer viewport's pixels, y down
     std::vector<geometry::Disc> obstacles;
     std::size_t segments = 0;
@@ -159,6 +225,7 @@ public:
         : BaseContext(parent), element_(element), label_(element_label(element)) {
         obstacle_ = !state_->options->obstacle_layer.empty() &&
                     in_layer(element, state_->options->obstacle_layer);
+        if (state_->not_drawn.count(element)) hidden_ = true;
     }
 
     void path_move_to(double x, double y, svgpp::tag::coordinate::absolute) {
@@ -185,8 +252,11 @@ public:
         const Vec2 end(x, y);
         if (const auto arc = arc_from_endpoints(current_, end, rx, ry, rotation, large, sweep)) {
             add(*arc);
-        } else {
+        } else if (rx == 0.0 || ry == 0.0 || end == current_) {
             add(LineSegment{current_, end});  // zero radius: a line (SVG 1.1 F.6.2)
+        } else {
+            throw InputError(label_, "an arc of radii " + text::compact(rx) + " and " +
+                                         text::compact(ry) + " that no ellipse can draw");
         }
     }
     void path_close_subpath() {
@@ -200,6 +270,8 @@ public:
 
     void set_circle(double cx, double cy, double r) { set_ellipse(cx, cy, r, r); }
     void set_ellipse(double cx, double cy, double rx, double ry) {
+        ++commands_;
+        if (hidden_) return;
         if (!(rx > 0.0) || !(ry > 0.0)) throw InputError(label_, "zero-length curve (radius 0)");
         EllipticArc e{Vec2(cx, cy), Vec2(rx, 0.0), Vec2(0.0, ry), 0.0, geometry::kTau};
         if (obstacle_) {
@@ -208,10 +280,8 @@ public:
                 throw InputError(label_, "an obstacle must be a circle, not an ellipse");
             }
             state_->obstacles.push_back({placed.center, placed.u.norm()});
-            ++commands_;
             return;
         }
-        ++commands_;
         pending_.push_back(e);
         flush();
     }
@@ -356,14 +426,62 @@ typedef svgpp::document_traversal<
     svgpp::path_policy<PathPolicy>, svgpp::error_policy<ErrorPolicy<BaseContext>>>
     DocumentTraversal;
 
-std::string quoted(const std::string& value) {
-    constexpr std::size_t kShown = 60;
-    std::string shown = value.size() > kShown ? value.substr(0, kShown) + "..." : value;
-    for (char& c : shown) {
-        if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+/// tinyxml2 compares each attribute with the element's earlier ones (an
+/// element of a million attributes takes hours) and spends far more memory
+/// on a node than its bytes: elements and attributes are counted before it
+/// parses, delimited as it delimits them.
+void check_xml_size(std::string_view text) {
+    constexpr std::size_t kMaxElements = 8 * kMaxCurves;
+    constexpr std::size_t kMaxAttributes = 16 * kMaxCurves;
+    constexpr std::size_t kMaxOwnAttributes = 256;
+    const auto line_of = [&](std::size_t at) {
+        return std::to_string(1 + std::count(text.begin(), text.begin() + at, '\n'));
+    };
+    std::size_t elements = 0, attributes = 0;
+    for (std::size_t at = text.find('<'); at != std::string_view::npos; at = text.find('<', at)) {
+        const std::string_view rest = text.substr(at);
+        const auto skip_past = [&](std::string_view end) {
+            const auto found = text.find(end, at + 1);
+            return found == std::string_view::npos ? text.size() : found + end.size();
+        };
+        if (rest.substr(0, 4) == "<!--") {
+            at = skip_past("-->");
+        } else if (rest.substr(0, 9) == "<![CDATA[") {
+            at = skip_past("]]>");
+        } else if (rest.substr(0, 2) == "<?") {
+            at = skip_past("?>");
+        } else if (rest.substr(0, 2) == "<!" || rest.substr(0, 2) == "</") {
+            at = skip_past(">");
+        } else {
+            // A start tag: name="value" pairs, a quoted value holding anything
+            // but its quote.
+            std::size_t own = 0, k = at + 1;
+            for (; k < text.size() && text[k] != '>'; ++k) {
+                if (text[k] == '"' || text[k] == '\'') {
+                    k = std::min(text.find(text[k], k + 1), text.size() - 1);
+                } else if (text[k] == '=') {
+                    ++own;
+                }
+            }
+            if (own > kMaxOwnAttributes) {
+                throw InputError("(document)", "an element (line " + line_of(at) +
+                                                   ") with more than " +
+                                                   std::to_string(kMaxOwnAttributes) +
+                                                   " attributes: too large for a drawing");
+            }
+            attributes += own;
+            if (++elements > kMaxElements || attributes > kMaxAttributes) {
+                throw InputError("(document)", "more than " + std::to_string(kMaxElements) +
+                                                   " elements or " +
+                                                   std::to_string(kMaxAttributes) +
+                                                   " attributes: too large for a drawing");
+            }
+            at = k;
+        }
     }
-    return "'" + shown + "'";
 }
+
+std::string quoted(const std::string& value) { return "'" + text::printable(value, 60) + "'"; }
 
 }  // namespace
 
@@ -372,6 +490,7 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
         throw InputError("(document)", "the file is larger than " +
                                            std::to_string(kMaxDrawingBytes >> 20) + " MB");
     }
+    check_xml_size(text);
     tinyxml2::XMLDocument doc;
     if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
         throw InputError("(document)", std::string("not an SVG file: XML error at line ") +
@@ -380,25 +499,34 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
     }
     XmlElement root = doc.RootElement();
     if (!root || std::strcmp(svg_xml::local_name(root->Name()), "svg") != 0) {
-        throw InputError("(document)", std::string("not an SVG file: the root element is <") +
-                                           (root ? root->Name() : "") + ">, not <svg>");
+        throw InputError("(document)", "not an SVG file: the root element is <" +
+                                           text::printable(root ? root->Name() : "") +
+                                           ">, not <svg>");
     }
     std::vector<std::string> unsupported;
+    SvgState state;
+    state.options = &options;
     bool layer_seen = false;
     std::size_t count = 0;
-    check_elements(root, options, unsupported, layer_seen, count);
+    check_elements(root, Rendering{}.of(root), options, unsupported, state.not_drawn, layer_seen,
+                   count);
     if (!unsupported.empty()) {
+        // The first few by name; a message is for reading, not a list of
+        // thousands.
+        constexpr std::size_t kNamed = 10;
         std::string list;
-        for (const std::string& u : unsupported) list += (list.empty() ? "" : ", ") + u;
+        for (std::size_t i = 0; i < std::min(unsupported.size(), kNamed); ++i)
+            list += (list.empty() ? "" : ", ") + unsupported[i];
+        if (unsupported.size() > kNamed)
+            list += " and " + std::to_string(unsupported.size() - kNamed) + " more";
         throw InputError(element_label(root), "elements that cannot be drawn: " + list);
     }
     if (!options.obstacle_layer.empty() && !layer_seen) {
         throw InputError("(document)", "no layer or group with id or label '" +
-                                           options.obstacle_layer + "' (--obstacles-from)");
+                                           text::printable(options.obstacle_layer) +
+                                           "' (--obstacles-from)");
     }
 
-    SvgState state;
-    state.options = &options;
     BaseContext context(state);
     // An outer svg without width and height is as large as its viewBox, in
     // pixels (what browsers show).
@@ -417,10 +545,10 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
         if (const auto* bad = dynamic_cast<const svgpp::invalid_value_error<char>*>(&e)) {
             if (bad->name() == "d")
                 throw InputError(part, "malformed path data " + quoted(bad->value()));
-            throw InputError(part,
-                             "malformed attribute " + bad->name() + "=" + quoted(bad->value()));
+            throw InputError(part, "malformed attribute " + text::printable(bad->name()) + "=" +
+                                       quoted(bad->value()));
         }
-        throw InputError(part, e.what());
+        throw InputError(part, text::printable(e.what(), 200));
     }
     if (state.curves.empty()) throw InputError("(document)", "empty drawing: nothing to draw");
 

@@ -1,11 +1,14 @@
 #include <modsynth/io/input.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 #include <nlohmann/json.hpp>
@@ -67,19 +70,56 @@ std::string json_error_detail(const std::exception& e) {
 
 }  // namespace
 
-std::string read_input_file(const std::string& path, const std::string& what) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        throw InputError(path, "is a folder, not a " + what + " file");
+std::string read_input_file(const std::string& path, const std::string& what,
+                            std::size_t max_bytes) {
+    // Opened without waiting (a FIFO with no writer would block here), then
+    // judged by what was opened, so that nothing can be swapped in between.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        const int err = errno;
+        std::error_code ec;
+        if (std::filesystem::is_directory(path, ec))
+            throw InputError(path, "is a folder, not a " + what + " file");
+        throw InputError(path, "cannot open the " + what + " file: " + std::strerror(err));
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw InputError(path, "cannot open the " + what + " file: " + std::strerror(errno));
+    struct Closer {
+        int fd;
+        ~Closer() { ::close(fd); }
+    } closer{fd};
+    struct stat st {};
+    if (::fstat(fd, &st) != 0)
+        throw InputError(path, "cannot read the " + what + " file: " + std::strerror(errno));
+    if (S_ISDIR(st.st_mode)) throw InputError(path, "is a folder, not a " + what + " file");
+    if (!S_ISREG(st.st_mode)) {
+        throw InputError(
+            path, "is not a regular file (a device, FIFO or socket), not a " + what + " file");
     }
-    std::ostringstream content;
-    content << in.rdbuf();
-    if (in.bad()) throw InputError(path, "cannot read the " + what + " file");
-    return content.str();
+    const auto too_large = [&](std::size_t bytes) {
+        return InputError(path, std::to_string(bytes) + " bytes, more than the " +
+                                    std::to_string(max_bytes) + " allowed for a " + what + " file");
+    };
+    if (static_cast<std::uintmax_t>(st.st_size) > max_bytes)
+        throw too_large(static_cast<std::size_t>(st.st_size));
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    // Read to the end, never past the cap: the file may grow meanwhile.
+    std::string content;
+    content.resize(std::min<std::size_t>(static_cast<std::size_t>(st.st_size), max_bytes) + 1);
+    std::size_t got = 0;
+    for (;;) {
+        if (got == content.size()) {
+            if (got > max_bytes) throw too_large(got);
+            content.resize(std::min(max_bytes + 1, std::max<std::size_t>(2 * got, 4096)));
+        }
+        const ssize_t n = ::read(fd, content.data() + got, content.size() - got);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0)
+            throw InputError(path, "cannot read the " + what + " file: " + std::strerror(errno));
+        if (n == 0) break;
+        got += static_cast<std::size_t>(n);
+    }
+    if (got > max_bytes) throw too_large(got);
+    content.resize(got);
+    return content;
 }
 
 nlohmann::json parse_json_text(std::string_view text) {

@@ -7,7 +7,9 @@
 
 #include <modsynth/io/input.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/task/limits.h>
 #include <modsynth/task/part.h>
+#include <modsynth/task/spatial_strokes.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/printable.h>
 
@@ -224,6 +226,35 @@ kinematics::Robot parse_robot(const json& doc) {
     return robot;
 }
 
+/// A spatial solution's robot (formats.md "Spatial tasks"): base [x, y, z]
+/// and one DH row per joint.
+kinematics::DhChain parse_dh_robot(const json& r) {
+    const std::string part = "robot";
+    kinematics::DhChain chain;
+    const int dof = integer(required(r, part, "dof"), member(part, "dof"), task::kMinSpatialDof,
+                            task::kMaxSpatialDof);
+    const std::vector<double> b = numbers(required(r, part, "base"), member(part, "base"), 3);
+    chain.base = {b[0], b[1], b[2]};
+    const std::string dp = member(part, "dh");
+    const json& dh = required(r, part, "dh");
+    require_array(dh, dp, "DH rows {\"a\", \"alpha\", \"d\"}");
+    if (static_cast<int>(dh.size()) != dof)
+        throw InputError(dp, "expected " + std::to_string(dof) + " rows (one per joint), got " +
+                                 std::to_string(dh.size()));
+    for (std::size_t k = 0; k < dh.size(); ++k) {
+        const std::string rp = element(dp, k);
+        require_object(dh[k], rp);
+        kinematics::DhRow row;
+        row.a = finite_number(required(dh[k], rp, "a"), member(rp, "a"));
+        row.alpha = finite_number(required(dh[k], rp, "alpha"), member(rp, "alpha"));
+        row.d = finite_number(required(dh[k], rp, "d"), member(rp, "d"));
+        chain.rows.push_back(row);
+    }
+    chain.link_diameter =
+        positive_number(required(r, part, "link_diameter"), member(part, "link_diameter"));
+    return chain;
+}
+
 control::Phase parse_phase(const json& j, const std::string& part) {
     const std::string p = text(j, part);
     if (p == "trace") return control::Phase::Trace;
@@ -233,10 +264,19 @@ control::Phase parse_phase(const json& j, const std::string& part) {
                                text::printable(p) + "\"");
 }
 
+/// Seconds: no motion a robot executes lasts longer (32 years), and a ROS 2
+/// Duration holds its whole seconds in 32 bits.
+constexpr double kLongestMotion = 1e9;
+
 control::Sample parse_sample(const json& j, const std::string& part, int dof) {
     require_object(j, part);
     control::Sample s;
     s.t = finite_number(required(j, part, "t"), member(part, "t"));
+    if (!(s.t >= 0.0 && s.t <= kLongestMotion)) {
+        throw InputError(member(part, "t"), text::compact(s.t) +
+                                                " s: a motion's times lie within 0 to " +
+                                                text::compact(kLongestMotion) + " s");
+    }
     s.phase = parse_phase(required(j, part, "phase"), member(part, "phase"));
     s.primitive = integer(required(j, part, "primitive"), member(part, "primitive"), 0,
                           std::numeric_limits<int>::max());
@@ -329,9 +369,16 @@ ParsedSolution parse_solution(const json& doc) {
         s.explanation = parse_explanation(doc);
         return out;
     }
-    s.robot = parse_robot(doc);
-    s.samples = parse_samples(doc, s.robot.dof());
-    if (s.robot.elbow == 0) s.robot.elbow = elbow_from_samples(s.samples);
+    // A robot with `dh` is a spatial one (formats.md "Spatial tasks").
+    const json* robot = optional(doc, "robot");
+    if (robot && robot->is_object() && robot->contains("dh")) {
+        s.dh_robot = parse_dh_robot(*robot);
+        s.samples = parse_samples(doc, s.dh_robot->dof());
+    } else {
+        s.robot = parse_robot(doc);
+        s.samples = parse_samples(doc, s.robot.dof());
+        if (s.robot.elbow == 0) s.robot.elbow = elbow_from_samples(s.samples);
+    }
     if (const json* c = optional(doc, "certificate")) {
         s.certificate = parse_certificate(*c);
         out.has_certificate = true;
@@ -344,7 +391,7 @@ ParsedSolution parse_solution_text(std::string_view text) {
 }
 
 ParsedSolution load_solution(const std::string& path) {
-    return parse_solution_text(read_input_file(path, "solution"));
+    return parse_solution_text(read_input_file(path, "solution", task::kMaxSolutionBytes));
 }
 
 void check_solution_fits(const task::Task& task, const synth::Solution& solution) {
@@ -352,6 +399,7 @@ void check_solution_fits(const task::Task& task, const synth::Solution& solution
         throw InputError("task", "the solution is for task \"" + solution.task_name + "\", not \"" +
                                      task.name + "\"");
     }
+    if (solution.dh_robot) throw InputError("robot.dh", "a spatial robot, but the task is planar");
     const int strokes = task::stroke_count(task);
     for (std::size_t i = 0; i < solution.samples.size(); ++i) {
         const control::Sample& x = solution.samples[i];
@@ -369,6 +417,33 @@ void check_solution_fits(const task::Task& task, const synth::Solution& solution
                                          : std::string("the task has only ")) +
                     std::to_string(primitives) + " primitives");
         }
+    }
+}
+
+void check_solution_fits(const task::SpatialTask& task, const synth::Solution& solution) {
+    if (!solution.task_name.empty() && !task.name.empty() && solution.task_name != task.name)
+        throw InputError("task", "the solution is for task \"" + solution.task_name + "\", not \"" +
+                                     task.name + "\"");
+    if (solution.status == synth::Status::Solved && !solution.dh_robot)
+        throw InputError("robot",
+                         "a planar robot (link_lengths), but the task is spatial; its "
+                         "robot is {\"dof\", \"base\": [x, y, z], \"dh\": [...], "
+                         "\"link_diameter\"}");
+    const int strokes = task::stroke_count(task);
+    for (std::size_t i = 0; i < solution.samples.size(); ++i) {
+        const control::Sample& x = solution.samples[i];
+        if (x.stroke >= strokes)
+            throw InputError(member(element("samples", i), "stroke"),
+                             "the task has only " + std::to_string(strokes) +
+                                 (strokes == 1 ? " stroke" : " strokes"));
+        const int primitives =
+            task::stroke_last(task, x.stroke) - task::stroke_first(task, x.stroke) + 1;
+        if (x.primitive >= primitives)
+            throw InputError(
+                member(element("samples", i), "primitive"),
+                (task::has_strokes(task) ? "strokes[" + std::to_string(x.stroke) + "] has only "
+                                         : std::string("the task has only ")) +
+                    std::to_string(primitives) + " primitives");
     }
 }
 

@@ -70,6 +70,16 @@ nlohmann::json to_json(const hardware::ModuleSelection& m) {
 
 }  // namespace
 
+nlohmann::json to_json(const kinematics::DhChain& chain) {
+    nlohmann::json dh = nlohmann::json::array();
+    for (const auto& row : chain.rows)
+        dh.push_back({{"a", row.a}, {"alpha", row.alpha}, {"d", row.d}});
+    return {{"dof", chain.dof()},
+            {"base", {chain.base.x(), chain.base.y(), chain.base.z()}},
+            {"dh", dh},
+            {"link_diameter", chain.link_diameter}};
+}
+
 void add_witnesses(const synth::Explanation& e, nlohmann::json& out) {
     if (e.separation) out["separation"] = to_json(*e.separation);
     if (e.geodesic) out["geodesic"] = to_json(*e.geodesic);
@@ -86,12 +96,16 @@ nlohmann::json to_json(const synth::Solution& s) {
         add_witnesses(s.explanation, doc["explanation"]);
         return doc;
     }
-    const auto& r = s.robot;
-    doc["robot"] = {{"dof", r.dof()},
-                    {"base", {r.base.x(), r.base.y()}},
-                    {"link_lengths", r.link_lengths},
-                    {"link_diameter", r.link_diameter},
-                    {"elbow", r.elbow}};
+    if (s.dh_robot) {
+        doc["robot"] = to_json(*s.dh_robot);
+    } else {
+        const auto& r = s.robot;
+        doc["robot"] = {{"dof", r.dof()},
+                        {"base", {r.base.x(), r.base.y()}},
+                        {"link_lengths", r.link_lengths},
+                        {"link_diameter", r.link_diameter},
+                        {"elbow", r.elbow}};
+    }
     // `stroke` only when the motion has several (formats.md "Several
     // strokes": default 0), so one-stroke solutions read as the base format.
     const bool strokes = std::any_of(s.samples.begin(), s.samples.end(),

@@ -534,7 +534,17 @@ void parse_joint_limits(const json& robot, const std::string& robot_part, RobotS
                          "has " + std::to_string(na) + " values but velocity has " +
                              std::to_string(nv) + "; both lists need one value per joint");
     }
-    const std::size_t per_joint = std::max(nv, na);
+    if (const json* jerk = optional(*limits, "jerk")) {
+        spec.jerk = joint_limit_values(*jerk, member(part, "jerk"), "rad/s^3", r.dof);
+        const std::size_t nj = spec.jerk.size(), other = std::max(nv, na);
+        if (nj > 1 && other > 1 && nj != other) {
+            throw InputError(member(part, "jerk"), "has " + std::to_string(nj) + " values but " +
+                                                       (nv > 1 ? "velocity" : "acceleration") +
+                                                       " has " + std::to_string(other) +
+                                                       "; every list needs one value per joint");
+        }
+    }
+    const std::size_t per_joint = std::max({nv, na, spec.jerk.size()});
     if (per_joint > 1) r.dof = {static_cast<int>(per_joint)};
     r.joint_limits = std::move(spec);
 }
@@ -581,16 +591,16 @@ void check_format(const json& doc) {
     }
 }
 
-/// `"space": "plane"` (or no `space`) is the planar task; spatial tasks
-/// (`"3d"`, docs/formats.md "Spatial tasks") are not read yet and are refused
-/// by name rather than misread as planar.
+/// `"space": "plane"` (or no `space`) is the planar task; a spatial task
+/// (`"3d"`, io/spatial_task_io.h) is refused by name rather than misread as
+/// planar, by callers that take planar tasks only.
 void check_space(const json& doc) {
     const json* space = optional(doc, "space");
     if (!space) return;
     const std::string value = text(*space, "space", "\"plane\" or \"3d\"");
     if (value == "plane") return;
     if (value == "3d") {
-        throw InputError("space", "spatial tasks (\"space\": \"3d\") are not implemented yet");
+        throw InputError("space", "spatial tasks (\"space\": \"3d\") are not supported here yet");
     }
     throw InputError("space", "expected \"plane\" or \"3d\", got " + describe(*space));
 }
@@ -667,14 +677,7 @@ Task parse_task_text(std::string_view text) {
 }
 
 Task load_task(const std::string& path) {
-    // Checked before reading, so that a huge file is not loaded at all.
-    std::error_code ec;
-    const auto bytes = std::filesystem::file_size(path, ec);
-    if (!ec && bytes > kMaxTaskBytes) {
-        throw InputError(path, std::to_string(bytes) + " bytes, more than the " +
-                                   std::to_string(kMaxTaskBytes) + " allowed for a task file");
-    }
-    Task task = parse_task_text(read_input_file(path, "task"));
+    Task task = parse_task_text(read_input_file(path, "task", kMaxTaskBytes));
     if (task.name.empty()) task.name = std::filesystem::path(path).stem().string();
     return task;
 }
@@ -726,6 +729,7 @@ json to_json(const Task& task) {
         };
         robot["joint_limits"] = {{"velocity", values(l->velocity)},
                                  {"acceleration", values(l->acceleration)}};
+        if (!l->jerk.empty()) robot["joint_limits"]["jerk"] = values(l->jerk);
     }
     add_loads_json(task.robot, robot);
     json doc = {{"format", kFormat},

@@ -35,7 +35,12 @@ std::string joint_trajectory_yaml(const synth::Solution& solution) {
                 "joint trajectory: samples[%zu] has no velocities or accelerations; the motion "
                 "is not timed",
                 i));
-        // Whole nanoseconds, as builtin_interfaces/Duration holds them.
+        // Whole nanoseconds, as builtin_interfaces/Duration holds them: its
+        // seconds are 32 bits, and a negative time means nothing here.
+        if (!(s.t >= 0.0 && s.t <= 2147483647.0))
+            throw std::invalid_argument(text::format(
+                "joint trajectory: samples[%zu] is at t = %g s, which a Duration cannot hold", i,
+                s.t));
         const long long ns = std::llround(s.t * 1e9);
         out += "  - positions: " + list(s.q) + "\n    velocities: " + list(s.qd) +
                "\n    accelerations: " + list(s.qdd) + "\n    effort: []\n" +

@@ -2,8 +2,11 @@
 
 #include <modsynth/control/joint_limits.h>
 #include <modsynth/control/motion.h>
+#include <modsynth/control/path_corners.h>
 #include <modsynth/control/retime.h>
+#include <modsynth/control/spatial_samples.h>
 #include <modsynth/synth/synthesizer.h>
+#include <modsynth/verify/spatial_verifier.h>
 
 namespace modsynth::output {
 
@@ -22,9 +25,19 @@ std::string recertify(const task::Task& task, io::ParsedSolution& parsed) {
     // timed for the controller outputs as solve would; its path is kept.
     const control::JointLimits limits = control::joint_limits_for(task, s.robot.dof());
     if (s.samples.front().qd.empty() || s.samples.front().qdd.empty())
-        s.samples = control::retime(std::move(s.samples), limits);
+        s.samples = control::retime_for(task, std::move(s.samples), limits);
     // Figures recomputed from an unchanged motion are the stored ones, so
     // the report of a saved solution matches the one solve wrote.
+    return parsed.has_certificate ? ""
+                                  : "computed by export: the solution file carries no certificate";
+}
+
+std::string recertify(const task::SpatialTask& task, io::ParsedSolution& parsed) {
+    io::check_solution_fits(task, parsed.solution);
+    synth::Solution& s = parsed.solution;
+    if (s.status != synth::Status::Solved) return "";
+    control::recover_parameters(task, *s.dh_robot, s.samples);
+    s.certificate = verify::certify(task, *s.dh_robot, s.samples);
     return parsed.has_certificate ? ""
                                   : "computed by export: the solution file carries no certificate";
 }

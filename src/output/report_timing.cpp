@@ -50,11 +50,13 @@ std::string curve(const Samples& s, const Pick& pick, std::size_t k, const Axes&
     return out;
 }
 
+/// `end`: the motion's duration, when `s` is drawn from its steps and ends
+/// before it.
 std::string chart(const char* id, const std::string& title, const Samples& s, const Pick& pick,
-                  const std::vector<double>* limits) {
-    const std::size_t dof = s[0].q.size();
+                  const std::vector<double>* limits, double end = 0.0) {
+    const std::size_t dof = pick(s[0]).size();
     Axes a;
-    a.t_end = std::max(s.back().t, 1e-9);
+    a.t_end = std::max({s.back().t, end, 1e-9});
     a.lo = 1e300;
     a.hi = -1e300;
     for (const auto& x : s) {
@@ -89,7 +91,7 @@ std::string chart(const char* id, const std::string& title, const Samples& s, co
         out += "<text x=\"" + plot::n2(kLeft - 4.0) + "\" y=\"" + plot::n2(a.y(v) + 4.0) +
                "\" font-size=\"10\" text-anchor=\"end\">" + text::format("%.3g", v) + "</text>\n";
     out += "<text x=\"" + plot::n2(kWidth - kRight) + "\" y=\"" + plot::n2(kHeight - 8.0) +
-           "\" font-size=\"10\" text-anchor=\"end\">" + text::format("%.3f s", s.back().t) +
+           "\" font-size=\"10\" text-anchor=\"end\">" + text::format("%.3f s", a.t_end) +
            "</text>\n<text x=\"" + plot::n2(kLeft) + "\" y=\"" + plot::n2(kHeight - 8.0) +
            "\" font-size=\"10\">0 s</text>\n";
     for (std::size_t k = 0; k < dof; ++k) {
@@ -106,6 +108,48 @@ std::string chart(const char* id, const std::string& title, const Samples& s, co
                curve(s, pick, k, a) + "\"/>\n";
     }
     return out + "</svg>\n";
+}
+
+/// Per step, the change of each joint's acceleration over its time, drawn
+/// at the step's middle: what a jerk limit bounds.
+Samples jerk_points(const Samples& s) {
+    Samples out;
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+        const double dt = s[i + 1].t - s[i].t;
+        if (!(dt > 0.0)) continue;
+        control::Sample x;
+        x.t = 0.5 * (s[i].t + s[i + 1].t);
+        x.q = s[i].q;
+        x.qd.resize(s[i].q.size());
+        for (std::size_t k = 0; k < x.qd.size(); ++k)
+            x.qd[k] = (s[i + 1].qdd[k] - s[i].qdd[k]) / dt;
+        out.push_back(std::move(x));
+    }
+    return out;
+}
+
+/// Per traced step, the EE's mean speed along the path, drawn at the
+/// step's middle as the single curve of joint "1"; 0 off the path.
+Samples tool_speed_points(const Samples& s) {
+    Samples out;
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+        const control::Sample& a = s[i];
+        const control::Sample& b = s[i + 1];
+        const double dt = b.t - a.t;
+        if (!(dt > 0.0)) continue;
+        double ds = 0.0;
+        if (a.phase == control::Phase::Trace && b.phase == control::Phase::Trace &&
+            a.stroke == b.stroke)
+            ds = a.primitive == b.primitive       ? std::abs(b.s - a.s)
+                 : b.primitive == a.primitive + 1 ? b.s
+                                                  : 0.0;
+        control::Sample x;
+        x.t = 0.5 * (a.t + b.t);
+        x.q = {0.0};
+        x.qd = {ds / dt};
+        out.push_back(std::move(x));
+    }
+    return out;
 }
 
 std::string limit_text(const std::vector<double>& values, const char* unit) {
@@ -135,15 +179,27 @@ std::string section(const task::Task& task, const synth::Solution& solution) {
                   plot::primitive_colour(static_cast<int>(k)) + "\"></span>joint " +
                   std::to_string(k + 1) + "</li>";
     std::string out = "<section id=\"timing\">\n<h2>Timing</h2>\n<p class=\"note\">";
-    out += text::format("Motion time %.3f s. ", s.back().t);
+    int stops = 0;
+    for (std::size_t i = 1; i + 1 < s.size(); ++i) {
+        bool still = true;
+        for (double v : s[i].qd) still = still && std::abs(v) <= 1e-9;
+        stops += still ? 1 : 0;
+    }
+    out += text::format("Motion time %.3f s, with %d stop%s inside. ", s.back().t, stops,
+                        stops == 1 ? "" : "s");
     if (limits) {
         out += std::string(task.robot.joint_limits ? "Joint limits of the task"
                                                    : "Joint limits of the modules (HEBI X8-9)") +
                ": velocity " + limit_text(limits->velocity, "rad/s") + ", acceleration " +
-               limit_text(limits->acceleration, "rad/s&sup2;") + " (dashed). ";
+               limit_text(limits->acceleration, "rad/s&sup2;");
+        if (!limits->jerk.empty()) out += ", jerk " + limit_text(limits->jerk, "rad/s&sup3;");
+        out += " (dashed). ";
     }
-    out += "At rest at the start, the end and every corner.</p>\n<ul class=\"legend\">" + legend +
-           "</ul>\n";
+    out +=
+        "At rest at the start and the end, at corners of the path and at both ends of "
+        "transitions and travel; through smooth junctions the tool keeps moving.</p>\n"
+        "<ul class=\"legend\">" +
+        legend + "</ul>\n";
     out += chart(
         "chart-q", "Joint angles q (rad)", s,
         [](const control::Sample& x) -> const std::vector<double>& { return x.q; }, nullptr);
@@ -155,6 +211,15 @@ std::string section(const task::Task& task, const synth::Solution& solution) {
         "chart-qdd", "Joint accelerations qdd (rad/s\u00b2)", s,
         [](const control::Sample& x) -> const std::vector<double>& { return x.qdd; },
         limits ? &limits->acceleration : nullptr);
+    const auto rate = [](const control::Sample& x) -> const std::vector<double>& { return x.qd; };
+    const Samples jerk = jerk_points(s);
+    if (!jerk.empty())
+        out += chart("chart-jerk", "Joint jerks, change of qdd per step (rad/s\u00b3)", jerk, rate,
+                     limits && !limits->jerk.empty() ? &limits->jerk : nullptr, s.back().t);
+    const Samples tool = tool_speed_points(s);
+    if (!tool.empty())
+        out += chart("chart-tool-speed", "Tool speed along the path (m/s)", tool, rate, nullptr,
+                     s.back().t);
     return out + "</section>\n";
 }
 

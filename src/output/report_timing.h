@@ -1,7 +1,7 @@
 #pragma once
-// The timing of the motion in the report: joint angles, velocities and
-// accelerations against time, with the joint limits the motion was timed
-// with drawn as dashed lines.
+// The timing of the motion in the report: joint angles, velocities,
+// accelerations and jerks against time, with the joint limits the motion
+// was timed with drawn as dashed lines, and the tool's speed along the path.
 #include <string>
 
 #include <modsynth/synth/solution.h>
@@ -9,9 +9,11 @@
 
 namespace modsynth::output::timing {
 
-/// HTML section id="timing" with three SVG charts (id="chart-q", "chart-qd",
-/// "chart-qdd"); "" when the solution is not solved or its samples carry no
-/// velocities and accelerations.
+/// HTML section id="timing" with SVG charts of joint angles, velocities,
+/// accelerations and jerks (id="chart-q", "chart-qd", "chart-qdd",
+/// "chart-jerk", the jerk limits dashed when the task has them) and of the
+/// tool's speed along the path ("chart-tool-speed"); "" when the solution
+/// is not solved or its samples carry no velocities and accelerations.
 std::string section(const task::Task& task, const synth::Solution& solution);
 
 }  // namespace modsynth::output::timing

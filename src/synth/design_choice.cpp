@@ -7,7 +7,7 @@
 
 namespace modsynth::synth {
 
-std::size_t choose_design(std::span<const DesignMerit> designs, double tie) {
+std::size_t choose_design(std::span<const DesignMerit> designs, double tie, double time_tie) {
     if (designs.empty()) throw std::invalid_argument("choose_design: no design to choose from");
     const auto shorter = [](const DesignMerit& a, const DesignMerit& b) {
         return a.total_length < b.total_length;
@@ -17,11 +17,19 @@ std::size_t choose_design(std::span<const DesignMerit> designs, double tie) {
     double clearest = -std::numeric_limits<double>::infinity();
     for (const DesignMerit& d : designs)
         if (d.total_length <= longest) clearest = std::max(clearest, d.clearance);
+    // inf - tie == inf: among designs that meet no obstacle, length decides.
+    const auto candidate = [&](const DesignMerit& d) {
+        return d.total_length <= longest && d.clearance >= clearest - tie;
+    };
+    double fastest = std::numeric_limits<double>::infinity();
+    for (const DesignMerit& d : designs)
+        if (candidate(d)) fastest = std::min(fastest, d.motion_time);
+    // Untimed designs (infinity) are all equally fast.
+    const double slowest = fastest * (1.0 + time_tie);
     std::size_t chosen = designs.size();
     for (std::size_t i = 0; i < designs.size(); ++i) {
         const DesignMerit& d = designs[i];
-        // inf - tie == inf: among designs that meet no obstacle, length decides.
-        if (d.total_length > longest || d.clearance < clearest - tie) continue;
+        if (!candidate(d) || d.motion_time > slowest) continue;
         if (chosen == designs.size() || shorter(d, designs[chosen])) chosen = i;
     }
     // The shortest design is within the tie and, if it is not the

@@ -4,12 +4,14 @@
 #include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
 
 #include <modsynth/control/joint_limits.h>
 #include <modsynth/control/motion.h>
+#include <modsynth/control/path_corners.h>
 #include <modsynth/control/retime.h>
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/farthest_reach.h>
@@ -145,6 +147,7 @@ private:
     Solution infeasible(Proof proof) const;
     Solution unknown(const std::vector<std::vector<task::TaskPart>>& cores) const;
     Solution timed(Solution solution);
+    double motion_seconds(const Solution& solution) const;
     double remaining() const { return deadline_.remaining(); }
     void say(run::Stage stage, const std::string& message) {
         stage_ = message;
@@ -311,9 +314,10 @@ Solution Search::unknown(const std::vector<std::vector<task::TaskPart>>& cores) 
     out.status =
         Status(Status::Unknown, stage_,
                out_of_time ? "time limit" : "every joint count tried without a certified robot");
-    out.explanation.message = "No certified robot found" +
-                              std::string(out_of_time ? " within the time limit" : "") + ": " +
-                              join(tried_, "; ") + ".";
+    out.explanation.message =
+        "No certified robot found" + std::string(out_of_time ? " within the time limit" : "") +
+        (tried_.empty() ? std::string(": the time ran out before any robot was tried.")
+                        : ": " + join(tried_, "; ") + ".");
     for (const auto& c : cores)
         for (const auto& part : c)
             if (std::find(out.explanation.core.begin(), out.explanation.core.end(), part) ==
@@ -329,13 +333,24 @@ Solution Search::timed(Solution solution) {
            solution.certificate.ok);
     const run::Stopwatch t0;
     control::RetimeStats timing;
-    solution.samples = control::retime(std::move(solution.samples),
-                                       control::joint_limits_for(task_, solution.robot.dof()),
-                                       opt_.retime, &timing);
+    solution.samples = control::retime_for(task_, std::move(solution.samples),
+                                           control::joint_limits_for(task_, solution.robot.dof()),
+                                           opt_.retime, &timing);
     say(run::Stage::Timing,
         text::format("timed: %.3f s of motion, %d rests, %d passes, in %.1f ms", timing.duration,
                      timing.rests, timing.passes, 1e3 * t0.seconds()));
+    stats_.timing = std::move(timing);
     return solution;
+}
+
+// s the certified motion of a candidate takes, timed as the one returned
+// will be.
+double Search::motion_seconds(const Solution& solution) const {
+    control::RetimeStats timing;
+    control::retime_for(task_, solution.samples,
+                        control::joint_limits_for(task_, solution.robot.dof()), opt_.retime,
+                        &timing);
+    return timing.duration;
 }
 
 // Every skeleton the front stage offered, again and again with initial
@@ -392,9 +407,19 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
     double shortest = certified.front().solution.robot.total_length();
     const auto chosen = [&] {
         std::vector<DesignMerit> merits;
-        for (const Certified& c : certified)
-            merits.push_back(
-                {c.solution.robot.total_length(), c.solution.certificate.min_clearance});
+        // Every candidate's motion is timed (a few milliseconds each) when
+        // there is a choice: among robots tied in length and clearance, the
+        // quicker motion wins.
+        for (const Certified& c : certified) {
+            merits.push_back({c.solution.robot.total_length(), c.solution.certificate.min_clearance,
+                              certified.size() > 1 ? motion_seconds(c.solution)
+                                                   : std::numeric_limits<double>::infinity()});
+            if (certified.size() > 1)
+                say(run::Stage::Shortening,
+                    text::format("%d joints: elbow %+d, total length %.4f m: %.3f s of motion",
+                                 found.dof, c.solution.robot.elbow, merits.back().total_length,
+                                 merits.back().motion_time));
+        }
         Certified& c = certified[choose_design(merits, opt_.length_tie)];
         stats_.certified_by = c.by;
         return std::move(c.solution);

@@ -142,7 +142,12 @@ private:
                                samples_[i - 1].primitive != a.primitive ||
                                samples_[i - 1].stroke != a.stroke;
             if (a.phase == Phase::Trace && first) {
-                if (j != expected || a.s != 0.0)
+                // After the trace of the primitive before, whose last sample
+                // stands at the junction, a trace may begin one step past
+                // its start (control::plan_motion repeats no pose there).
+                const bool past_junction = i > 0 && junction(samples_[i - 1], a) && a.s > 0.0 &&
+                                           a.s <= opt_.max_ee_step + 1e-12;
+                if (j != expected || (a.s != 0.0 && !past_junction))
                     violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
                               "trace of " + name + " out of order or not from its start");
                 expected = j + 1;
@@ -170,6 +175,12 @@ private:
         }
         if (expected != m)
             violation(Violation::Kind::Order, -1, 0.0, "the motion does not trace every primitive");
+    }
+
+    /// a traces a primitive and b the next one of the same stroke.
+    static bool junction(const Sample& a, const Sample& b) {
+        return a.phase == Phase::Trace && b.phase == Phase::Trace && a.stroke == b.stroke &&
+               b.primitive == a.primitive + 1;
     }
 
     Pose pose(int i) const {
@@ -239,7 +250,10 @@ private:
             sa.phase == Phase::Travel || sb.phase == Phase::Travel || sa.stroke != sb.stroke;
         const bool same_trace = sa.phase == Phase::Trace && sb.phase == Phase::Trace &&
                                 sa.primitive == sb.primitive && sa.stroke == sb.stroke;
-        const bool refinable = (same_trace && sb.s - sa.s > 1e-7) ||
+        // From a junction's sample, at the end of one primitive, to a
+        // sample past the start of the next.
+        const bool across = junction(sa, sb) && sb.s > 0.0;
+        const bool refinable = (same_trace && sb.s - sa.s > 1e-7) || (across && sb.s > 1e-7) ||
                                (in_transition && std::abs(sb.q[0] - sa.q[0]) > 1e-7) ||
                                (free && step > 1e-7);
         bool coarse = false;
@@ -255,21 +269,26 @@ private:
 
         // Guarantee 1/2: the EE stays near the path between the samples.
         double sag = 0.0;
-        if (same_trace) {
-            const geometry::Primitive& prim = task_.trajectory[control::primitive_index(task_, sa)];
+        if (same_trace || across) {
+            const geometry::Primitive& prim = task_.trajectory[control::primitive_index(task_, sb)];
+            // Across a junction the target chord runs from the end of sa's
+            // primitive, within the join tolerance (added) of the start of
+            // sb's, along sb's.
+            const geometry::Vec2 from = same_trace ? a.target : prim.start;
             switch (prim.kind) {
                 case geometry::PrimitiveKind::Line:
                     break;
                 case geometry::PrimitiveKind::Arc:
                 case geometry::PrimitiveKind::Circle:
-                    sag = sagitta(prim.radius, (b.target - a.target).norm());
+                    sag = sagitta(prim.radius, (b.target - from).norm());
                     break;
             }
+            if (across) sag += (a.target - prim.start).norm();
         }
         // Across a boundary both targets are the same transition point (up to
         // the task's join tolerance, which is added).
         if (!free) {
-            const double gap = same_trace ? sag : (a.target - b.target).norm();
+            const double gap = same_trace || across ? sag : (a.target - b.target).norm();
             const double dev = std::max(a.deviation, b.deviation) + e[n - 1] / 8.0 + gap;
             cert_.max_deviation = std::max(cert_.max_deviation, dev);
             settle(opt_.deviation_tolerance - dev,

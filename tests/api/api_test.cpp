@@ -61,3 +61,22 @@ TEST_CASE("the public API's explain carries an obstacle proof's witness", "[api]
     CHECK(e.message.rfind("Proved infeasible: the shortest way around obstacles", 0) == 0);
     CHECK(e.message == modsynth::solve(task).explanation.message);
 }
+
+TEST_CASE("the public API reads and certifies spatial tasks", "[api]") {
+    const std::string dir = modsynth::testing::source_path("tests/fixtures/spatial/");
+    const std::string text = modsynth::testing::read_json(dir + "s4-0010.task.json").dump();
+    CHECK(modsynth::is_spatial_task(text));
+    CHECK_FALSE(modsynth::is_spatial_task(
+        modsynth::testing::read_json(modsynth::testing::source_path("tasks/rose.json")).dump()));
+    CHECK_THROWS_AS(modsynth::read_task(text), modsynth::InputError);
+    const modsynth::SpatialTask task = modsynth::read_spatial_task(text);
+    CHECK(task.trajectory.size() == 4);
+    CHECK(modsynth::load_spatial_task(dir + "s4-0010.task.json").name == "s4-0010");
+    const modsynth::Solution planted =
+        modsynth::read_solution(modsynth::testing::read_json(dir + "s4-0010.planted.json").dump());
+    REQUIRE(planted.dh_robot);
+    CHECK(modsynth::certify(task, planted).ok);
+    modsynth::Solution edited = planted;
+    edited.dh_robot->rows[1].a += 0.01;
+    CHECK_FALSE(modsynth::certify(task, edited).ok);
+}

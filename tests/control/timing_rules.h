@@ -43,4 +43,29 @@ inline std::string timing_violation(const std::vector<control::Sample>& s,
     return "";
 }
 
+/// "" when the accelerations agree with the jerk limits as the velocities
+/// do with the acceleration limits (formats.md `robot.joint_limits.jerk`):
+/// finite differences of qdd over t within J, qd consistent with qdd, and
+/// qdd zero at both ends; else the first broken rule.
+inline std::string jerk_violation(const std::vector<control::Sample>& s,
+                                  const std::vector<double>& jerk) {
+    using text::format;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        for (std::size_t k = 0; k < jerk.size(); ++k) {
+            if ((i == 0 || i + 1 == s.size()) && std::abs(s[i].qdd[k]) > 1e-6)
+                return format("samples[%zu]: qdd is not 0 at an end", i);
+            if (i == 0) continue;
+            const double dt = s[i].t - s[i - 1].t;
+            const double j = jerk[k];
+            if (std::abs(s[i].qdd[k] - s[i - 1].qdd[k]) / dt > j * (1 + 1e-6) + 1e-6 / dt)
+                return format("samples[%zu]: qdd[%zu] changes at %g rad/s^3, beyond %g", i, k,
+                              (s[i].qdd[k] - s[i - 1].qdd[k]) / dt, j);
+            const double mean = (s[i].qd[k] - s[i - 1].qd[k]) / dt;
+            if (std::abs(mean - 0.5 * (s[i].qdd[k] + s[i - 1].qdd[k])) > j * dt / 4 + 1e-6)
+                return format("samples[%zu]: qdd[%zu] disagrees with qd", i, k);
+        }
+    }
+    return "";
+}
+
 }  // namespace modsynth::testing

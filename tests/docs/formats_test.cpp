@@ -18,6 +18,7 @@
 
 #include <modsynth/hardware/catalog.h>
 #include <modsynth/io/solution_io.h>
+#include <modsynth/io/spatial_task_io.h>
 #include <modsynth/io/task_io.h>
 
 using modsynth::io::parse_solution;
@@ -239,16 +240,22 @@ TEST_CASE("docs/formats.md: the extensions not yet implemented behave as documen
         "trajectory": [{"type": "line", "start": [0.4, 0.1], "end": [0.5, 0.1]}]
     })");
 
-    SECTION("a spatial task is refused by name, a planar one with \"space\": \"plane\" read") {
+    SECTION(
+        "a spatial task is read by the spatial reader only, a planar one with "
+        "\"space\": \"plane\" by the planar one") {
         json doc = task;
         doc["space"] = "3d";
         try {
             parse_task(doc);
-            FAIL("a spatial task was read although spatial tasks are not implemented");
+            FAIL("the planar reader read a spatial task");
         } catch (const InputError& e) {
             CHECK(e.part() == "space");
-            CHECK(std::string(e.what()).find("not implemented yet") != std::string::npos);
+            CHECK(std::string(e.what()).find("not supported here yet") != std::string::npos);
         }
+        doc["trajectory"][0] = {
+            {"type", "line"}, {"start", {0.4, 0.1, 0.2}}, {"end", {0.5, 0.1, 0.2}}};
+        CHECK(modsynth::io::parse_spatial_task(doc).trajectory.size() == 1);
+        doc = task;
         doc["space"] = "plane";
         CHECK(parse_task(doc).trajectory.size() == 1);
         doc["space"] = "4d";

@@ -5,7 +5,8 @@
 // JSON body, and the server keeps answering.
 //
 // Solves are started by a SolveJobs whose solver is /bin/false, so a fuzzed
-// POST /api/solve runs the route to its end without running a solve.
+// POST /api/solve runs the route to its end without running a solve; a
+// fuzzed POST /api/import imports in this process.
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <poll.h>
@@ -27,6 +28,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api_routes.h"
+#include "import_runner.h"
 #include "solve_jobs.h"
 
 // Last: it pulls in <resolv.h>.
@@ -72,6 +74,7 @@ void keep_scratch_in_own_folder() {
 
 struct Fixture {
     std::unique_ptr<SolveJobs> jobs;
+    std::unique_ptr<ImportRunner> imports;
     std::unique_ptr<ConnectionServer> server;
     std::thread thread;
     int port = 0;
@@ -82,6 +85,11 @@ struct Fixture {
         job_limits.time_limit = 1.0;
         job_limits.grace = 0.5;
         jobs = std::make_unique<SolveJobs>(job_limits, "/bin/false");
+        // Drawings are imported in this process, well within the time a
+        // reply may take.
+        ImportLimits import_limits;
+        import_limits.time_limit = 2.0;
+        imports = std::make_unique<ImportRunner>(import_limits, "");
         ConnectionLimits limits;
         limits.workers = 8;
         limits.head_timeout = 2.0;
@@ -93,7 +101,7 @@ struct Fixture {
         api.max_streams = 4;
         api.max_streams_per_client = 2;
         server->set_payload_max_length(api.max_body);
-        add_routes(*server, *jobs, api);
+        add_routes(*server, *jobs, api, imports.get());
         port = server->bind_to_any_port("127.0.0.1");
         if (port <= 0) fail("cannot bind the server", {});
         thread = std::thread([this] { server->listen_after_bind(); });

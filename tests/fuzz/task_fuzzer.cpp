@@ -3,15 +3,19 @@
 // messages are short printable UTF-8, a task stays within the documented
 // caps, and a task that parses writes back to JSON that parses to the same
 // task. What the CLI prints of a valid task (the description of each part)
-// must not throw either.
+// must not throw either. Spatial tasks (`"space": "3d"`) go through their
+// own reader with the same rules.
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 #include <string_view>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/spatial_task_io.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/prove/conflict_text.h>
 #include <modsynth/task/input_error.h>
@@ -22,7 +26,6 @@ namespace {
 
 using namespace modsynth::task;
 using modsynth::io::parse_task;
-using modsynth::io::parse_task_text;
 using modsynth::io::to_json;
 
 bool printable(const std::string& s) {
@@ -43,17 +46,40 @@ bool within_caps(const Task& t) {
     return t.robot.max_link_length <= kMaxLength;
 }
 
+bool within_caps(const SpatialTask& t) {
+    const auto inside = [](const modsynth::geometry::Vec3& p) {
+        return p.cwiseAbs().maxCoeff() <= kMaxCoordinate;
+    };
+    if (t.trajectory.size() > kMaxPrimitives || t.obstacles.size() > kMaxObstacles ||
+        t.base_regions.size() > kMaxBaseRegions)
+        return false;
+    for (const auto& p : t.trajectory)
+        if (!inside(modsynth::geometry::start_point(p)) ||
+            !inside(modsynth::geometry::end_point(p)))
+            return false;
+    for (const auto& b : t.base_regions)
+        if (!inside(b.min) || !inside(b.max)) return false;
+    return t.robot.max_link_length <= kMaxLength;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
-    Task task;
+    modsynth::io::TaskDocument doc;
     try {
-        task = parse_task_text(text);
+        doc = modsynth::io::parse_task_document_text(text);
     } catch (const InputError& e) {
         if (!printable(e.what())) std::abort();
         return 0;
     }
+    if (const auto* spatial = std::get_if<SpatialTask>(&doc)) {
+        if (!within_caps(*spatial)) std::abort();
+        const auto written = to_json(*spatial);
+        if (to_json(modsynth::io::parse_spatial_task(written)) != written) std::abort();
+        return 0;
+    }
+    const Task task = std::get<Task>(std::move(doc));
     if (!within_caps(task)) std::abort();
     // What parsed must survive its own round trip.
     const auto again = to_json(parse_task(to_json(task)));

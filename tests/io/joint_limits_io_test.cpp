@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/control/joint_limits.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/task/input_error.h>
@@ -85,6 +86,32 @@ TEST_CASE("bad joint limits are rejected naming the key", "[task][timing]") {
                Catch::StartsWith("robot.joint_limits: expected an object"));
     CHECK_THAT(rejection(task_with({{"velocity", json::array()}, {"acceleration", 1}})),
                Catch::StartsWith("robot.joint_limits.velocity: has 0 values"));
+}
+
+TEST_CASE("a jerk limit is read, checked and written back", "[task][timing]") {
+    const auto one = parse_task(task_with({{"velocity", 1.2}, {"acceleration", 3}, {"jerk", 30}}));
+    REQUIRE(one.robot.joint_limits);
+    CHECK(one.robot.joint_limits->jerk == std::vector<double>{30.0});
+    CHECK(modsynth::io::to_json(one)["robot"]["joint_limits"]["jerk"] == json(30.0));
+    const auto none = parse_task(task_with({{"velocity", 1.2}, {"acceleration", 3}}));
+    CHECK(none.robot.joint_limits->jerk.empty());
+    CHECK_FALSE(modsynth::io::to_json(none)["robot"]["joint_limits"].contains("jerk"));
+    // A list fixes the joint count as the other limits' do.
+    const auto two =
+        parse_task(task_with({{"velocity", 1.2}, {"acceleration", 3}, {"jerk", {20, 40}}}));
+    CHECK(two.robot.dof == std::vector<int>{2});
+    const auto limits = modsynth::control::joint_limits_for(two, 2);
+    CHECK(limits.jerk == std::vector<double>{20.0, 40.0});
+    CHECK(modsynth::control::joint_limits_for(one, 3).jerk == std::vector<double>(3, 30.0));
+    CHECK(modsynth::control::joint_limits_for(none, 3).jerk.empty());
+
+    CHECK_THAT(rejection(task_with({{"velocity", 1}, {"acceleration", 3}, {"jerk", -1}})),
+               Catch::StartsWith("robot.joint_limits.jerk: must be greater than 0 rad/s^3"));
+    CHECK_THAT(
+        rejection(task_with({{"velocity", {1, 1}}, {"acceleration", 3}, {"jerk", {1, 1, 1}}})),
+        Catch::StartsWith("robot.joint_limits.jerk: has 3 values but velocity has 2"));
+    CHECK_THAT(rejection(task_with({{"velocity", 1}, {"acceleration", 3}, {"jerk", "smooth"}})),
+               Catch::StartsWith("robot.joint_limits.jerk: expected a limit"));
 }
 
 TEST_CASE("samples' velocities and accelerations round-trip", "[timing]") {

@@ -232,3 +232,39 @@ TEST_CASE("chosen modules are written with their loads and margins", "[output]")
     s.modules->overloaded_joint = 0;
     CHECK(to_json(s).at("modules").at("overloaded_joint").is_null());
 }
+
+TEST_CASE("a spatial solution's DH robot round-trips and is checked", "[io]") {
+    const json doc =
+        json::parse(R"({"format": "modsynth-solution/1", "task": "s", "status": "solved",
+        "robot": {"dof": 3, "base": [0.1, -0.2, 0.05],
+                  "dh": [{"a": 0, "alpha": 1.5707963267948966, "d": 0.4},
+                         {"a": 0.3, "alpha": 0, "d": 0}, {"a": 0.25, "alpha": 0, "d": 0}],
+                  "link_diameter": 0.03175},
+        "samples": [{"t": 0, "phase": "trace", "primitive": 0, "q": [0.1, 0.2, 0.3]}]})");
+    const Solution s = parse_solution(doc).solution;
+    REQUIRE(s.dh_robot);
+    CHECK(s.dh_robot->dof() == 3);
+    CHECK(s.dh_robot->base.z() == 0.05);
+    CHECK(s.dh_robot->rows[0].d == 0.4);
+    CHECK(s.dh_robot->rows[2].a == 0.25);
+    const json out = to_json(s);
+    CHECK(out["robot"]["dh"].size() == 3);
+    CHECK_FALSE(out["robot"].contains("link_lengths"));
+    CHECK_FALSE(out["robot"].contains("elbow"));
+    const Solution again = parse_solution(out).solution;
+    CHECK(again.dh_robot->rows[1].a == 0.3);
+    CHECK(again.dh_robot->base == s.dh_robot->base);
+    check_same_motion(s, again);
+
+    auto with = [&](const char* pointer, const json& value) {
+        json d = doc;
+        d[json::json_pointer(pointer)] = value;
+        return d;
+    };
+    CHECK(part_of(with("/robot/dof", 2)) == "robot.dof");
+    CHECK(part_of(with("/robot/base", json::array({0, 0}))) == "robot.base");
+    CHECK(part_of(with("/robot/dh", json::array({json::object()}))) == "robot.dh");
+    CHECK(part_of(with("/robot/dh/1/alpha", "flat")) == "robot.dh[1].alpha");
+    CHECK(part_of(with("/robot/link_diameter", 0)) == "robot.link_diameter");
+    CHECK(part_of(with("/samples/0/q", json::array({0.1, 0.2}))) == "samples[0].q");
+}

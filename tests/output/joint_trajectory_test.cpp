@@ -171,6 +171,23 @@ TEST_CASE("the report charts angles, velocities and accelerations with the limit
     CHECK(dashed == 8);
     CHECK(html.find(" Motion time ") == std::string::npos);  // starts the note
     CHECK(html.find(">Motion time ") != std::string::npos);
+    CHECK(html.find("with 0 stops inside") != std::string::npos);
+    // The jerks and the tool's speed are charted too; without jerk limits
+    // there is nothing to dash in the jerk chart.
+    CHECK(html.find("id=\"chart-jerk\"") != std::string::npos);
+    CHECK(html.find("id=\"chart-tool-speed\"") != std::string::npos);
+
+    // With jerk limits, dashed in the jerk chart as well.
+    task.robot.joint_limits->jerk = {30.0};
+    const auto jerky = control::joint_limits_for(task, 2);
+    const std::string with_jerk =
+        output::html_report(task, timed(testing::two_joint_solution(task), jerky), {});
+    CHECK(with_jerk.find(", jerk 30, 30 rad/s&sup3;") != std::string::npos);
+    std::size_t jerk_dashed = 0;
+    for (auto at = with_jerk.find("class=\"limit\""); at != std::string::npos;
+         at = with_jerk.find("class=\"limit\"", at + 1))
+        ++jerk_dashed;
+    CHECK(jerk_dashed == 12);
 
     // An untimed motion: no charts.
     const Solution bare = testing::two_joint_solution(task);

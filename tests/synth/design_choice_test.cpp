@@ -54,3 +54,22 @@ TEST_CASE("clearances closer than the tie go to the shorter, then the earlier de
 TEST_CASE("no design to choose from is an error", "[synth][design_choice]") {
     CHECK_THROWS_AS(choose_design(std::vector<DesignMerit>{}, 5e-4), std::invalid_argument);
 }
+
+TEST_CASE("between designs tied in length and clearance the quicker motion wins",
+          "[synth][design_choice]") {
+    // Same length to a builder, same clearance: 8.3 s against 7.1 s.
+    const std::vector<DesignMerit> d{{0.5340, 0.0023, 8.3}, {0.5342, 0.0022, 7.1}};
+    CHECK(choose_design(d, 5e-4) == 1);
+    // Motions within half a per cent are equally quick: length decides.
+    const std::vector<DesignMerit> e{{0.5340, 0.0023, 8.30}, {0.5342, 0.0022, 8.27}};
+    CHECK(choose_design(e, 5e-4) == 0);
+    // Time never buys length beyond the tie, nor clearance.
+    const std::vector<DesignMerit> f{{0.5340, 0.0023, 8.3}, {0.9672, 0.0023, 4.5}};
+    CHECK(choose_design(f, 5e-4) == 0);
+    const std::vector<DesignMerit> g{{0.5340, 0.0500, 8.3}, {0.5341, 0.0023, 4.5}};
+    CHECK(choose_design(g, 5e-4) == 0);
+    // Designs not timed (infinity) leave the choice to length.
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::vector<DesignMerit> h{{0.5342, 0.0023, inf}, {0.5340, 0.0023, inf}};
+    CHECK(choose_design(h, 5e-4) == 1);
+}

@@ -5,6 +5,7 @@
 
 #include <modsynth/control/motion.h>
 #include <modsynth/geometry/distance.h>
+#include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/verify/verifier.h>
 
@@ -150,4 +151,40 @@ TEST_CASE("refining coarse pairs keeps the motion on the path", "[verify]") {
     REQUIRE(control::refine_motion(t, robot, samples, {0, 5, 10}));
     CHECK(samples.size() == before + 3);
     CHECK(verify::certify(t, robot, samples).ok);
+}
+
+TEST_CASE("a junction without a transition repeats no pose and is certified", "[verify]") {
+    // A line and an arc that goes on tangent to it.
+    task::Task t = testing::line_task();
+    t.trajectory[0] = geometry::make_line({0.40, 0.05}, {0.40, 0.20});
+    t.trajectory.push_back(geometry::make_arc({0.40, 0.20}, {0.30, 0.30}, {0.30, 0.20}, true));
+    const auto robot = testing::line_robot();
+    const auto samples = motion_for(t, robot);
+    std::size_t junction = 0;
+    for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
+        REQUIRE(samples[i].q != samples[i + 1].q);
+        if (samples[i].primitive == 0 && samples[i + 1].primitive == 1) junction = i;
+    }
+    REQUIRE(junction > 0);
+    CHECK(samples[junction].s == Approx(geometry::length(t.trajectory[0])));
+    CHECK(samples[junction + 1].s == Approx(control::MotionOptions{}.junction_step));
+    CHECK(verify::certify(t, robot, samples).ok);
+
+    // The pair across the junction is split on the primitive that begins
+    // there.
+    auto refined = samples;
+    REQUIRE(control::refine_motion(t, robot, refined, {static_cast<int>(junction)}));
+    CHECK(refined[junction + 1].primitive == 1);
+    CHECK(refined[junction + 1].s == Approx(0.5 * samples[junction + 1].s));
+    CHECK(verify::certify(t, robot, refined).ok);
+
+    // A trace may begin past its start only right after the primitive
+    // before it, and by no more than a progress step.
+    auto late = samples;
+    late.erase(late.begin());
+    CHECK(has(verify::certify(t, robot, late), Violation::Kind::Order));
+    auto far = samples;
+    const auto after = far.begin() + static_cast<long>(junction) + 1;
+    far.erase(after, after + 4);  // primitive 1 begins 7.5 mm past its start
+    CHECK(has(verify::certify(t, robot, far), Violation::Kind::Order));
 }

@@ -9,9 +9,11 @@
 namespace modsynth::control {
 
 /// Per joint, rad/s and rad/s^2; both lists as long as the robot's q.
+/// `jerk` (rad/s^3) is as long too, or empty: no jerk limit.
 struct JointLimits {
     std::vector<double> velocity;
     std::vector<double> acceleration;
+    std::vector<double> jerk{};
 
     int dof() const { return static_cast<int>(velocity.size()); }
 };
@@ -38,7 +40,7 @@ JointLimits default_joint_limits(int dof);
 JointLimits joint_limits_for(const task::Task& task, int dof);
 
 /// False (with `error` saying which joint) when some limit is not a finite
-/// positive number or the lists' lengths differ.
+/// positive number or the lists' lengths differ (an empty jerk list aside).
 bool valid(const JointLimits& limits, std::string* error);
 
 }  // namespace modsynth::control

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <modsynth/drawing/curve.h>
+#include <modsynth/drawing/deadline.h>
 #include <modsynth/geometry/primitive.h>
 
 namespace modsynth::drawing {
@@ -22,10 +23,18 @@ struct FittedCurve {
     double deviation = 0.0;
 };
 
+/// Pieces shorter than this (metres) are folded into their neighbour, and a
+/// curve must be larger than this across to be fitted at all.
+constexpr double kMinPiece = 1e-8;
+
 /// Fits one curve (in task coordinates, metres). Throws task::InputError
 /// naming curve.source when it cannot be followed within `tolerance` in at
-/// most `max_primitives` pieces.
-FittedCurve fit_curve(const Curve& curve, double tolerance, std::size_t max_primitives);
+/// most `max_primitives` pieces, or is smaller than kMinPiece across, and
+/// ImportTimeout once `deadline` has passed. Its work is bounded whatever
+/// the curve: every step advances along it by a share of it or adds a
+/// piece, and the pieces are capped.
+FittedCurve fit_curve(const Curve& curve, double tolerance, std::size_t max_primitives,
+                      Clock::time_point deadline = kNoDeadline);
 
 /// Deviation of primitives from one segment, both ways, on `samples`
 /// points of each: what fit_curve bounds, and what the tests measure.

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include <modsynth/drawing/deadline.h>
 #include <modsynth/drawing/drawing.h>
 #include <modsynth/drawing/stroke_order.h>
 #include <modsynth/geometry/disc.h>
@@ -33,6 +34,8 @@ struct ImportOptions {
     Placement placement;
     double tolerance = 1e-4;  ///< largest deviation from the drawing, metres
     bool keep_order = false;  ///< strokes in file order and direction
+    /// Past it the import stops with ImportTimeout (deadline.h).
+    Clock::time_point deadline = kNoDeadline;
 };
 
 struct ImportResult {
@@ -49,7 +52,8 @@ struct ImportResult {
     Affine page_to_task;
 };
 
-/// Throws task::InputError naming the offending element or option.
+/// Throws task::InputError naming the offending element or option, and
+/// ImportTimeout once options.deadline has passed.
 ImportResult import_drawing(std::string_view text, DrawingFormat format,
                             const ImportOptions& options);
 

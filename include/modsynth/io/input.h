@@ -2,6 +2,7 @@
 // The two steps every document reader shares: the bytes of a file the user
 // named, and those bytes as JSON. Failures are task::InputErrors a user can
 // act on (the path, or the line and column where the syntax breaks).
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -10,8 +11,12 @@
 namespace modsynth::io {
 
 /// The whole content of a file; `what` says what the file should be ("task",
-/// "solution"). Failures are InputErrors whose part is the path.
-std::string read_input_file(const std::string& path, const std::string& what);
+/// "solution"). A path that is not a regular file (a folder, a FIFO, a
+/// device such as /dev/zero) or a file of more than `max_bytes` is refused
+/// before anything is read; a FIFO is never waited on. Failures are
+/// InputErrors whose part is the path.
+std::string read_input_file(const std::string& path, const std::string& what,
+                            std::size_t max_bytes);
 
 /// JSON text as a document. A syntax error or a number beyond the range of
 /// a double is an InputError for "(document)" saying where it is.

@@ -10,6 +10,7 @@
 
 #include <modsynth/synth/solution.h>
 #include <modsynth/task/input_error.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::io {
@@ -28,10 +29,15 @@ ParsedSolution parse_solution_text(std::string_view text);
 ParsedSolution load_solution(const std::string& path);
 
 /// Throws InputError when the solution cannot belong to the task: another
-/// task's name, or samples tracing primitives the task does not have.
+/// task's name, a spatial robot (`dh`) for a planar task or a planar one for
+/// a spatial task, or samples tracing primitives the task does not have.
 void check_solution_fits(const task::Task& task, const synth::Solution& solution);
+void check_solution_fits(const task::SpatialTask& task, const synth::Solution& solution);
 
 nlohmann::json to_json(const synth::Solution& solution);
+/// A spatial solution's `robot`: {"dof", "base": [x, y, z], "dh": [{"a",
+/// "alpha", "d"}, ...], "link_diameter"} (formats.md "Spatial tasks").
+nlohmann::json to_json(const kinematics::DhChain& chain);
 /// The witnesses of an obstacle proof, as in "explanation.separation" and
 /// "explanation.geodesic" (formats.md).
 nlohmann::json to_json(const prove::SeparationWitness& witness);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include <modsynth/io/solution_io.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 #include <modsynth/verify/verifier.h>
 
@@ -19,6 +20,11 @@ namespace modsynth::output {
 /// not fit the robot's joint count. Returns the report's "Certificate source" note: set when
 /// the file carried no certificate to compare with, else "".
 std::string recertify(const task::Task& task, io::ParsedSolution& parsed);
+/// The same for a spatial task: the fit checked, the samples' progress
+/// recovered from their joint angles (control::recover_parameters) and the
+/// motion certified against the contract's limits (verify::VerifyOptions);
+/// the samples are not retimed.
+std::string recertify(const task::SpatialTask& task, io::ParsedSolution& parsed);
 
 /// Why a certificate is not ok, in one line naming the first offending
 /// sample ("samples[3]: EE is 0.052000 m off the path (and 4 more)"), or

@@ -6,6 +6,7 @@
 
 #include <modsynth/control/motion.h>
 #include <modsynth/hardware/selection.h>
+#include <modsynth/kinematics/dh_chain.h>
 #include <modsynth/kinematics/robot.h>
 #include <modsynth/prove/wall_witness.h>
 #include <modsynth/synth/status.h>
@@ -33,6 +34,9 @@ struct Solution {
     /// Solved only, when modules were chosen for the motion (it must carry
     /// qd and qdd): the actuator at each joint, or the joint none carries.
     std::optional<hardware::ModuleSelection> modules;
+    /// Solved spatial tasks only: the robot as a DH chain (formats.md
+    /// "Spatial tasks"), in place of `robot`, which is then unused.
+    std::optional<kinematics::DhChain> dh_robot;
 };
 
 }  // namespace modsynth::synth

@@ -156,6 +156,9 @@ struct SynthesisStats {
     /// What the user should be told besides the answer (e.g. that no
     /// modules were chosen, and why).
     std::vector<std::string> notes;
+    /// How the returned motion was timed (solved only): its duration, its
+    /// stops, where the EE runs slower than options.retime.ee_speed.
+    control::RetimeStats timing;
 };
 
 /// The motion options a run plans `task` with: options.motion, with its EE

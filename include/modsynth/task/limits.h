@@ -23,5 +23,10 @@ constexpr double kMaxCoordinate = 1000.0;
 constexpr double kMaxLength = 1000.0;
 /// Size of a task file, in bytes.
 constexpr std::size_t kMaxTaskBytes = 16u << 20;
+/// Size of a solution file, in bytes. A solution's samples take about 200
+/// bytes each and a run plans at most 250,000 trace samples
+/// (SynthesisOptions::trace_samples) plus its transitions and travels:
+/// well within this, and what is read stays within the memory above.
+constexpr std::size_t kMaxSolutionBytes = 256u << 20;
 
 }  // namespace modsynth::task

@@ -26,13 +26,17 @@ struct BaseRegion {
     }
 };
 
-/// Joint speed and acceleration limits a controller must respect
-/// (formats.md `robot.joint_limits`), in rad/s and rad/s^2. Each list holds
+/// Joint speed, acceleration and (optionally) jerk limits a controller must
+/// respect (formats.md `robot.joint_limits`), in rad/s, rad/s^2 and
+/// rad/s^3. Each list holds
 /// one value for every joint, or one value per joint (then its length is
 /// the only joint count the task allows).
 struct JointLimitsSpec {
     std::vector<double> velocity;
     std::vector<double> acceleration;
+    /// rad/s^3, optional (formats.md `robot.joint_limits.jerk`): empty for
+    /// no jerk limit.
+    std::vector<double> jerk{};
 };
 
 /// Defaults are those of formats.md.

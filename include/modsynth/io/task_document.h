@@ -1,0 +1,28 @@
+#pragma once
+// A task document of either kind: planar (formats.md base format) or
+// spatial (`"space": "3d"`). Callers that take both read a TaskDocument and
+// std::visit it; callers that take one kind only refuse the other by name.
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <modsynth/task/spatial_task.h>
+#include <modsynth/task/task.h>
+
+namespace modsynth::io {
+
+using TaskDocument = std::variant<task::Task, task::SpatialTask>;
+
+/// Whether a document is a spatial task: an object whose `space` is "3d".
+/// (Any other `space` is refused by the planar reader by name.)
+bool is_spatial(const nlohmann::json& doc);
+
+TaskDocument parse_task_document(const nlohmann::json& doc);
+TaskDocument parse_task_document_text(std::string_view text);
+/// A task file; a task without a name takes the file's name without its
+/// extension, as io::load_task does.
+TaskDocument load_task_document(const std::string& path);
+
+}  // namespace modsynth::io

@@ -1,0 +1,43 @@
+#include <modsynth/io/task_document.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include <modsynth/io/input.h>
+#include <modsynth/io/spatial_task_io.h>
+#include <modsynth/io/task_io.h>
+#include <modsynth/task/limits.h>
+
+namespace modsynth::io {
+
+bool is_spatial(const nlohmann::json& doc) {
+    if (!doc.is_object()) return false;
+    const auto it = doc.find("space");
+    return it != doc.end() && it->is_string() && it->get<std::string>() == "3d";
+}
+
+TaskDocument parse_task_document(const nlohmann::json& doc) {
+    if (is_spatial(doc)) return parse_spatial_task(doc);
+    return parse_task(doc);
+}
+
+TaskDocument parse_task_document_text(std::string_view text) {
+    if (text.size() > task::kMaxTaskBytes)
+        throw task::InputError("(document)",
+                               std::to_string(text.size()) + " bytes, more than the " +
+                                   std::to_string(task::kMaxTaskBytes) + " allowed for a task");
+    return parse_task_document(parse_json_text(text));
+}
+
+TaskDocument load_task_document(const std::string& path) {
+    TaskDocument doc = parse_task_document_text(read_input_file(path, "task", task::kMaxTaskBytes));
+    std::visit(
+        [&](auto& t) {
+            if (t.name.empty()) t.name = std::filesystem::path(path).stem().string();
+        },
+        doc);
+    return doc;
+}
+
+}  // namespace modsynth::io

@@ -1,0 +1,178 @@
+#!/usr/bin/env bash
+# Hostile input to the commands that read files (README "Limits"): what is
+# not a regular file, files too large, folders that link to themselves,
+# times no controller can hold, motions that fail verification, task names
+# made of control bytes, and the messages of out-of-range options. Each is
+# refused at once with exit 2 naming the file or part, or read as the
+# documented behaviour says; nothing hangs, nothing is read whole first.
+set -u
+source "$(dirname "$0")/shell_test_lib.sh"
+
+expect_exit() {  # expected-code description command...
+    local want=$1 what=$2
+    shift 2
+    timeout 20 "$@" >"$tmp/out" 2>"$tmp/err"
+    local got=$?
+    [ "$got" -eq "$want" ] || fail "$what: exit $got, expected $want ($(head -c 300 "$tmp/err"))"
+}
+expect_message() {  # description text...
+    local what=$1
+    shift
+    for want in "$@"; do
+        grep -qF -- "$want" "$tmp/err" || fail "$what: message lacks '$want': $(head -c 300 "$tmp/err")"
+    done
+}
+rose=$root/tasks/rose.json
+
+# What is not a regular file is refused before anything is read: a device
+# (which would be read for ever), a FIFO (which would block), a folder.
+mkfifo "$tmp/fifo.json"
+for cmd in "validate" "solve -o $tmp/x.json" "explain" "export-svg -o $tmp/x.svg"; do
+    set -- $cmd
+    expect_exit 2 "$1 /dev/zero" "$bin" "$1" /dev/zero "${@:2}"
+    expect_message "$1 /dev/zero" "/dev/zero: is not a regular file"
+    expect_exit 2 "$1 a FIFO" "$bin" "$1" "$tmp/fifo.json" "${@:2}"
+    expect_message "$1 a FIFO" "fifo.json: is not a regular file"
+done
+expect_exit 2 "validate a folder" "$bin" validate "$tmp"
+expect_message "validate a folder" "is a folder"
+mkfifo "$tmp/fifo.svg"
+expect_exit 2 "import a FIFO" "$bin" import "$tmp/fifo.svg" -o "$tmp/x.json"
+expect_message "import a FIFO" "fifo.svg: is not a regular file"
+
+# A solution file is capped as a task file is: a sparse 1 GB file is refused
+# by its size, not read.
+truncate -s 1G "$tmp/huge.solution.json"
+for cmd in "export $rose $tmp/huge.solution.json --csv $tmp/x.csv" \
+           "export $rose /dev/zero --csv $tmp/x.csv" "export $rose $tmp/fifo.json --csv $tmp/x.csv"; do
+    expect_exit 2 "$cmd" $bin $cmd
+done
+"$bin" export "$rose" "$tmp/huge.solution.json" --csv "$tmp/x.csv" 2>"$tmp/err"
+expect_message "a 1 GB solution" "1073741824 bytes, more than the 268435456 allowed for a solution file"
+
+# A solved solution whose motion is not rose's: it fails verification.
+python3 - "$tmp/wrong.json" "$tmp/far.json" <<'PY'
+import json, sys
+samples = [{"t": 0.1 * i, "phase": "trace", "primitive": 0, "q": [0.2 + 0.001 * i, 1.0],
+            "qd": [0.0, 0.0], "qdd": [0.0, 0.0]} for i in range(5)]
+doc = {"format": "modsynth-solution/1", "task": "rose", "status": "solved",
+       "robot": {"dof": 2, "base": [0.0, 0.0], "link_lengths": [0.35, 0.3], "link_diameter": 0.03175},
+       "samples": samples}
+json.dump(doc, open(sys.argv[1], "w"))
+for s in samples:
+    s["t"] = 1e300 if s["t"] > 0 else 0.0
+json.dump(doc, open(sys.argv[2], "w"))
+PY
+# A controller would command it: no CSV or joint trajectory, exit 2, unless
+# the user asks for them.
+expect_exit 2 "export an uncertified motion" "$bin" export "$rose" "$tmp/wrong.json" \
+    --csv "$tmp/w.csv" --joint-trajectory "$tmp/w.yaml" --report "$tmp/w.html"
+expect_message "export an uncertified motion" "not certified" "--csv $tmp/w.csv: not written" \
+    "--joint-trajectory $tmp/w.yaml: not written" "--write-uncertified"
+[ ! -e "$tmp/w.csv" ] && [ ! -e "$tmp/w.yaml" ] || fail "controller files written for an uncertified motion"
+[ -s "$tmp/w.html" ] || fail "the report of an uncertified motion is not written"
+expect_exit 0 "export an uncertified motion on request" "$bin" export "$rose" "$tmp/wrong.json" \
+    --csv "$tmp/w.csv" --joint-trajectory "$tmp/w.yaml" --write-uncertified
+[ -s "$tmp/w.csv" ] && [ -s "$tmp/w.yaml" ] || fail "--write-uncertified wrote no controller files"
+# Times beyond any motion are refused by name, never written as a negative
+# duration.
+expect_exit 2 "export times of 1e300 s" "$bin" export "$rose" "$tmp/far.json" \
+    --joint-trajectory "$tmp/f.yaml" --write-uncertified
+expect_message "export times of 1e300 s" "samples[1].t: 1e+300 s"
+[ ! -e "$tmp/f.yaml" ] || fail "a joint trajectory written for times of 1e300 s"
+
+# export-svg reads a task as every command does: not both trajectory and
+# strokes, parts named strokes[s][j].
+python3 - "$rose" "$tmp" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+both = dict(t, strokes=[t["trajectory"]])
+json.dump(both, open(sys.argv[2] + "/both.json", "w"))
+bad = {k: v for k, v in t.items() if k != "trajectory"}
+bad["strokes"] = [t["trajectory"][:2], [dict(t["trajectory"][2], start=[9.0, 9.0])]]
+json.dump(bad, open(sys.argv[2] + "/badstroke.json", "w"))
+PY
+expect_exit 2 "export-svg of trajectory and strokes" "$bin" export-svg "$tmp/both.json" -o "$tmp/x.svg"
+expect_message "export-svg of trajectory and strokes" "strokes"
+expect_exit 2 "export-svg of a bad stroke" "$bin" export-svg "$tmp/badstroke.json" -o "$tmp/x.svg"
+expect_message "export-svg of a bad stroke" "strokes[1][0]"
+grep -qF "trajectory[0]" "$tmp/err" && fail "export-svg names trajectory[0] in a task of strokes: $(cat "$tmp/err")"
+
+# import checks the whole task once: a cap is named by its own part.
+python3 -c '
+import sys
+circles = "".join("<circle cx=\"%d\" cy=\"%d\" r=\"1\"/>" % (5 + (k % 40) * 5, 5 + (k // 40) * 5) for k in range(1001))
+open(sys.argv[1], "w").write("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"300mm\" height=\"300mm\" "
+    "viewBox=\"0 0 300 300\"><path d=\"M 250,250 L 290,290\"/><g id=\"obs\">" + circles + "</g></svg>")' "$tmp/obs.svg"
+expect_exit 2 "import 1001 obstacles" "$bin" import "$tmp/obs.svg" -o "$tmp/x.json" --obstacles-from obs
+expect_message "import 1001 obstacles" "obstacles: 1001 obstacles, more than the 1000 allowed"
+grep -qF "strokes[" "$tmp/err" && fail "import 1001 obstacles names a stroke: $(cat "$tmp/err")"
+
+# batch and regress on folders that link to themselves: every task once, a
+# bad entry one invalid row, no internal error.
+# Infeasible tasks (proved in milliseconds) keep the runs short.
+far=$root/tasks/infeasible/out-of-reach.task.json
+mkdir -p "$tmp/suite/sub"
+cp "$far" "$tmp/suite/sub/far.json"
+ln -s loop.json "$tmp/suite/loop.json"
+ln -s . "$tmp/suite/sub/again"
+ln -s .. "$tmp/suite/sub/up"
+python3 - "$far" "$tmp/suite/esc.json" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+t["name"] = "esc\x1b]0;owned\x07\r\nfake line"
+json.dump(t, open(sys.argv[2], "w"))
+PY
+timeout 120 "$bin" batch "$tmp/suite" --out "$tmp/r.jsonl" --jobs 2 --time-limit 20 >"$tmp/out" 2>"$tmp/err"
+code=$?
+[ "$code" -eq 1 ] || fail "batch of a folder linked to itself: exit $code, expected 1 ($(tail -3 "$tmp/err"))"
+python3 - "$tmp/r.jsonl" <<'PY' || fail "batch of a folder linked to itself: $(cat "$tmp/r.jsonl")"
+import json, sys
+lines = [json.loads(l) for l in open(sys.argv[1])]
+tasks = sorted(l["task"].split("suite/")[1] for l in lines)
+assert tasks == ["esc.json", "loop.json", "sub/far.json"], tasks
+loop = [l for l in lines if l["task"].endswith("loop.json")][0]
+assert loop["status"] == "invalid" and "symbolic links" in loop["message"], loop
+PY
+# The progress line shows the name escaped: no ESC, CR or LF of it.
+python3 - "$tmp/err" <<'PY' || fail "batch prints a task name's control bytes: $(cat -v "$tmp/err")"
+import sys
+err = open(sys.argv[1], "rb").read()
+assert b"\x1b" not in err and b"\x07" not in err and b"\r" not in err, err
+assert b"fake line" not in err.split(b"\n")[0] or True
+lines = [l for l in err.split(b"\n") if b"esc" in l]
+assert lines and all(b"\\x1B" in l for l in lines), lines
+assert not any(l.startswith(b"fake line") for l in err.split(b"\n")), err
+PY
+mkdir -p "$tmp/rtasks" "$tmp/renc"
+ln -s self.json "$tmp/rtasks/self.json"
+ln -s . "$tmp/rtasks/again"
+expect_exit 1 "regress on a folder with a link to itself" "$bin" regress encodings --tasks "$tmp/rtasks" --dir "$tmp/renc"
+grep -q "internal error" "$tmp/err" && fail "regress: internal error: $(cat "$tmp/err")"
+grep -q "self" "$tmp/out" || fail "regress does not name the bad entry: $(cat "$tmp/out")"
+cp "$far" "$tmp/rtasks/far.json"
+mkfifo "$tmp/renc/far.expect.json"
+expect_exit 1 "regress with a FIFO as its expectation" "$bin" regress encodings --tasks "$tmp/rtasks" \
+    --dir "$tmp/renc" --time-limit 20
+grep -q "far.*unreadable expectation.*not a regular file" "$tmp/out" ||
+    fail "regress does not refuse a FIFO as its expectation: $(cat "$tmp/out")"
+
+# Messages of out-of-range options say the range in a few digits.
+expect_exit 2 "import --tolerance 1e-12" "$bin" import "$root/tasks/drawings/sketch.svg" -o "$tmp/x.json" --tolerance 1e-12
+expect_message "import --tolerance 1e-12" "--tolerance" "at least 1e-09"
+grep -q "0.000000" "$tmp/err" && fail "import --tolerance 1e-12: $(cat "$tmp/err")"
+expect_exit 2 "import --width 0" "$bin" import "$root/tasks/drawings/sketch.svg" -o "$tmp/x.json" --width 0
+expect_message "import --width 0" "--width" "greater than 0"
+[ "$(wc -c <"$tmp/err")" -lt 300 ] || fail "import --width 0: a long message: $(cat "$tmp/err")"
+for v in nan inf -1; do
+    expect_exit 2 "import --width $v" "$bin" import "$root/tasks/drawings/sketch.svg" -o "$tmp/x.json" --width "$v"
+    expect_exit 2 "import --scale $v" "$bin" import "$root/tasks/drawings/sketch.svg" -o "$tmp/x.json" --scale "$v"
+    expect_exit 2 "import --time-limit $v" "$bin" import "$root/tasks/drawings/sketch.svg" -o "$tmp/x.json" --time-limit "$v"
+done
+expect_exit 4 "solve --time-limit 0.001" "$bin" solve "$rose" -o "$tmp/x.json" --time-limit 0.001 --quiet
+python3 -c '
+import json, sys
+m = json.load(open(sys.argv[1]))["explanation"]["message"]
+assert ": ." not in m and not m.endswith(": "), m' "$tmp/x.json" || fail "solve --time-limit 0.001: $(cat "$tmp/x.json")"
+
+finish hostile
