@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include <modsynth/task/spatial_strokes.h>
 #include <modsynth/task/strokes.h>
 
 using namespace modsynth;
@@ -70,4 +71,18 @@ TEST_CASE("a primitive part names its index in the task, as the document numbers
     CHECK(task::primitive_index(t, TaskPart::stroke_primitive(1, 0)) == 2);
     CHECK_FALSE(task::primitive_index(t, TaskPart::stroke_primitive(1, 1)));
     CHECK_FALSE(task::primitive_index(t, TaskPart::trajectory(0)));
+}
+
+TEST_CASE("a spatial task names its primitives as the same parts", "[task]") {
+    task::SpatialTask t;
+    for (int j = 0; j < 3; ++j)
+        t.trajectory.push_back(geometry::Line3{geometry::Vec3(0.1 * j, 0.5, 0.2),
+                                               geometry::Vec3(0.1 * j + 0.1, 0.5, 0.2)});
+    CHECK(task::primitive_part(t, 2) == TaskPart::trajectory(2));
+    CHECK(task::part_name(t, 2) == "trajectory[2]");
+    CHECK(task::to_string(task::primitive_part(t, 2).with_field("normal")) ==
+          "trajectory[2].normal");
+    t.stroke_starts = {0, 2};
+    CHECK(task::primitive_part(t, 2) == TaskPart::stroke_primitive(1, 0));
+    CHECK(task::part_name(t, 1) == "strokes[0][1]");
 }
