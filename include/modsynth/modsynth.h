@@ -5,25 +5,28 @@
 // tests/embed/example.cpp may use); the other headers under
 // include/modsynth/ are the stages' interfaces to each other and may change
 // without notice.
-#include <functional>
-#include <optional>
 #include <string>
 #include <string_view>
-#include <vector>
 
-#include <modsynth/synth/explanation.h>
+#include <modsynth/explanation/explain.h>
+#include <modsynth/run/progress.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/task/input_error.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth {
 
+using explanation::Explanation;
+using run::ProgressEvent;
+using run::ProgressSink;
 using synth::Solution;
 using synth::Status;
 using task::InputError;
 using task::SpatialTask;
 using task::Task;
+using task::TaskPart;
 using verify::Certificate;
 
 /// A modsynth-task/1 document (docs/formats.md), validated. Throws
@@ -43,34 +46,22 @@ SpatialTask load_spatial_task(const std::string& path);
 struct SolveOptions {
     double time_limit = 60.0;  ///< seconds for the whole synthesis; > 0
     unsigned seed = 0;         ///< varies initial guesses; same seed, same answer
-    /// Called with one line per stage reached ("[  0.012s] 2 joints: front
-    /// stage"); leave empty for silence.
-    std::function<void(const std::string&)> progress;
+    /// Told of every step (stage, sentence, seconds since the start;
+    /// run::console_line prints it as `modsynth solve` does); leave empty
+    /// for silence.
+    ProgressSink progress;
 };
 
-/// A certified robot and its timed motion, a proof that none exists, or
-/// "unknown" with the stage reached and why. Throws std::invalid_argument
-/// naming the field when the options are not valid.
+/// A certified robot and its timed motion (with the actuator modules that
+/// carry it), a proof that none exists, or "unknown" with the stage reached
+/// and why: the same answer as `modsynth solve`. Throws InputError when the
+/// task names a module the catalog lacks, and std::invalid_argument naming
+/// the field when the options are not valid.
 Solution solve(const Task& task, const SolveOptions& options = {});
 
-struct Explanation {
-    /// Infeasible when proved so; otherwise what a full synthesis found.
-    Status status;
-    /// A sentence a person can act on.
-    std::string message;
-    /// The task parts that conflict, named as in formats.md.
-    std::vector<std::string> core;
-    /// The data of an obstacle proof (formats.md, "explanation.separation",
-    /// ".geodesic"), when the task was proved infeasible that way.
-    std::optional<synth::SeparationWitness> separation;
-    std::optional<synth::GeodesicWitness> geodesic;
-    /// When proved infeasible: the smallest changes of one part each that
-    /// remove the conflict, each re-checked with the full pipeline.
-    std::vector<synth::Relaxation> suggestions;
-};
-
 /// Why a task cannot be done, within `time_limit` seconds in all;
-/// `solve_seconds` of synthesis go to each suggested change.
+/// `solve_seconds` of synthesis go to each suggested change. The same flow
+/// as `modsynth explain`.
 Explanation explain(const Task& task, double time_limit = 60.0, double solve_seconds = 10.0);
 
 /// Checks a solution's motion against the task over the whole continuum,

@@ -1,7 +1,5 @@
 #include <modsynth/modsynth.h>
 
-#include <algorithm>
-#include <chrono>
 #include <utility>
 
 #include <modsynth/io/input.h>
@@ -10,18 +8,11 @@
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/output/recertify.h>
-#include <modsynth/synth/synthesizer.h>
+#include <modsynth/synth/solve.h>
 
 #include <nlohmann/json.hpp>
 
 namespace modsynth {
-namespace {
-
-// The proof gets at most this much of explain's time; the rest goes to a
-// full run (when there is no proof) or to the suggestions.
-constexpr double kProofSeconds = 10.0;
-
-}  // namespace
 
 Task read_task(std::string_view json_text) { return io::parse_task_text(json_text); }
 
@@ -42,37 +33,14 @@ Solution solve(const Task& task, const SolveOptions& options) {
     o.time_limit = options.time_limit;
     o.seed = options.seed;
     o.progress = options.progress;
-    return synth::synthesize(task, o);
+    return synth::solve(task, o);
 }
 
 Explanation explain(const Task& task, double time_limit, double solve_seconds) {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
-    const auto left = [&] {
-        return time_limit - std::chrono::duration<double>(Clock::now() - start).count();
-    };
-    Explanation out;
-    const synth::InfeasibilityProof proof =
-        synth::prove_infeasible(task, std::max(0.0, std::min(kProofSeconds, left())));
-    if (!proof.proved) {
-        SolveOptions o;
-        o.time_limit = std::max(0.0, left());
-        const Solution s = solve(task, o);
-        out.status = s.status;
-        out.core = s.explanation.core;
-        out.message = synth::unproved_message(proof, s);
-        out.separation = s.explanation.separation;
-        out.geodesic = s.explanation.geodesic;
-        return out;
-    }
-    out.status = Status::Infeasible;
-    out.core = proof.core;
-    out.message = synth::proved_message(proof);
-    out.separation = proof.separation;
-    out.geodesic = proof.geodesic;
-    out.suggestions =
-        synth::suggest_relaxations(task, proof.core, solve_seconds, std::max(0.0, left()));
-    return out;
+    explanation::ExplainOptions o;
+    o.time_limit = time_limit;
+    o.solve_seconds = solve_seconds;
+    return explanation::explain(task, o);
 }
 
 Certificate certify(const Task& task, const Solution& solution) {

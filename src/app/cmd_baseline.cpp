@@ -55,7 +55,9 @@ void print_result(const task::Task& task, const baseline::BaselineResult& r) {
 int run_baseline(BaselineArgs& a) {
     const task::Task task = load_planar_task(a.task, "baseline");
     if (!a.quiet)
-        a.options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
+        a.options.progress = [](const run::ProgressEvent& e) {
+            std::cerr << run::console_line(e) << std::endl;
+        };
     const baseline::BaselineResult r = baseline::run_baseline(task, a.options);
     if (!a.output.empty())
         output::write_text_file(a.output, output::to_json(r, true).dump(1) + "\n");

@@ -1,6 +1,7 @@
 // `modsynth batch`: many tasks solved in parallel processes, one JSON line
 // of figures per task. Exit 0 when every task got an answer (solved,
 // infeasible or unknown), 1 when any run failed, 2 on bad usage.
+#include <modsynth/run/stopwatch.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
@@ -8,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -32,7 +32,6 @@ namespace modsynth::app {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 struct BatchArgs {
     std::string input, out, solutions, shard = "1/1";
@@ -152,7 +151,7 @@ public:
     void close() {
         if (tty_ && total_ > 0) std::fputc('\n', stderr);
     }
-    double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+    double elapsed() const { return clock_.seconds(); }
 
 private:
     void draw(const std::string& tail) {
@@ -167,7 +166,7 @@ private:
     std::size_t total_, done_ = 0;
     bool tty_;
     std::array<int, kColumns> counts_{};  // by column_of
-    Clock::time_point start_ = Clock::now();
+    run::Stopwatch clock_;
 };
 
 double median(std::vector<double> v) {

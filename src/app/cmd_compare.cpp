@@ -105,9 +105,9 @@ int run_compare(CompareArgs& a) {
     });
     synth::SynthesisOptions ours;
     ours.time_limit = a.time_limit;
-    auto say = [&, quiet = a.quiet](const std::string& line) {
-        watchdog.set_stage(line);
-        if (!quiet) std::cerr << line << std::endl;
+    auto say = [&, quiet = a.quiet](const run::ProgressEvent& e) {
+        watchdog.set_stage(e.message);
+        if (!quiet) std::cerr << run::console_line(e) << std::endl;
     };
     ours.progress = say;
     a.options.progress = say;

@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <mutex>
@@ -7,10 +6,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/explanation/explain.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_io.h>
-#include <modsynth/synth/explanation.h>
-#include <modsynth/synth/synthesizer.h>
+#include <modsynth/prove/conflict_text.h>
+#include <modsynth/run/stopwatch.h>
 
 #include "command.h"
 #include "number_checks.h"
@@ -30,22 +30,29 @@ struct ExplainArgs {
 // Past the time limit by this much, the watchdog answers for the run.
 constexpr double kWatchdogMargin = 0.6;
 
+nlohmann::json suggestion_json(const explanation::Relaxation& r) {
+    return {{"part", task::to_string(r.part)}, {"change", r.change}, {"outcome", r.outcome}};
+}
+
 // --time-limit bounds the whole command: the proof, or the full run when
-// there is none, and then the suggestions.
+// there is none, and then the suggestions (explanation/explain.h).
 int run_explain(const ExplainArgs& a) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const run::Stopwatch clock;
     const task::Task task = load_planar_task(a.task, "explain");
-    const auto left = [&] {
-        return a.time_limit -
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    };
     std::mutex mutex;  // `out` is shared with the watchdog
     nlohmann::json out;
     // What the JSON says so far: unknown until a proof or a full run answers.
     synth::Status status = synth::Status::Unknown;
     out["task"] = task.name;
     out["status"] = synth::to_string(status);
-    Watchdog watchdog(left() + kWatchdogMargin, [&] {
+    const auto fill = [&](const explanation::Explanation& e) {
+        out["status"] = synth::to_string(e.status);
+        out["message"] = e.message;
+        out["core"] = task::to_strings(e.core);
+        io::add_witnesses({e.message, e.core, e.separation, e.geodesic}, out);
+    };
+    const double time_limit = std::max(0.0, a.time_limit - clock.seconds());
+    Watchdog watchdog(time_limit + kWatchdogMargin, [&] {
         std::lock_guard<std::mutex> lock(mutex);
         const std::string note = "stopped at the time limit while " + watchdog.stage();
         if (a.json) {
@@ -57,59 +64,48 @@ int run_explain(const ExplainArgs& a) {
         }
         return status == synth::Status::Infeasible ? int{kInfeasible} : int{kUnknown};
     });
-    watchdog.set_stage("proving infeasibility");
-    const synth::InfeasibilityProof proof = synth::prove_infeasible(task, std::min(10.0, left()));
-    if (!proof.proved) {
-        // Not proved infeasible: say what a full run finds.
-        watchdog.set_stage("solving the task");
-        synth::SynthesisOptions options;
-        options.time_limit = std::max(0.0, left());
-        const synth::Solution s = synth::synthesize(task, options);
-        watchdog.claim();
-        out["status"] = synth::to_string(s.status);
-        const std::string message = synth::unproved_message(proof, s);
-        out["message"] = message;
-        out["core"] = s.explanation.core;
-        io::add_witnesses(s.explanation, out);
+    explanation::ExplainOptions options;
+    options.time_limit = time_limit;
+    options.solve_seconds = a.solve_seconds;
+    options.progress = [&](const run::ProgressEvent& e) { watchdog.set_stage(e.message); };
+    // Once proved, the proof is printed at once: the suggestions take most
+    // of the time, and a run stopped among them still says why.
+    options.proved = [&](const explanation::Explanation& e) {
+        std::lock_guard<std::mutex> lock(mutex);
+        status = e.status;
+        fill(e);
+        out["suggestions"] = nlohmann::json::array();
+        if (!a.json) {
+            std::printf("%s\n\nThe conflicting parts:\n", e.message.c_str());
+            for (const auto& part : e.core)
+                std::printf("  - %s\n", prove::describe_part(task, part).c_str());
+            std::printf("\nSmallest changes that remove the conflict (each re-checked):\n");
+            std::fflush(stdout);
+        }
+    };
+    const explanation::Explanation e = explanation::explain(task, options);
+    watchdog.claim();
+    if (!e.proved) {
+        // Not proved infeasible: what a full run found.
+        fill(e);
         if (a.json) {
             std::printf("%s\n",
                         out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
         } else {
-            std::printf("%s\n", message.c_str());
+            std::printf("%s\n", e.message.c_str());
         }
-        return s.status == synth::Status::Solved       ? kOk
-               : s.status == synth::Status::Infeasible ? kInfeasible
+        return e.status == synth::Status::Solved       ? kOk
+               : e.status == synth::Status::Infeasible ? kInfeasible
                                                        : kUnknown;
     }
-    const std::string message = synth::proved_message(proof);
-    {
-        std::lock_guard<std::mutex> lock(mutex);
-        status = synth::Status::Infeasible;
-        out["status"] = synth::to_string(status);
-        out["message"] = message;
-        out["core"] = proof.core;
-        io::add_witnesses({message, proof.core, proof.separation, proof.geodesic}, out);
-        out["suggestions"] = nlohmann::json::array();
-        if (!a.json) {
-            std::printf("%s\n\nThe conflicting parts:\n", message.c_str());
-            for (const auto& part : proof.core)
-                std::printf("  - %s\n", synth::describe_part(task, part).c_str());
-            std::printf("\nSmallest changes that remove the conflict (each re-checked):\n");
-            std::fflush(stdout);
-        }
-    }
-    watchdog.set_stage("looking for the smallest changes");
-    const auto relaxations = synth::suggest_relaxations(task, proof.core, a.solve_seconds, left());
-    watchdog.claim();
-    for (const auto& r : relaxations) {
-        out["suggestions"].push_back(
-            {{"part", r.part}, {"change", r.change}, {"outcome", r.outcome}});
+    for (const auto& r : e.suggestions) {
+        out["suggestions"].push_back(suggestion_json(r));
         if (!a.json) std::printf("  - %s\n      then: %s\n", r.change.c_str(), r.outcome.c_str());
     }
     if (a.json) {
         std::printf("%s\n",
                     out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
-    } else if (relaxations.empty()) {
+    } else if (e.suggestions.empty()) {
         std::printf("  (none found by changing one part alone)\n");
     }
     return kInfeasible;

@@ -7,15 +7,16 @@
 #include <vector>
 
 #include <modsynth/hardware/select_dh_modules.h>
+#include <modsynth/hardware/task_catalog.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/output/exports.h>
 #include <modsynth/output/recertify.h>
+#include <modsynth/synth/module_choice.h>
 #include <modsynth/synth/spatial_module_choice.h>
 
 #include "command.h"
-#include "module_choice.h"
 
 namespace modsynth::app {
 namespace {
@@ -85,14 +86,14 @@ int run_export(const ExportArgs& a) {
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
         return export_spatial(a, *spatial);
     const task::Task& task = std::get<task::Task>(doc);
-    const std::optional<hardware::Catalog> catalog = catalog_for(task);
+    const hardware::TaskCatalog catalog = hardware::catalog_for(task);
+    if (!catalog.note.empty()) std::fprintf(stderr, "note: %s\n", catalog.note.c_str());
     io::ParsedSolution parsed = io::load_solution(a.solution);
     output::ReportFigures figures;
     figures.certificate_note = output::recertify(task, parsed);
-    const bool was_solved = parsed.solution.status == synth::Status::Solved;
-    choose_modules(task, catalog, parsed.solution);
-    if (was_solved && parsed.solution.status != synth::Status::Solved)
-        std::fprintf(stderr, "error: %s\n", parsed.solution.explanation.message.c_str());
+    synth::choose_modules(task, catalog.catalog, parsed.solution);
+    const std::string overload = synth::overload_warning(parsed.solution);
+    if (!overload.empty()) std::fprintf(stderr, "warning: %s\n", overload.c_str());
     const synth::Solution& s = parsed.solution;
     output::ExportPaths paths = a.exports;
     const std::vector<std::string> refused = refuse_uncertified(a, s, paths);

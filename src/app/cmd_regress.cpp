@@ -7,12 +7,12 @@
 #include <modsynth/io/input.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/run/stopwatch.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -36,7 +36,6 @@ namespace modsynth::app {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 using Json = nlohmann::ordered_json;
 
 constexpr const char* kFormat = "modsynth-encodings/1";
@@ -151,15 +150,15 @@ smt::FrontStage::Result result_from_name(const std::string& name, const std::str
 // In-process: the front stage is Z3's nlsat, which honours its timeout, and
 // Ipopt is not involved.
 FrontFigures run_front(const task::Task& task, int dof) {
-    const auto t0 = Clock::now();
+    const run::Stopwatch t0;
     smt::FrontStage front(task, dof);
     FrontFigures f;
     f.dof = dof;
     f.encoding = front.smtlib();
     const auto result = front.check();
     f.result = result;
-    if (result == smt::FrontStage::Result::Unsat) f.core = front.minimal_core();
-    f.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (result == smt::FrontStage::Result::Unsat) f.core = task::to_strings(front.minimal_core());
+    f.seconds = t0.seconds();
     return f;
 }
 

@@ -1,7 +1,7 @@
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -9,19 +9,20 @@
 #include <string>
 #include <variant>
 
+#include <modsynth/io/progress_json.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/output/exports.h>
-#include <modsynth/synth/synthesizer.h>
+#include <modsynth/run/stopwatch.h>
+#include <modsynth/synth/module_choice.h>
+#include <modsynth/synth/solve.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
 #include "command.h"
-#include "module_choice.h"
 #include "number_checks.h"
-#include "planar_task.h"
 #include "spatial_solve.h"
 #include "watchdog.h"
 
@@ -36,6 +37,7 @@ struct SolveArgs {
     double ee_speed = std::numeric_limits<double>::infinity();
     double joint_speed = std::numeric_limits<double>::infinity();
     bool quiet = false;
+    std::string events;  ///< where progress events go as JSON lines, if anywhere
     std::string swept = "auto";
     double shorten_gap = synth::SynthesisOptions{}.shorten_gap;
     output::ExportPaths exports;
@@ -56,7 +58,12 @@ std::string stretch_text(const task::Task& task, const std::vector<control::Samp
 void print_summary(const task::Task& task, const synth::Solution& solution, double seconds,
                    const synth::SynthesisStats& stats, const std::string& output,
                    double ee_speed = std::numeric_limits<double>::infinity()) {
-    const std::string status = synth::to_string(solution.status);
+    // A certified motion that no allowed module carries is still solved;
+    // the status line says which joint is overloaded.
+    const bool overloaded = solution.modules && solution.modules->overloaded_joint > 0;
+    const std::string status = overloaded ? text::format("solved, but joint %d is overloaded",
+                                                         solution.modules->overloaded_joint)
+                                          : std::string(synth::to_string(solution.status));
     std::printf("%s: %s in %.3f s (front stage %.3f s, refinement %.3f s, verification %.3f s)\n",
                 text::printable(task.name, 80).c_str(), status.c_str(), seconds,
                 stats.front_seconds, stats.refine_seconds, stats.verify_seconds);
@@ -64,7 +71,8 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
         std::printf("  %s\n", solution.explanation.message.c_str());
         if (!solution.explanation.core.empty()) {
             std::printf("  core:");
-            for (const auto& c : solution.explanation.core) std::printf(" %s", c.c_str());
+            for (const auto& c : solution.explanation.core)
+                std::printf(" %s", task::to_string(c).c_str());
             std::printf("\n");
         }
         return;
@@ -119,17 +127,14 @@ double output_reserve(const task::Task& task, double time_limit) {
 }
 
 int run_solve(const SolveArgs& a) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const run::Stopwatch clock;
     io::TaskDocument doc = io::load_task_document(a.task);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
         return run_spatial_solve(
             *spatial, {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed, a.quiet, a.exports},
-            t0);
+            clock.started());
     const task::Task task = std::get<task::Task>(std::move(doc));
-    const std::optional<hardware::Catalog> catalog = catalog_for(task);
-    const auto elapsed = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    };
+    const auto elapsed = [&] { return clock.seconds(); };
     Watchdog watchdog(a.time_limit + kWatchdogMargin - elapsed(), [&] {
         synth::Solution unknown;
         unknown.task_name = task.name;
@@ -154,16 +159,24 @@ int run_solve(const SolveArgs& a) {
     options.swept = *synth::swept_choice_from(a.swept);
     options.shorten_gap = a.shorten_gap;
     options.retime.ee_speed = a.ee_speed;
-    options.retime.joint_speed = std::min(a.joint_speed, module_speed_cap(task, catalog));
-    options.progress = [&](const std::string& line) {
-        watchdog.set_stage(line.size() > 11 ? line.substr(11) : line);  // without the clock
-        if (!a.quiet) std::cerr << line << std::endl;
+    options.retime.joint_speed = a.joint_speed;
+    std::ofstream events;
+    if (!a.events.empty()) {
+        events.open(a.events, std::ios::trunc);
+        if (!events) throw task::InputError(a.events, "cannot be written");
+    }
+    options.progress = [&](const run::ProgressEvent& e) {
+        watchdog.set_stage(e.message);
+        if (!a.quiet) std::cerr << run::console_line(e) << std::endl;
+        if (events.is_open()) events << io::progress_json_line(e) << std::endl;
     };
     synth::SynthesisStats stats;
-    synth::Solution solution = synth::synthesize(task, options, &stats);
+    const synth::Solution solution = synth::solve(task, options, &stats);
     const double seconds = elapsed();
     watchdog.claim();
-    choose_modules(task, catalog, solution);
+    for (const auto& note : stats.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+    const std::string overload = synth::overload_warning(solution);
+    if (!overload.empty()) std::fprintf(stderr, "warning: %s\n", overload.c_str());
     io::write_solution(solution, a.output);
     for (const auto& note : output::write_exports(
              task, solution, a.exports,
@@ -221,6 +234,9 @@ Command add_solve(CLI::App& parent) {
                     "wherever any shorter one could; default 0.0005)")
         ->check(within(0.0, 10.0));
     sub->add_flag("-q,--quiet", a->quiet, "no progress lines on stderr");
+    sub->add_option("--events", a->events,
+                    "also write every progress event to this file, one JSON object a line "
+                    "({\"stage\", \"message\", \"elapsed\"}), for a program that follows the run");
     add_export_options(*sub, a->exports);
     return {sub, [a] { return run_solve(*a); }};
 }

@@ -3,11 +3,11 @@
 #include <string>
 #include <variant>
 
+#include <modsynth/hardware/task_catalog.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/text/printable.h>
 
 #include "command.h"
-#include "module_choice.h"
 
 namespace modsynth::app {
 
@@ -20,12 +20,12 @@ Command add_validate(CLI::App& parent) {
                 const io::TaskDocument doc = io::load_task_document(*path);
                 // robot.modules must name modules of the catalog.
                 if (const auto* t = std::get_if<task::Task>(&doc)) {
-                    if (!t->robot.modules.empty()) catalog_for(*t);
+                    if (!t->robot.modules.empty()) hardware::catalog_for(*t);
                 } else if (const auto& s = std::get<task::SpatialTask>(doc);
                            !s.robot.modules.empty()) {
                     task::Task names;
                     names.robot.modules = s.robot.modules;
-                    catalog_for(names);
+                    hardware::catalog_for(names);
                 }
                 std::visit(
                     [&](const auto& t) {

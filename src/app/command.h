@@ -11,17 +11,9 @@
 #include <modsynth/kinematics/robot.h>
 #include <modsynth/output/exports.h>
 
-namespace modsynth::app {
+#include "exit_code.h"
 
-/// kNotCertified: `certify` found the solution's motion not certified.
-enum Exit {
-    kOk = 0,
-    kInternal = 1,
-    kInvalid = 2,
-    kInfeasible = 3,
-    kUnknown = 4,
-    kNotCertified = 5
-};
+namespace modsynth::app {
 
 struct Command {
     CLI::App* app = nullptr;

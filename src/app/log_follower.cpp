@@ -24,15 +24,4 @@ std::vector<std::string> LogFollower::new_lines(bool final) {
     return lines;
 }
 
-std::string stage_of(const std::string& line) {
-    if (line.size() < 4 || line[0] != '[') return {};
-    const std::size_t close = line.find("s] ");
-    if (close == std::string::npos) return {};
-    for (std::size_t i = 1; i < close; ++i) {
-        const char c = line[i];
-        if (c != ' ' && c != '.' && (c < '0' || c > '9')) return {};
-    }
-    return line.substr(close + 3);
-}
-
 }  // namespace modsynth::app

@@ -23,8 +23,4 @@ private:
     std::string partial_;
 };
 
-/// A solve progress line "[  0.123s] 2 joints: ..." without its clock; empty
-/// for any other line.
-std::string stage_of(const std::string& line);
-
 }  // namespace modsynth::app

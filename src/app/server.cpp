@@ -10,7 +10,7 @@
 #include <optional>
 #include <thread>
 
-#include "command.h"
+#include "exit_code.h"
 #include "import_runner.h"
 #include "loopback.h"
 #include "process_pool.h"

@@ -1,5 +1,6 @@
 #include "solve_jobs.h"
 
+#include <modsynth/io/progress_json.h>
 #include <modsynth/output/exports.h>
 #include <modsynth/text/format.h>
 
@@ -20,9 +21,6 @@ namespace {
 // effect within it.
 constexpr auto kTick = std::chrono::milliseconds(50);
 constexpr std::size_t kLogLines = 60;
-// A proof of infeasibility is fast when it exists (toolchain notes: unsat
-// answers stay fast), so `explain` gets a short one of its own.
-constexpr double kExplainProofSeconds = 10.0;
 
 // The files a job may hand out, in the order clients list them.
 const std::vector<std::string> kFiles = {
@@ -59,6 +57,7 @@ struct SolveJobs::Job {
     std::unique_ptr<TempDir> dir;  // before child: the process dies before its folder goes
     std::unique_ptr<ChildProcess> child;
     std::unique_ptr<LogFollower> log;
+    std::unique_ptr<LogFollower> events;  ///< the solve's progress events, JSON lines
     Clock::time_point start;
     Clock::time_point last_seen;
     int waiting = 0;  ///< clients in wait_for_change right now
@@ -122,11 +121,14 @@ std::string SolveJobs::start(const std::string& task_text, double time_limit) {
                  "--joint-trajectory",
                  "joint-trajectory.yaml",
                  "--build-sheet",
-                 "build-sheet.md"};
+                 "build-sheet.md",
+                 "--events",
+                 "events.jsonl"};
     spec.working_dir = job->dir->path();
     spec.log_path = job->path("solve.log");
     spec.wall_limit = job->state.time_limit + limits_.grace;
     job->log = std::make_unique<LogFollower>(spec.log_path);
+    job->events = std::make_unique<LogFollower>(job->path("events.jsonl"));
     job->state.stage = "starting";
     job->child = std::make_unique<ChildProcess>(spec);
 
@@ -235,9 +237,14 @@ void SolveJobs::stop(Job& job, const std::string& reason) {
 }
 
 void SolveJobs::follow_log(Job& job, bool final) {
+    if (job.state.phase == Phase::Solve) {
+        for (const auto& line : job.events->new_lines(final))
+            if (const auto event = io::parse_progress_json_line(line)) {
+                job.state.stage = event->message;
+                ++job.state.version;
+            }
+    }
     for (auto& line : job.log->new_lines(final)) {
-        const std::string stage = stage_of(line);
-        if (!stage.empty()) job.state.stage = stage;
         job.state.log.push_back(std::move(line));
         ++job.state.version;
     }
@@ -257,10 +264,11 @@ void SolveJobs::end_solve(Job& job) {
         return;
     }
     ProcessSpec spec;
-    spec.argv = {executable_,       "explain",
-                 "task.json",       "--json",
-                 "--time-limit",    number(std::min(kExplainProofSeconds, job.state.time_limit)),
-                 "--solve-seconds", number(limits_.relaxation_seconds)};
+    spec.argv = {
+        executable_,       "explain",
+        "task.json",       "--json",
+        "--time-limit",    number(std::min(limits_.explain_time_limit, job.state.time_limit)),
+        "--solve-seconds", number(limits_.relaxation_seconds)};
     spec.log_path = job.path("explain.json");
     spec.stderr_path = job.path("explain.log");
     spec.wall_limit = limits_.explain_limit;

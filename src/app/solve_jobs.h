@@ -23,10 +23,14 @@
 namespace modsynth::app {
 
 struct JobLimits {
-    int max_solves = 2;               ///< jobs running at once; more are refused
-    double time_limit = 60.0;         ///< the default and the longest solve a client may ask
-    double grace = 5.0;               ///< seconds past the time limit before the kill
-    double client_timeout = 15.0;     ///< no word from the client for this long: it left
+    int max_solves = 2;            ///< jobs running at once; more are refused
+    double time_limit = 60.0;      ///< the default and the longest solve a client may ask
+    double grace = 5.0;            ///< seconds past the time limit before the kill
+    double client_timeout = 15.0;  ///< no word from the client for this long: it left
+    /// `explain`'s --time-limit for an infeasible task (the proof again, then
+    /// the suggestions; at most the job's own time limit): the answer is
+    /// known by then, and the page should not wait long for suggestions.
+    double explain_time_limit = 10.0;
     double explain_limit = 60.0;      ///< wall clock for the suggested changes
     double relaxation_seconds = 5.0;  ///< full synthesis tried on each suggested change
     std::size_t keep_finished = 32;   ///< finished jobs kept for their downloads
@@ -43,7 +47,7 @@ struct JobState {
     std::uint64_t version = 0;  ///< grows with every change worth telling
     double elapsed = 0.0;       ///< seconds since the start (until the end once done)
     double time_limit = 0.0;
-    std::string stage;                    ///< the latest progress line, without its clock
+    std::string stage;                    ///< the latest progress event's message
     std::vector<std::string> log;         ///< the latest output lines
     std::optional<SolveOutcome> outcome;  ///< once the solve has ended
     /// Once done: the outcome's status, or Cancelled.

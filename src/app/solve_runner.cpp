@@ -10,7 +10,7 @@
 #include <modsynth/io/task_io.h>
 #include <modsynth/text/format.h>
 
-#include "command.h"
+#include "exit_code.h"
 #include "process_pool.h"
 #include "task_files.h"
 
@@ -94,7 +94,7 @@ void read_solution(const std::string& path, SolveOutcome& o) {
     }
     if (!s.task_name.empty()) o.name = s.task_name;
     o.message = s.explanation.message;
-    o.core = s.explanation.core;
+    o.core = task::to_strings(s.explanation.core);
     if (s.status != synth::Status::Solved) return;
     if (s.dh_robot) {  // a spatial solution: its chain is in DH rows
         o.dof = s.dh_robot->dof();

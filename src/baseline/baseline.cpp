@@ -1,21 +1,12 @@
 #include <modsynth/baseline/baseline.h>
 
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
 
+#include <modsynth/run/stopwatch.h>
 #include <modsynth/text/option_check.h>
 
 namespace modsynth::baseline {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-}  // namespace
 
 const char* to_string(BaselineResult::Status status) {
     switch (status) {
@@ -42,17 +33,17 @@ bool BaselineOptions::IsValid(std::string* error) const {
 
 BaselineResult run_baseline(const task::Task& task, const BaselineOptions& options) {
     text::require_valid(options);
+    const run::Stopwatch t0;
     auto say = [&](const std::string& line) {
-        if (options.progress) options.progress(line);
+        if (options.progress) options.progress({run::Stage::Baseline, line, t0.seconds()});
     };
     BaselineResult result;
     result.points = equidistant_points(task, options.points);
-    const auto t0 = Clock::now();
     DesignOptions design = options.design;
     design.time_limit = std::min(design.time_limit, options.design_share * options.time_limit);
     say("discretized design: " + std::to_string(options.points) + " points");
     result.design = design_for_points(task, result.points, design);
-    result.design_seconds = since(t0);
+    result.design_seconds = t0.seconds();
     if (!result.design.found) {
         result.status = BaselineResult::Status::NoDesign;
         result.message = result.design.message;
@@ -61,12 +52,12 @@ BaselineResult run_baseline(const task::Task& task, const BaselineOptions& optio
     }
     say("discretized design: " + std::to_string(result.design.robot.dof()) + " joints after " +
         std::to_string(result.design.nlp_solves) + " solves; RRT between the poses");
-    const auto t1 = Clock::now();
+    const run::Stopwatch t1;
     PlannerOptions planner = options.planner;
     planner.time_limit =
         std::max(0.0, std::min(planner.time_limit, options.time_limit - result.design_seconds));
     result.motion = plan_rrt(task, result.design.robot, result.design.poses, planner);
-    result.planning_seconds = since(t1);
+    result.planning_seconds = t1.seconds();
     result.seconds = result.design_seconds + result.planning_seconds;
     result.status = result.motion.complete ? BaselineResult::Status::Executed
                                            : BaselineResult::Status::NoMotion;

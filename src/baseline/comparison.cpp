@@ -1,15 +1,15 @@
 #include <modsynth/baseline/comparison.h>
 
-#include <chrono>
+#include <modsynth/run/stopwatch.h>
 
 namespace modsynth::baseline {
 
 Comparison compare_methods(const task::Task& task, const synth::SynthesisOptions& ours,
                            const BaselineOptions& theirs) {
     Comparison c;
-    const auto t0 = std::chrono::steady_clock::now();
+    const run::Stopwatch t0;
     c.solution = synth::synthesize(task, ours);
-    c.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    c.solve_seconds = t0.seconds();
     if (c.solution.status == synth::Status::Solved) {
         std::vector<std::vector<double>> waypoints;
         for (const auto& sample : c.solution.samples) waypoints.push_back(sample.q);

@@ -1,7 +1,6 @@
 #include <modsynth/baseline/discretized_design.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -12,6 +11,7 @@
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/nlp/bilinear.h>
 #include <modsynth/nlp/solver.h>
+#include <modsynth/run/deadline.h>
 #include <modsynth/text/option_check.h>
 
 namespace modsynth::baseline {
@@ -215,8 +215,7 @@ bool DesignOptions::IsValid(std::string* error) const {
 PointDesign design_for_points(const task::Task& task, const std::vector<PathSample>& points,
                               const DesignOptions& options) {
     text::require_valid(options);
-    using Clock = std::chrono::steady_clock;
-    const auto deadline = Clock::now() + std::chrono::duration<double>(options.time_limit);
+    const run::Deadline deadline = run::Deadline::in(options.time_limit);
     PointDesign best;
     std::vector<int> dofs = task.robot.dof;
     std::sort(dofs.begin(), dofs.end());
@@ -224,7 +223,7 @@ PointDesign design_for_points(const task::Task& task, const std::vector<PathSamp
     for (int dof : dofs) {
         double best_objective = nlp::kInfinity;
         for (const Start& start : starts(task, dof)) {
-            const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
+            const double left = deadline.remaining();
             if (left <= 0.0) break;
             const Built m = build(task, points, dof, start, options);
             nlp::SolverOptions solver = options.solver;
@@ -255,7 +254,7 @@ PointDesign design_for_points(const task::Task& task, const std::vector<PathSamp
                        (dofs.size() > 1 ? " to " + std::to_string(dofs.back()) : std::string()) +
                        " joints reaches all " + std::to_string(points.size()) +
                        " points from the starts tried (" + std::to_string(solves) + " solves)";
-        if (Clock::now() >= deadline) best.message += "; time limit reached";
+        if (deadline.expired()) best.message += "; time limit reached";
     }
     return best;
 }

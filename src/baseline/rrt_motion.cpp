@@ -1,6 +1,5 @@
 #include <modsynth/baseline/rrt_motion.h>
 
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -18,6 +17,7 @@
 #include <modsynth/geometry/vec.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/kinematics/pose_clearance.h>
+#include <modsynth/run/deadline.h>
 #include <modsynth/text/option_check.h>
 
 namespace modsynth::baseline {
@@ -112,8 +112,7 @@ PlannedMotion plan_rrt(const task::Task& task, const kinematics::Robot& robot,
                        const PlannerOptions& options) {
     text::require_valid(options);
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    using Clock = std::chrono::steady_clock;
-    const auto deadline = Clock::now() + std::chrono::duration<double>(options.time_limit);
+    const run::Deadline deadline = run::Deadline::in(options.time_limit);
     const int n = robot.dof();
     PlannedMotion motion;
     if (poses.empty()) {
@@ -151,7 +150,7 @@ PlannedMotion plan_rrt(const task::Task& task, const kinematics::Robot& robot,
         planner->setup();
         int iterations = 0;
         const ob::PlannerTerminationCondition stop(
-            [&] { return ++iterations > options.max_iterations || Clock::now() >= deadline; });
+            [&] { return ++iterations > options.max_iterations || deadline.expired(); });
         const ob::PlannerStatus status = planner->solve(stop);
         motion.iterations += iterations;
         if (status != ob::PlannerStatus::EXACT_SOLUTION) {
@@ -159,7 +158,7 @@ PlannedMotion plan_rrt(const task::Task& task, const kinematics::Robot& robot,
             motion.message = "RRT found no collision-free motion from point " + std::to_string(k) +
                              " to point " + std::to_string(k + 1) + " within " +
                              std::to_string(options.max_iterations) + " iterations" +
-                             (Clock::now() >= deadline ? " (time limit reached)" : "");
+                             (deadline.expired() ? " (time limit reached)" : "");
             return motion;
         }
         auto& path = *problem->getSolutionPath()->as<og::PathGeometric>();

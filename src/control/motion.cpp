@@ -1,6 +1,7 @@
 #include <modsynth/control/motion.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <modsynth/control/travel.h>
@@ -54,7 +55,9 @@ std::string point_name(const task::Task& task, int j, double s) {
 }  // namespace
 
 int primitive_index(const task::Task& task, const Sample& sample) {
-    return task::primitive_index(task, sample.stroke, sample.primitive);
+    const int j = task::primitive_index(task, sample.stroke, sample.primitive);
+    assert(j >= 0 && j < static_cast<int>(task.trajectory.size()));
+    return j;
 }
 
 bool MotionOptions::IsValid(std::string* error) const {
@@ -105,7 +108,7 @@ bool walk(double from, double to, double first_step, double max_step, const Moti
     double u = from, du = 0.5 * std::min(first_step, max_step);
     while (dir * (to - u) > 1e-12) {
         if (out.size() >= options.max_samples ||
-            (out.size() % 1024 == 0 && std::chrono::steady_clock::now() >= options.deadline)) {
+            (out.size() % 1024 == 0 && options.deadline.expired())) {
             *gave_up = true;
             *failed_at = u;
             return false;
@@ -202,7 +205,7 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             if (!start) return fail(j, false, 0.0);
             const auto plan = plan_travel(task, robot, out.back().q, *start, travel_options);
             if (!plan) {
-                gave_up = std::chrono::steady_clock::now() >= options.deadline;
+                gave_up = options.deadline.expired();
                 return fail(j - 1, false, 0.0, true);
             }
             const int last = task::index_in_stroke(task, j - 1);
@@ -294,12 +297,20 @@ void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
         const bool first = i == 0 || samples[i - 1].phase != Phase::Trace ||
                            samples[i - 1].primitive != a.primitive ||
                            samples[i - 1].stroke != a.stroke;
-        // A circle's start is also its end: a run begins at 0.
-        if (first && prim.kind == geometry::PrimitiveKind::Circle && s > length - kSnap) s = 0.0;
-        if (!first && prim.kind == geometry::PrimitiveKind::Circle) {
-            double d = s - samples[i - 1].s;
-            d -= length * std::round(d / length);
-            s = samples[i - 1].s + d;
+        switch (prim.kind) {
+            case geometry::PrimitiveKind::Line:
+            case geometry::PrimitiveKind::Arc:
+                break;
+            case geometry::PrimitiveKind::Circle:
+                // A circle's start is also its end: a run begins at 0, and
+                // goes on from the sample before, not back to the start.
+                if (first && s > length - kSnap) s = 0.0;
+                if (!first) {
+                    double d = s - samples[i - 1].s;
+                    d -= length * std::round(d / length);
+                    s = samples[i - 1].s + d;
+                }
+                break;
         }
         if (std::abs(s) < kSnap) s = 0.0;
         if (std::abs(s - length) < kSnap) s = length;

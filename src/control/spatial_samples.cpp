@@ -17,19 +17,21 @@ namespace {
 /// line): how far the nearest point may move from one sample to the next.
 double half_turn(const geometry::Primitive3& p) {
     const double len = geometry::length(p);
-    if (std::holds_alternative<geometry::Line3>(p)) return len;
-    if (const auto* h = std::get_if<geometry::Helix3>(&p)) return len / (2.0 * h->turns);
-    const double r = std::visit(
-        [](const auto& x) -> double {
+    // Every kind is named, so that a new one fails the build here.
+    return std::visit(
+        [&](const auto& x) -> double {
             using T = std::decay_t<decltype(x)>;
             if constexpr (std::is_same_v<T, geometry::Line3>) {
-                return 0.0;
+                return len;
+            } else if constexpr (std::is_same_v<T, geometry::Helix3>) {
+                return len / (2.0 * x.turns);
             } else {
-                return x.turn.radius;
+                static_assert(std::is_same_v<T, geometry::Arc3> ||
+                              std::is_same_v<T, geometry::Circle3>);
+                return geometry::kPi * x.turn.radius;
             }
         },
         p);
-    return geometry::kPi * r;
 }
 
 }  // namespace

@@ -28,7 +28,6 @@ namespace {
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 using Pose = std::vector<double>;
-using Clock = std::chrono::steady_clock;
 
 double largest_change(const Pose& a, const Pose& b) {
     double m = 0.0;
@@ -158,10 +157,8 @@ std::optional<std::vector<Pose>> Planner::search(const Pose& from,
     auto planner = std::make_shared<og::RRTConnect>(si);
     planner->setProblemDefinition(problem);
     planner->setup();
-    const auto until = std::min(
-        opt_.deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                          std::chrono::duration<double>(opt_.plan_seconds)));
-    const ob::PlannerTerminationCondition stop([until] { return Clock::now() >= until; });
+    const run::Deadline until = opt_.deadline.within(opt_.plan_seconds);
+    const ob::PlannerTerminationCondition stop([until] { return until.expired(); });
     if (planner->solve(stop) != ob::PlannerStatus::EXACT_SOLUTION) return std::nullopt;
     auto& path = *problem->getSolutionPath()->as<og::PathGeometric>();
     og::PathSimplifier simplifier(si);
@@ -190,7 +187,7 @@ std::optional<TravelPlan> plan_travel(const task::Task& task, const kinematics::
     const Planner planner(task, robot, options);
     const std::vector<Pose> goals = planner.goals(from, to);
     for (const Pose& g : goals) {
-        if (Clock::now() >= options.deadline) return std::nullopt;
+        if (options.deadline.expired()) return std::nullopt;
         TravelPlan plan{{}, "straight"};
         if (planner.append_line(from, g, plan.poses)) return plan;
     }

@@ -327,32 +327,93 @@ bool same_circle(const Primitive& a, const Primitive& b) {
            (a.sweep > 0.0) == (b.sweep > 0.0);
 }
 
+bool is_line(const Primitive& p) {
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return true;
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            return false;
+    }
+    geometry::invalid_kind(p.kind);
+}
+
+bool is_arc(const Primitive& p) {
+    switch (p.kind) {
+        case PrimitiveKind::Arc:
+            return true;
+        case PrimitiveKind::Line:
+        case PrimitiveKind::Circle:
+            return false;
+    }
+    geometry::invalid_kind(p.kind);
+}
+
+/// The one piece that `last` and the next piece `p` make when they lie on
+/// one line, or are arcs of one circle; nothing otherwise.
+std::optional<Primitive> joined(const Primitive& last, const Primitive& p) {
+    switch (last.kind) {
+        case PrimitiveKind::Line: {
+            if (!is_line(p)) return std::nullopt;
+            const Vec2 a = last.end - last.start, b = p.end - p.start;
+            if (std::abs(cross(a, b)) <= 1e-12 * a.norm() * b.norm() && a.dot(b) > 0.0)
+                return make_line(last.start, p.end);
+            return std::nullopt;
+        }
+        case PrimitiveKind::Arc: {
+            if (!is_arc(p) || !same_circle(last, p) ||
+                std::abs(last.sweep + p.sweep) > kTau * (1.0 + 1e-9))
+                return std::nullopt;
+            const bool ccw = last.sweep > 0.0;
+            return std::abs(last.sweep + p.sweep) >= kTau * (1.0 - 1e-9)
+                       ? make_circle(last.start, last.center, ccw)
+                       : make_arc(last.start, p.end, last.center, ccw);
+        }
+        case PrimitiveKind::Circle:
+            return std::nullopt;
+    }
+    geometry::invalid_kind(last.kind);
+}
+
 /// Consecutive pieces of one line or one circle become one piece: a
 /// polyline's collinear run, a circle drawn as four arcs.
 std::vector<Primitive> merged(const std::vector<Primitive>& ps) {
     std::vector<Primitive> out;
     for (const Primitive& p : ps) {
         if (!out.empty()) {
-            Primitive& last = out.back();
-            if (last.kind == PrimitiveKind::Line && p.kind == PrimitiveKind::Line) {
-                const Vec2 a = last.end - last.start, b = p.end - p.start;
-                if (std::abs(cross(a, b)) <= 1e-12 * a.norm() * b.norm() && a.dot(b) > 0.0) {
-                    last = make_line(last.start, p.end);
-                    continue;
-                }
-            }
-            if (last.kind == PrimitiveKind::Arc && p.kind == PrimitiveKind::Arc &&
-                same_circle(last, p) && std::abs(last.sweep + p.sweep) <= kTau * (1.0 + 1e-9)) {
-                const bool ccw = last.sweep > 0.0;
-                last = std::abs(last.sweep + p.sweep) >= kTau * (1.0 - 1e-9)
-                           ? make_circle(last.start, last.center, ccw)
-                           : make_arc(last.start, p.end, last.center, ccw);
+            if (auto one = joined(out.back(), p)) {
+                out.back() = *one;
                 continue;
             }
         }
         out.push_back(p);
     }
     return out;
+}
+
+/// The primitive that starts at `start` and otherwise follows p.
+Primitive started_at(const Primitive& p, const Vec2& start) {
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return make_line(start, p.end);
+        case PrimitiveKind::Circle:
+            return make_circle(start, p.center, p.sweep > 0.0);
+        case PrimitiveKind::Arc:
+            return make_arc(start, p.end, p.center, p.sweep > 0.0);
+    }
+    geometry::invalid_kind(p.kind);
+}
+
+/// The primitive that starts as p does and ends at `end`.
+Primitive ended_at(const Primitive& p, const Vec2& end) {
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return make_line(p.start, end);
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            return make_arc(p.start, end, p.center, p.sweep > 0.0);
+    }
+    geometry::invalid_kind(p.kind);
 }
 
 /// Folds pieces shorter than kMinPiece into the next one (or the one
@@ -362,10 +423,7 @@ std::vector<Primitive> without_slivers(const std::vector<Primitive>& ps) {
     std::optional<Vec2> carry;  // start of a dropped sliver
     for (Primitive p : ps) {
         if (carry) {
-            p = p.kind == PrimitiveKind::Line ? make_line(*carry, p.end)
-                : p.kind == PrimitiveKind::Circle
-                    ? make_circle(*carry, p.center, p.sweep > 0.0)
-                    : make_arc(*carry, p.end, p.center, p.sweep > 0.0);
+            p = started_at(p, *carry);
             carry.reset();
         }
         if (geometry::length(p) < kMinPiece) {
@@ -377,9 +435,7 @@ std::vector<Primitive> without_slivers(const std::vector<Primitive>& ps) {
     if (carry && !out.empty()) {
         Primitive& last = out.back();
         const Vec2 end = ps.back().end;
-        last = last.kind == PrimitiveKind::Line
-                   ? make_line(last.start, end)
-                   : make_arc(last.start, end, last.center, last.sweep > 0.0);
+        last = ended_at(last, end);
     }
     return out;
 }

@@ -18,6 +18,18 @@ std::string number(double v) {
     return buf;
 }
 
+// How far a primitive reaches beyond its end points and centre.
+double bulge(const Primitive& p) {
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return 0.0;
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            return p.radius;
+    }
+    geometry::invalid_kind(p.kind);
+}
+
 }  // namespace
 
 std::string write_svg(const std::vector<Chain>& strokes) {
@@ -26,7 +38,7 @@ std::string write_svg(const std::vector<Chain>& strokes) {
     double width = 1.0, height = 1.0;  // mm
     for (const Chain& c : strokes) {
         for (const Primitive& p : c) {
-            const double reach = p.kind == PrimitiveKind::Line ? 0.0 : p.radius;
+            const double reach = bulge(p);
             for (const Vec2& q : {p.start, p.end, p.center}) {
                 width = std::max(width, std::ceil(1e3 * (q.x() + reach)) + 1.0);
                 height = std::max(height, std::ceil(1e3 * (q.y() + reach)) + 1.0);
@@ -42,9 +54,13 @@ std::string write_svg(const std::vector<Chain>& strokes) {
     for (std::size_t s = 0; s < strokes.size(); ++s) {
         std::string d = "M " + pt(strokes[s].front().start);
         for (const Primitive& p : strokes[s]) {
-            if (p.kind == PrimitiveKind::Line) {
-                d += " L " + pt(p.end);
-                continue;
+            switch (p.kind) {
+                case PrimitiveKind::Line:
+                    d += " L " + pt(p.end);
+                    continue;
+                case PrimitiveKind::Arc:
+                case PrimitiveKind::Circle:
+                    break;
             }
             // Arcs of at most a quarter turn: SVG's end-point form finds
             // their centers well conditioned (a half turn would not), and

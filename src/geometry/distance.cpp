@@ -11,7 +11,14 @@ namespace {
 // (always for circles). Cross products instead of angles: no trigonometry in
 // the distance loops.
 bool in_sweep(const Primitive& arc, const Vec2& v) {
-    if (arc.kind != PrimitiveKind::Arc) return true;
+    switch (arc.kind) {
+        case PrimitiveKind::Circle:
+            return true;
+        case PrimitiveKind::Arc:
+            break;
+        case PrimitiveKind::Line:
+            invalid_kind(arc.kind);  // a line has no sweep
+    }
     // The arc as a counter-clockwise run from `from` to `to`.
     const bool ccw = arc.sweep > 0.0;
     const Vec2 from = (ccw ? arc.start : arc.end) - arc.center;

@@ -99,10 +99,16 @@ FarthestReach least_farthest_reach(const std::vector<Primitive>& path,
     for (const Primitive& p : path) {
         lo = lo.cwiseMin(p.start).cwiseMin(p.end);
         hi = hi.cwiseMax(p.start).cwiseMax(p.end);
-        if (p.kind != PrimitiveKind::Line) {
-            const Vec2 r(p.radius, p.radius);
-            lo = lo.cwiseMin(p.center - r);
-            hi = hi.cwiseMax(p.center + r);
+        switch (p.kind) {
+            case PrimitiveKind::Line:
+                break;
+            case PrimitiveKind::Arc:
+            case PrimitiveKind::Circle: {
+                const Vec2 r(p.radius, p.radius);
+                lo = lo.cwiseMin(p.center - r);
+                hi = hi.cwiseMax(p.center + r);
+                break;
+            }
         }
     }
     return least_farthest_reach(path, lo, hi, options);

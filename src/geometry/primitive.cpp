@@ -1,7 +1,10 @@
 #include <modsynth/geometry/primitive.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace modsynth::geometry {
 
@@ -52,13 +55,16 @@ Located curve_extremum(const Primitive& p, const Vec2& q, Extremum which) {
     const Vec2 u = (which == Extremum::Nearest ? v : Vec2(-v)) / r;
     const double delta = travelled(p, polar_angle(u));
     const double span = std::abs(p.sweep);
-    if (p.kind == PrimitiveKind::Circle || delta <= span) {
+    assert(span <= kTau);
+    // travelled() is below 2 pi, a circle's span: a circle passes through
+    // every direction and never ends at its sweep, so one test serves both.
+    if (delta <= span) {
         const double distance = which == Extremum::Nearest ? std::abs(r - p.radius) : r + p.radius;
         Located found{{p.radius * delta, p.center + p.radius * u, distance}, Where::Interior};
         if (delta == 0.0) {
             found.point.point = p.start;
             found.where = Where::Start;
-        } else if (p.kind == PrimitiveKind::Arc && delta == span) {
+        } else if (delta == span) {
             found.point.point = p.end;
             found.where = Where::End;
         }
@@ -82,18 +88,37 @@ Located line_nearest(const Primitive& p, const Vec2& q) {
 }
 
 Located locate_nearest(const Primitive& p, const Vec2& q) {
-    return p.kind == PrimitiveKind::Line ? line_nearest(p, q)
-                                         : curve_extremum(p, q, Extremum::Nearest);
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return line_nearest(p, q);
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            return curve_extremum(p, q, Extremum::Nearest);
+    }
+    invalid_kind(p.kind);
 }
 
 Located locate_farthest(const Primitive& p, const Vec2& q) {
-    if (p.kind != PrimitiveKind::Line) return curve_extremum(p, q, Extremum::Farthest);
-    const Located s = at_start(p, q);
-    const Located e = at_end(p, q);
-    return e.point.distance > s.point.distance ? e : s;
+    switch (p.kind) {
+        case PrimitiveKind::Line: {
+            const Located s = at_start(p, q);
+            const Located e = at_end(p, q);
+            return e.point.distance > s.point.distance ? e : s;
+        }
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            return curve_extremum(p, q, Extremum::Farthest);
+    }
+    invalid_kind(p.kind);
 }
 
 }  // namespace
+
+void invalid_kind(PrimitiveKind kind) {
+    assert(false && "a primitive kind outside the enum");
+    throw std::logic_error("primitive kind " + std::to_string(static_cast<int>(kind)) +
+                           " is none of line, arc, circle");
+}
 
 Primitive make_line(const Vec2& start, const Vec2& end) {
     Primitive p;
@@ -141,8 +166,30 @@ Primitive make_arc(const Vec2& start, const Vec2& end, const Vec2& center, bool 
     return p;
 }
 
+Primitive translate(const Primitive& p, const Vec2& offset) {
+    Primitive moved = p;
+    moved.start += offset;
+    moved.end += offset;
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            break;
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            moved.center += offset;
+            break;
+    }
+    return moved;
+}
+
 double length(const Primitive& p) {
-    return p.kind == PrimitiveKind::Line ? (p.end - p.start).norm() : p.radius * std::abs(p.sweep);
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return (p.end - p.start).norm();
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            return p.radius * std::abs(p.sweep);
+    }
+    invalid_kind(p.kind);
 }
 
 Vec2 point_at(const Primitive& p, double s) {
@@ -151,23 +198,41 @@ Vec2 point_at(const Primitive& p, double s) {
     if (!(s > 0.0) || total == 0.0) return p.start;
     if (s >= total) return p.end;
     const double fraction = s / total;
-    if (p.kind == PrimitiveKind::Line) return p.start + fraction * (p.end - p.start);
-    return p.center + p.radius * unit(p.start_angle + fraction * p.sweep);
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return p.start + fraction * (p.end - p.start);
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            return p.center + p.radius * unit(p.start_angle + fraction * p.sweep);
+    }
+    invalid_kind(p.kind);
 }
 
 Vec2 tangent_at(const Primitive& p, double s) {
     const double total = length(p);
-    if (p.kind == PrimitiveKind::Line) {
-        return total > 0.0 ? Vec2((p.end - p.start) / total) : Vec2::UnitX();
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return total > 0.0 ? Vec2((p.end - p.start) / total) : Vec2::UnitX();
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle: {
+            const double fraction = total > 0.0 ? std::clamp(s / total, 0.0, 1.0) : 0.0;
+            const Vec2 radial = unit(p.start_angle + fraction * p.sweep);
+            return p.sweep > 0.0 ? perp(radial) : Vec2(-perp(radial));
+        }
     }
-    const double fraction = total > 0.0 ? std::clamp(s / total, 0.0, 1.0) : 0.0;
-    const Vec2 radial = unit(p.start_angle + fraction * p.sweep);
-    return p.sweep > 0.0 ? perp(radial) : Vec2(-perp(radial));
+    invalid_kind(p.kind);
 }
 
 double curvature(const Primitive& p) {
-    if (p.kind == PrimitiveKind::Line || p.radius == 0.0) return 0.0;
-    return (p.sweep > 0.0 ? 1.0 : -1.0) / p.radius;
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return 0.0;
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            if (p.radius == 0.0) return 0.0;
+            return (p.sweep > 0.0 ? 1.0 : -1.0) / p.radius;
+    }
+    invalid_kind(p.kind);
 }
 
 NearestPoint nearest(const Primitive& p, const Vec2& q) { return locate_nearest(p, q).point; }

@@ -8,6 +8,7 @@
 #include <modsynth/io/input.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/task/limits.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/printable.h>
@@ -105,9 +106,9 @@ int index(const json& j, const std::string& part) {
     return integer(j, part, 0, std::numeric_limits<int>::max());
 }
 
-synth::SeparationWitness parse_separation(const json& j, const std::string& part) {
+prove::SeparationWitness parse_separation(const json& j, const std::string& part) {
     require_object(j, part);
-    synth::SeparationWitness w;
+    prove::SeparationWitness w;
     const std::string wp = member(part, "walls");
     const json& walls = required(j, part, "walls");
     require_array(walls, wp, "walls");
@@ -115,7 +116,7 @@ synth::SeparationWitness parse_separation(const json& j, const std::string& part
         const std::string p = element(wp, k);
         const json& x = walls[k];
         require_object(x, p);
-        synth::Wall wall;
+        prove::Wall wall;
         wall.base_region = index(required(x, p, "base_region"), member(p, "base_region"));
         wall.primitive = index(required(x, p, "primitive"), member(p, "primitive"));
         wall.point = parse_point(required(x, p, "point"), member(p, "point"));
@@ -135,9 +136,9 @@ synth::SeparationWitness parse_separation(const json& j, const std::string& part
     return w;
 }
 
-synth::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
+prove::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
     require_object(j, part);
-    synth::GeodesicWitness w;
+    prove::GeodesicWitness w;
     w.reach = finite_number(required(j, part, "reach"), member(part, "reach"));
     const std::string op = member(part, "obstacles");
     const json& obstacles = required(j, part, "obstacles");
@@ -151,7 +152,7 @@ synth::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
         const std::string p = element(dp, k);
         const json& x = detours[k];
         require_object(x, p);
-        synth::Detour d;
+        prove::Detour d;
         d.base_region = index(required(x, p, "base_region"), member(p, "base_region"));
         d.primitive = index(required(x, p, "primitive"), member(p, "primitive"));
         d.point = parse_point(required(x, p, "point"), member(p, "point"));
@@ -162,7 +163,7 @@ synth::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
         for (std::size_t i = 0; i < route.size(); ++i) {
             const std::string sp = element(rp, i);
             require_object(route[i], sp);
-            synth::RouteStep s;
+            prove::RouteStep s;
             s.point = parse_point(required(route[i], sp, "point"), member(sp, "point"));
             if (const json* a = optional(route[i], "around"))
                 s.around = index(*a, member(sp, "around"));
@@ -183,7 +184,13 @@ synth::Explanation parse_explanation(const json& doc) {
         const std::string cp = member(part, "core");
         require_array(*core, cp, "task parts");
         for (std::size_t i = 0; i < core->size(); ++i) {
-            out.core.push_back(text((*core)[i], element(cp, i)));
+            const std::string at = element(cp, i);
+            const std::string name = text((*core)[i], at);
+            const auto part = task::parse_task_part(name);
+            if (!part)
+                throw task::InputError(at,
+                                       "\"" + text::printable(name) + "\" names no part of a task");
+            out.core.push_back(*part);
         }
     }
     if (const json* s = optional(e, "separation"))

@@ -17,7 +17,7 @@ nlohmann::json point(const geometry::Vec2& p) { return {p.x(), p.y()}; }
 
 }  // namespace
 
-nlohmann::json to_json(const synth::SeparationWitness& w) {
+nlohmann::json to_json(const prove::SeparationWitness& w) {
     nlohmann::json walls = nlohmann::json::array();
     for (const auto& x : w.walls)
         walls.push_back({{"base_region", x.base_region},
@@ -28,7 +28,7 @@ nlohmann::json to_json(const synth::SeparationWitness& w) {
     return {{"walls", walls}};
 }
 
-nlohmann::json to_json(const synth::GeodesicWitness& w) {
+nlohmann::json to_json(const prove::GeodesicWitness& w) {
     nlohmann::json detours = nlohmann::json::array();
     for (const auto& d : w.detours) {
         nlohmann::json route = nlohmann::json::array();
@@ -165,7 +165,8 @@ nlohmann::json document(const synth::Solution& s, bool with_samples) {
     doc["task"] = s.task_name;
     doc["status"] = synth::to_string(s.status);
     if (s.status != synth::Status::Solved) {
-        doc["explanation"] = {{"message", s.explanation.message}, {"core", s.explanation.core}};
+        doc["explanation"] = {{"message", s.explanation.message},
+                              {"core", task::to_strings(s.explanation.core)}};
         add_witnesses(s.explanation, doc["explanation"]);
         return doc;
     }

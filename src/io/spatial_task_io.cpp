@@ -529,6 +529,8 @@ void check_clearance(const SpatialTask& task) {
                     } else if constexpr (std::is_same_v<T, geometry::Capsule>) {
                         return geometry::point_segment(x, shape.a, shape.b);
                     } else {
+                        // A new kind of obstacle fails the build here.
+                        static_assert(std::is_same_v<T, Box3>);
                         return geometry::point_box(x, shape);
                     }
                 },
@@ -552,6 +554,7 @@ void check_clearance(const SpatialTask& task) {
                                    return geometry::segment_segment(line->start, line->end, shape.a,
                                                                     shape.b);
                                } else {
+                                   static_assert(std::is_same_v<T, Box3>);
                                    return geometry::segment_box(line->start, line->end, shape);
                                }
                            },

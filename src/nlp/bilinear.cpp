@@ -35,9 +35,27 @@ Point variable(int ix, int iy, const Vec2& v) {
     return {{0.0, {{ix, 1.0}}}, {0.0, {{iy, 1.0}}}, v};
 }
 
-Point new_point(QuadraticProgram& qp, const std::string& name, const Vec2& v) {
-    const int ix = qp.add_variable(-kInfinity, kInfinity, v.x(), name + ".x");
-    const int iy = qp.add_variable(-kInfinity, kInfinity, v.y(), name + ".y");
+namespace {
+
+// The key of one part of a tagged construction: `family`, `index`, and the
+// tag's role and place; unkeyed when the tag has no role.
+Key part_of(Key tag, Key::Family family, int index = 0) {
+    if (tag.role == Key::Role::None) return {};
+    tag.family = family;
+    tag.index = index;
+    return tag;
+}
+
+Key coordinate(Key key, int xy) {
+    key.coordinate = xy;
+    return key;
+}
+
+}  // namespace
+
+Point new_point(QuadraticProgram& qp, const std::string& name, const Vec2& v, Key key) {
+    const int ix = qp.add_variable(-kInfinity, kInfinity, v.x(), name + ".x", coordinate(key, 0));
+    const int iy = qp.add_variable(-kInfinity, kInfinity, v.y(), name + ".y", coordinate(key, 1));
     return variable(ix, iy, v);
 }
 
@@ -75,26 +93,30 @@ Vec2 away_from(const Vec2& c, const Vec2& a, const Vec2& b) {
     return n > 1e-12 ? Vec2(d / n) : Vec2(1.0, 0.0);
 }
 
-void add_link(QuadraticProgram& qp, const Point& a, const Point& b, int r, const std::string& tag) {
+void add_link(QuadraticProgram& qp, const Point& a, const Point& b, int r, const std::string& tag,
+              Key key) {
     Quadratic q = squared_distance(a, b);
     q.add(r, r, -1.0);
-    qp.add_constraint(q, 0.0, 0.0, "link length " + tag);
+    qp.add_constraint(q, 0.0, 0.0, "link length " + tag,
+                      part_of(key, Key::Family::LinkLength, key.index));
 }
 
 void add_keep_apart(QuadraticProgram& qp, const Point& a, const Point& b, const Point& c,
-                    double need, const std::string& tag) {
+                    double need, const std::string& tag, Key key) {
     const Vec2 n0 = away_from(c.value, a.value, b.value);
-    const int nx = qp.add_variable(-1.0, 1.0, n0.x(), "normal.x " + tag);
-    const int ny = qp.add_variable(-1.0, 1.0, n0.y(), "normal.y " + tag);
+    const Key normal = part_of(key, Key::Family::Normal);
+    const int nx = qp.add_variable(-1.0, 1.0, n0.x(), "normal.x " + tag, coordinate(normal, 0));
+    const int ny = qp.add_variable(-1.0, 1.0, n0.y(), "normal.y " + tag, coordinate(normal, 1));
     const Point n = variable(nx, ny, n0);
     for (const Point* end : {&a, &b}) {
         Quadratic q;
         add_product(q, n.x, end->x - c.x);
         add_product(q, n.y, end->y - c.y);
-        qp.add_constraint(q, need, kInfinity, "clearance of " + tag);
+        qp.add_constraint(q, need, kInfinity, "clearance of " + tag,
+                          part_of(key, Key::Family::Clearance));
     }
     qp.add_constraint(Quadratic{}.add(nx, nx, 1.0).add(ny, ny, 1.0), -kInfinity, 1.0,
-                      "unit normal for " + tag);
+                      "unit normal for " + tag, part_of(key, Key::Family::UnitNormal));
 }
 
 }  // namespace modsynth::nlp::bilinear

@@ -9,7 +9,6 @@
 #include <IpTNLP.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -27,14 +26,6 @@ namespace {
 using Ipopt::Index;
 using Ipopt::Number;
 
-// Now plus `seconds`; no deadline for an infinite or very long limit.
-std::chrono::steady_clock::time_point deadline_after(double seconds) {
-    if (!(seconds < 1e9)) return std::chrono::steady_clock::time_point::max();
-    return std::chrono::steady_clock::now() +
-           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-               std::chrono::duration<double>(seconds));
-}
-
 // Only a QuadraticProgram gives Ipopt exact second derivatives.
 template <class Program>
 constexpr bool kExactHessian = std::is_same_v<Program, QuadraticProgram>;
@@ -46,7 +37,7 @@ public:
         : p_(program),
           warm_(warm),
           watch_(options.watch),
-          deadline_(deadline_after(options.wall_limit)),
+          deadline_(options.deadline),
           min_variables_(options.watch.min_variables) {}
 
     SolverResult result;
@@ -60,7 +51,7 @@ public:
                                Number inf_du, Number, Number, Number, Number, Number, Index,
                                const Ipopt::IpoptData*,
                                Ipopt::IpoptCalculatedQuantities*) override {
-        if (std::chrono::steady_clock::now() > deadline_) {
+        if (deadline_.expired()) {
             stopped = "time limit";
             return false;
         }
@@ -211,7 +202,7 @@ private:
     const Program& p_;
     const WarmStart* warm_;
     ProgressWatch watch_;
-    std::chrono::steady_clock::time_point deadline_;
+    run::Deadline deadline_;
     int min_variables_;
 };
 
@@ -267,7 +258,6 @@ SolverResult solve(const Program& program, const SolverOptions& options, const W
 bool SolverOptions::IsValid(std::string* error) const {
     return text::OptionCheck("SolverOptions", error)
         .greater("time_limit", time_limit, 0.0)
-        .holds("wall_limit", wall_limit > 0.0, "a number of seconds > 0, or infinity")
         .at_least("max_iterations", max_iterations, 0)
         .greater("tolerance", tolerance, 0.0)
         .greater("constraint_tolerance", constraint_tolerance, 0.0)

@@ -22,20 +22,24 @@ void Quadratic::add_gradient(const double* x, double scale, double* grad) const 
     }
 }
 
-int QuadraticProgram::add_variable(double lower, double upper, double start, std::string name) {
+int QuadraticProgram::add_variable(double lower, double upper, double start, std::string name,
+                                   Key key) {
     assert(lower <= upper);
     lower_.push_back(lower);
     upper_.push_back(upper);
     start_.push_back(std::clamp(start, lower, upper));
     names_.push_back(std::move(name));
+    variable_keys_.push_back(key);
     return num_variables() - 1;
 }
 
-int QuadraticProgram::add_constraint(Quadratic g, double lower, double upper, std::string label) {
+int QuadraticProgram::add_constraint(Quadratic g, double lower, double upper, std::string label,
+                                     Key key) {
     constraints_.push_back(std::move(g));
     c_lower_.push_back(lower);
     c_upper_.push_back(upper);
     labels_.push_back(std::move(label));
+    constraint_keys_.push_back(key);
     return num_constraints() - 1;
 }
 
@@ -60,8 +64,12 @@ void QuadraticProgram::finalize() {
             if (inserted) jac_.push_back({static_cast<int>(m), col});
             return it->second;
         };
-        for (const auto& [i, a] : g.linear) jac_slot_linear_[m].push_back(slot(i));
+        for (const auto& [i, a] : g.linear) {
+            assert(i >= 0 && i < num_variables());
+            jac_slot_linear_[m].push_back(slot(i));
+        }
         for (const auto& t : g.quadratic) {
+            assert(t.i >= 0 && t.i < num_variables() && t.j >= 0 && t.j < num_variables());
             jac_slot_quadratic_[m].push_back({slot(t.i), slot(t.j)});
             hess_slot_[m].push_back(hess_slot(t.i, t.j));
         }

@@ -72,9 +72,15 @@ std::string pt(const Frame& f, const Vec2& p) {
 
 std::vector<Vec2> polyline(const geometry::Primitive& p, const Frame& f) {
     const double len = geometry::length(p);
-    const int n = p.kind == geometry::PrimitiveKind::Line
-                      ? 1
-                      : std::clamp(static_cast<int>(std::ceil(len * f.scale / 3.0)), 8, 2000);
+    int n = 1;
+    switch (p.kind) {
+        case geometry::PrimitiveKind::Line:
+            break;
+        case geometry::PrimitiveKind::Arc:
+        case geometry::PrimitiveKind::Circle:
+            n = std::clamp(static_cast<int>(std::ceil(len * f.scale / 3.0)), 8, 2000);
+            break;
+    }
     std::vector<Vec2> out;
     for (int i = 0; i <= n; ++i) out.push_back(geometry::point_at(p, len * i / n));
     return out;

@@ -130,38 +130,42 @@ const char* kind_name(geometry::PrimitiveKind k) {
     return "";
 }
 
-/// The index in "name[i]" when the name is exactly that, else -1.
-int index_in(const std::string& part, const std::string& name) {
-    int i = -1;
-    char close = 0;
-    const std::string format = name + "[%d%c";
-    if (std::sscanf(part.c_str(), format.c_str(), &i, &close) == 2 && close == ']') return i;
-    return -1;
-}
-
-std::string describe_part(const task::Task& task, const std::string& part) {
-    if (const auto j = task::primitive_of_part(task, part)) {
-        const auto& p = task.trajectory[*j];
-        return std::string(kind_name(p.kind)) + " of " +
-               text::format("%.3f m", geometry::length(p)) + " from " + point_text(p.start);
-    }
-    const int o = index_in(part, "obstacles");
-    if (o >= 0 && o < static_cast<int>(task.obstacles.size())) {
-        return "disc at " + point_text(task.obstacles[o].center) + ", radius " +
-               text::format("%.3f m", task.obstacles[o].radius);
-    }
+std::string describe_part(const task::Task& task, const task::TaskPart& part) {
+    if (!part.field().empty()) return "";
     const auto& r = task.robot;
-    if (part == "base_regions")
-        return std::to_string(task.base_regions.size()) + " rectangle(s) for the base";
-    if (part == "robot.max_link_length") {
-        return text::format("%.3f m", r.max_link_length) +
-               (task.base_regions.empty()
-                    ? std::string()
-                    : "; dashed: the farthest " + std::to_string(r.dof.back()) +
-                          " such links reach from the base regions");
+    switch (part.kind()) {
+        case task::TaskPart::Kind::Primitive: {
+            const auto j = task::primitive_index(task, part);
+            if (!j) return "";
+            const auto& p = task.trajectory[*j];
+            return std::string(kind_name(p.kind)) + " of " +
+                   text::format("%.3f m", geometry::length(p)) + " from " + point_text(p.start);
+        }
+        case task::TaskPart::Kind::Obstacle: {
+            const int o = part.index();
+            if (o >= static_cast<int>(task.obstacles.size())) return "";
+            return "disc at " + point_text(task.obstacles[o].center) + ", radius " +
+                   text::format("%.3f m", task.obstacles[o].radius);
+        }
+        case task::TaskPart::Kind::BaseRegions:
+            return std::to_string(task.base_regions.size()) + " rectangle(s) for the base";
+        case task::TaskPart::Kind::BaseRegion:
+            return "";
+        case task::TaskPart::Kind::Robot:
+            if (part.index() >= 0) return "";
+            if (part.key() == task::RobotKey::MaxLinkLength) {
+                return text::format("%.3f m", r.max_link_length) +
+                       (task.base_regions.empty()
+                            ? std::string()
+                            : "; dashed: the farthest " + std::to_string(r.dof.back()) +
+                                  " such links reach from the base regions");
+            }
+            if (part.key() == task::RobotKey::MinLinkLength)
+                return text::format("%.3f m", r.min_link_length);
+            if (part.key() == task::RobotKey::LinkDiameter)
+                return text::format("%.4f m", r.link_diameter);
+            return "";
     }
-    if (part == "robot.min_link_length") return text::format("%.3f m", r.min_link_length);
-    if (part == "robot.link_diameter") return text::format("%.4f m", r.link_diameter);
     return "";
 }
 
@@ -213,8 +217,9 @@ std::string explanation(const task::Task& task, const synth::Solution& s) {
             "<ul id=\"core\">\n";
         for (const auto& part : s.explanation.core) {
             const std::string what = describe_part(task, part);
-            out += "<li class=\"core-part\" data-part=\"" + escape(part) + "\"><code>" +
-                   escape(part) + "</code>" + (what.empty() ? "" : ": " + escape(what)) + "</li>\n";
+            const std::string name = task::to_string(part);
+            out += "<li class=\"core-part\" data-part=\"" + escape(name) + "\"><code>" +
+                   escape(name) + "</code>" + (what.empty() ? "" : ": " + escape(what)) + "</li>\n";
         }
         out += "</ul>\n";
     }
@@ -227,10 +232,11 @@ std::string legend(const task::Task& task, const layers::Core& core) {
     std::string out = "<h2>Trajectory</h2>\n<ul class=\"legend\" id=\"legend\">\n";
     for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
         const auto& p = task.trajectory[j];
-        const std::string part = task::part_name(task, static_cast<int>(j));
+        const auto part = task::TaskPart::primitive(task, static_cast<int>(j));
         out += "<li><span class=\"swatch\" style=\"background:" +
-               plot::primitive_colour(static_cast<int>(j)) + "\"></span><code>" + part +
-               "</code> " + kind_name(p.kind) + ", " + text::format("%.3f m", geometry::length(p)) +
+               plot::primitive_colour(static_cast<int>(j)) + "\"></span><code>" +
+               task::to_string(part) + "</code> " + kind_name(p.kind) + ", " +
+               text::format("%.3f m", geometry::length(p)) +
                (layers::in_core(core, part) ? " <strong>(in the core)</strong>" : "") + "</li>\n";
     }
     return out + "</ul>\n";

@@ -53,9 +53,9 @@ int global_primitive(const task::Task& task, const control::Sample& x) {
     return j <= task::stroke_last(task, x.stroke) ? j : -1;
 }
 
-std::string part_attributes(const Core& core, const std::string& part, const char* cls) {
+std::string part_attributes(const Core& core, const task::TaskPart& part, const char* cls) {
     return std::string(" class=\"") + cls + (in_core(core, part) ? " core" : "") +
-           "\" data-part=\"" + part + "\"";
+           "\" data-part=\"" + task::to_string(part) + "\"";
 }
 
 /// Horizontal runs of reachable cells as one path.
@@ -201,15 +201,9 @@ std::string arm_points(const plot::Frame& f, const std::vector<Vec2>& joints) {
 
 }  // namespace
 
-bool in_core(const Core& core, const std::string& part) {
-    for (const auto& c : core) {
-        if (c == part) return true;
-        if (part.size() > c.size() && part.compare(0, c.size(), c) == 0 &&
-            (part[c.size()] == '[' || part[c.size()] == '.')) {
-            return true;
-        }
-    }
-    return false;
+bool in_core(const Core& core, const task::TaskPart& part) {
+    return std::any_of(core.begin(), core.end(),
+                       [&](const task::TaskPart& c) { return c.holds(part); });
 }
 
 std::string reachable(const task::Task& task, const synth::Solution& s, const plot::Frame& f,
@@ -260,11 +254,12 @@ std::string base_regions(const task::Task& task, const plot::Frame& f, const Cor
         const auto& r = task.base_regions[i];
         const Vec2 tl = f.px({r.min.x(), r.max.y()});
         const Vec2 br = f.px({r.max.x(), r.min.y()});
-        out += "<rect" +
-               part_attributes(core, "base_regions[" + std::to_string(i) + "]", "base-region") +
-               " x=\"" + n2(tl.x()) + "\" y=\"" + n2(tl.y()) + "\" width=\"" +
-               n2(std::max(1.0, br.x() - tl.x())) + "\" height=\"" +
-               n2(std::max(1.0, br.y() - tl.y())) + "\"/>\n";
+        out +=
+            "<rect" +
+            part_attributes(core, task::TaskPart::base_region(static_cast<int>(i)), "base-region") +
+            " x=\"" + n2(tl.x()) + "\" y=\"" + n2(tl.y()) + "\" width=\"" +
+            n2(std::max(1.0, br.x() - tl.x())) + "\" height=\"" +
+            n2(std::max(1.0, br.y() - tl.y())) + "\"/>\n";
     }
     return out + "</g>\n";
 }
@@ -275,12 +270,12 @@ std::string obstacles(const task::Task& task, const plot::Frame& f, double diame
     for (std::size_t i = 0; i < task.obstacles.size(); ++i) {
         const auto& o = task.obstacles[i];
         const Vec2 c = f.px(o.center);
-        const std::string part = "obstacles[" + std::to_string(i) + "]";
+        const auto part = task::TaskPart::obstacle(static_cast<int>(i));
         out += "<circle class=\"obstacle-margin\" cx=\"" + n2(c.x()) + "\" cy=\"" + n2(c.y()) +
                "\" r=\"" + n2((o.radius + diameter / 2.0) * f.scale) + "\"/>";
         out += "<circle" + part_attributes(core, part, "obstacle") + " cx=\"" + n2(c.x()) +
-               "\" cy=\"" + n2(c.y()) + "\" r=\"" + n2(o.radius * f.scale) + "\"><title>" + part +
-               "</title></circle>\n";
+               "\" cy=\"" + n2(c.y()) + "\" r=\"" + n2(o.radius * f.scale) + "\"><title>" +
+               task::to_string(part) + "</title></circle>\n";
     }
     return out + "</g>\n";
 }
@@ -289,12 +284,12 @@ std::string trajectory(const task::Task& task, const plot::Frame& f, const Core&
     std::string out = "<g id=\"trajectory\">\n";
     for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
         const auto& p = task.trajectory[j];
-        const std::string part = task::part_name(task, static_cast<int>(j));
+        const auto part = task::TaskPart::primitive(task, static_cast<int>(j));
         const std::string colour = plot::primitive_colour(static_cast<int>(j));
         out += "<path" + part_attributes(core, part, "primitive") + " data-primitive=\"" +
                std::to_string(j) + "\" stroke=\"" + colour + "\" d=\"" +
-               plot::path_data(f, plot::polyline(p, f), false) + "\"><title>" + part +
-               "</title></path>" + arrow(p, f, colour) + "\n";
+               plot::path_data(f, plot::polyline(p, f), false) + "\"><title>" +
+               task::to_string(part) + "</title></path>" + arrow(p, f, colour) + "\n";
     }
     for (int k = 0; k < task::stroke_count(task); ++k) {
         const Vec2 start = f.px(task.trajectory[task::stroke_first(task, k)].start);
@@ -373,7 +368,7 @@ std::string robot(const synth::Solution& s, const plot::Frame& f) {
 }
 
 std::string reach_limit(const task::Task& task, const plot::Frame& f, const Core& core) {
-    const std::string part = "robot.max_link_length";
+    const auto part = task::TaskPart::robot(task::RobotKey::MaxLinkLength);
     if (!in_core(core, part) || task.base_regions.empty()) return "";
     const double reach = task.robot.longest_arm();
     const std::string r = n2(reach * f.scale);
@@ -409,7 +404,7 @@ std::string proof(const task::Task& task, const synth::Solution& s, const plot::
             if (!ok) continue;
             std::vector<int> sorted = w.cycle;
             std::sort(sorted.begin(), sorted.end());
-            const std::string region = "base_regions[" + std::to_string(w.base_region) + "]";
+            const std::string region = task::to_string(task::TaskPart::base_region(w.base_region));
             out += point_mark(w.point, task::part_name(task, w.primitive) + " at a point " +
                                            region + " cannot reach");
             if (std::find(drawn.begin(), drawn.end(), sorted) != drawn.end()) continue;

@@ -5,15 +5,17 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/task/part.h>
+
 #include "plot.h"
 
 namespace modsynth::output::layers {
 
-using Core = std::vector<std::string>;
+using Core = std::vector<task::TaskPart>;
 
-/// True when `part` ("base_regions[0]") is named by the core, itself or
-/// through a parent ("base_regions").
-bool in_core(const Core& core, const std::string& part);
+/// True when `part` (base_regions[0]) is named by the core, itself or
+/// through a part that holds it (base_regions).
+bool in_core(const Core& core, const task::TaskPart& part);
 
 /// Obstacle-free reachable space: one path for a 2-joint arm, one per
 /// primitive (data-primitive) for a 3-joint arm. `caption` says what it shows.

@@ -3,6 +3,7 @@
 #include <z3++.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -13,6 +14,8 @@
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/clearance_rule.h>
+#include <modsynth/run/stopwatch.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -68,8 +71,8 @@ struct FrontStage::Impl {
     std::vector<z3::expr> r;
     z3::expr elbow;
     std::vector<z3::expr> regions;
-    std::vector<std::string> names;  // assumption literals, in creation order
-    std::map<std::string, z3::expr> literal_of;
+    std::vector<task::TaskPart> names;  // parts with an assumption literal, in creation order
+    std::map<task::TaskPart, z3::expr> literal_of;
     bool refined_level = true;   // `fine` holds the encoding (small enough paths)
     bool unsat_refined = false;  // the last Unsat came from `fine`
     bool incomplete = false;     // encoding stopped at the deadline
@@ -101,12 +104,8 @@ struct FrontStage::Impl {
         encode();
     }
 
-    double seconds_left() const {
-        if (options.deadline == std::chrono::steady_clock::time_point::max()) return 1e9;
-        return std::chrono::duration<double>(options.deadline - std::chrono::steady_clock::now())
-            .count();
-    }
-    bool expired() const { return seconds_left() <= 0.0; }
+    double seconds_left() const { return options.deadline.remaining(); }
+    bool expired() const { return options.deadline.expired(); }
 
     // The timeout ends at the deadline, whatever the per-check budget.
     void set_timeout(z3::solver& s, double seconds) {
@@ -125,17 +124,17 @@ struct FrontStage::Impl {
 
     z3::expr num(double v) { return ctx.real_val(decimal(v).c_str()); }
 
-    z3::expr literal(const std::string& name) {
-        auto it = literal_of.find(name);
+    z3::expr literal(const task::TaskPart& part) {
+        auto it = literal_of.find(part);
         if (it != literal_of.end()) return it->second;
-        z3::expr l = ctx.bool_const(name.c_str());
-        literal_of.emplace(name, l);
-        names.push_back(name);
+        z3::expr l = ctx.bool_const(task::to_string(part).c_str());
+        literal_of.emplace(part, l);
+        names.push_back(part);
         return l;
     }
 
     // A constraint family guarded by the literals of the task parts it uses.
-    void require(std::initializer_list<std::string> parts, const z3::expr& e,
+    void require(std::initializer_list<task::TaskPart> parts, const z3::expr& e,
                  bool is_refined = false) {
         z3::expr_vector guards(ctx);
         for (const auto& part : parts) guards.push_back(literal(part));
@@ -162,12 +161,14 @@ struct FrontStage::Impl {
 
     void encode() {
         const auto& rs = task.robot;
-        const std::string diam = "robot.link_diameter";
+        const auto diam = task::TaskPart::robot(task::RobotKey::LinkDiameter);
         const kinematics::ClearanceRule rule{rs.link_diameter};
         for (int k = 0; k < dof; ++k) {
             add_both(r[k] > 0);
-            require({"robot.min_link_length"}, r[k] >= num(rs.min_link_length - options.slack));
-            require({"robot.max_link_length"}, r[k] <= num(rs.max_link_length + options.slack));
+            require({task::TaskPart::robot(task::RobotKey::MinLinkLength)},
+                    r[k] >= num(rs.min_link_length - options.slack));
+            require({task::TaskPart::robot(task::RobotKey::MaxLinkLength)},
+                    r[k] <= num(rs.max_link_length + options.slack));
         }
         // The EE must stay a diameter away from the link before the last,
         // which it cannot do when the last link is shorter than that.
@@ -185,19 +186,19 @@ struct FrontStage::Impl {
                                              by <= num(b.max.y() + options.slack)));
                 any.push_back(in);
             }
-            require({"base_regions"}, z3::mk_or(any));
+            require({task::TaskPart::base_regions()}, z3::mk_or(any));
         }
 
         for (std::size_t o = 0; o < task.obstacles.size(); ++o) {
             const task::Obstacle& ob = task.obstacles[o];
-            const std::string name = "obstacles[" + std::to_string(o) + "]";
+            const auto name = task::TaskPart::obstacle(static_cast<int>(o));
             const double need = rule.obstacle_distance(ob) - options.slack;
             // Link 1 starts at the base.
             require({name, diam}, dist2(ob.center) >= num(need * need));
             // The last link ends on the path.
             for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
                 if (geometry::point_primitive(ob.center, task.trajectory[j]) < need)
-                    require({task::part_name(task, static_cast<int>(j)), name, diam},
+                    require({task::TaskPart::primitive(task, static_cast<int>(j)), name, diam},
                             ctx.bool_val(false));
             }
         }
@@ -230,8 +231,8 @@ struct FrontStage::Impl {
                 double span = 0.0;
                 for (const auto& a : pts[j])
                     for (const auto& b : pts[k]) span = std::max(span, (a - b).norm());
-                const std::string pj = task::part_name(task, j);
-                const std::string pk = task::part_name(task, k);
+                const auto pj = task::TaskPart::primitive(task, j);
+                const auto pk = task::TaskPart::primitive(task, k);
                 if (j == k) {
                     require({pj}, 2 * R >= num(span - options.slack));
                 } else {
@@ -277,26 +278,35 @@ struct FrontStage::Impl {
                 for (const auto& a : pts[j])
                     if ((a - hull[h]).norm() > span)
                         span = (a - hull[h]).norm(), partner = owner[h];
-            const std::string pj = task::part_name(task, static_cast<int>(j));
+            const auto pj = task::TaskPart::primitive(task, static_cast<int>(j));
             if (partner == static_cast<int>(j)) {
                 require({pj}, 2 * R >= num(span - options.slack));
             } else {
-                require({pj, task::part_name(task, partner)}, 2 * R >= num(span - options.slack));
+                require({pj, task::TaskPart::primitive(task, partner)},
+                        2 * R >= num(span - options.slack));
             }
         }
     }
 
     void encode_primitive(int j, const z3::expr& R) {
         const geometry::Primitive& p = task.trajectory[j];
-        const std::string name = task::part_name(task, j);
-        const std::string diam = "robot.link_diameter";
+        const auto name = task::TaskPart::primitive(task, j);
+        const auto diam = task::TaskPart::robot(task::RobotKey::LinkDiameter);
         const kinematics::ClearanceRule rule{task.robot.link_diameter};
         const double d2 = rule.self_distance() * rule.self_distance() - options.slack;
         const auto pts = sample_points(p, samples);
         // A line's closest point to the base is an end or the foot of the
         // perpendicular, which the exact clause below covers: the inner
         // atoms at its other samples would only repeat it.
-        const bool exact_closest = p.kind == geometry::PrimitiveKind::Line;
+        bool exact_closest = false;
+        switch (p.kind) {
+            case geometry::PrimitiveKind::Line:
+                exact_closest = true;
+                break;
+            case geometry::PrimitiveKind::Arc:
+            case geometry::PrimitiveKind::Circle:
+                break;
+        }
         for (std::size_t i = 0; i < pts.size(); ++i) {
             const z3::expr dv = dist2(pts[i]);
             require({name}, dv <= R * R + num(options.slack));
@@ -311,48 +321,56 @@ struct FrontStage::Impl {
         // modsynth keeps the proximal link still during a primitive, but a
         // general arm need not, so that restriction stays out of here.)
         if (kinematics::has_proximal_link(dof)) return;
-        if (p.kind == geometry::PrimitiveKind::Line) {
-            // Exact critical point of a line: if the foot of the perpendicular
-            // from the base lies inside the segment, it is the closest point.
-            const geometry::Vec2 d = p.end - p.start;
-            const z3::expr t =
-                (bx - num(p.start.x())) * num(d.x()) + (by - num(p.start.y())) * num(d.y());
-            const z3::expr cr =
-                num(d.x()) * (by - num(p.start.y())) - num(d.y()) * (bx - num(p.start.x()));
-            const double l2 = d.squaredNorm();
-            // A clause, not a Boolean per line naming the interior case: the
-            // same condition, but nlsat no longer branches on one more
-            // variable per line (with 70 lines the refined check ran out of
-            // its budget instead of answering in a fraction of a second).
-            const z3::expr outside = t <= 0 || t >= num(l2);
-            require(
-                {name},
-                outside || cr * cr + num(options.slack) >= (r[0] - r[1]) * (r[0] - r[1]) * num(l2),
-                true);
-            require({name, diam}, outside || cr * cr >= num(d2 * l2), true);
-        } else if (p.kind == geometry::PrimitiveKind::Circle) {
-            // Exact for a circle of radius rc about c: the farthest point is
-            // |b - c| + rc away, the closest ||b - c| - rc|. Written in
-            // D = |b - c|^2 alone: no variable for |b - c| and no Boolean
-            // for "inside", which nlsat would have to decide per circle.
-            const z3::expr D = dist2(p.center);
-            const double rc = p.radius;
-            const z3::expr far = R + num(options.slack - rc);
-            require({name}, far >= 0 && D <= far * far, true);
-            // ||b - c| - rc| >= g, for g > 0: outside by g or inside by g.
-            const auto gap_at_least = [&](const z3::expr& g) {
-                return D >= (num(rc) + g) * (num(rc) + g) ||
-                       (g <= num(rc) && D <= (num(rc) - g) * (num(rc) - g));
-            };
-            const z3::expr e = r[0] - r[1];
-            for (const z3::expr& g : {e - num(options.slack), -e - num(options.slack)})
-                require({name}, g <= 0 || gap_at_least(g), true);
-            const double self = rule.self_distance() - 2 * options.slack;
-            if (self > 0) require({name, diam}, gap_at_least(num(self)), true);
+        switch (p.kind) {
+            case geometry::PrimitiveKind::Line: {
+                // Exact critical point of a line: if the foot of the perpendicular
+                // from the base lies inside the segment, it is the closest point.
+                const geometry::Vec2 d = p.end - p.start;
+                const z3::expr t =
+                    (bx - num(p.start.x())) * num(d.x()) + (by - num(p.start.y())) * num(d.y());
+                const z3::expr cr =
+                    num(d.x()) * (by - num(p.start.y())) - num(d.y()) * (bx - num(p.start.x()));
+                const double l2 = d.squaredNorm();
+                // A clause, not a Boolean per line naming the interior case: the
+                // same condition, but nlsat no longer branches on one more
+                // variable per line (with 70 lines the refined check ran out of
+                // its budget instead of answering in a fraction of a second).
+                const z3::expr outside = t <= 0 || t >= num(l2);
+                require({name},
+                        outside ||
+                            cr * cr + num(options.slack) >= (r[0] - r[1]) * (r[0] - r[1]) * num(l2),
+                        true);
+                require({name, diam}, outside || cr * cr >= num(d2 * l2), true);
+                break;
+            }
+            case geometry::PrimitiveKind::Circle: {
+                // Exact for a circle of radius rc about c: the farthest point is
+                // |b - c| + rc away, the closest ||b - c| - rc|. Written in
+                // D = |b - c|^2 alone: no variable for |b - c| and no Boolean
+                // for "inside", which nlsat would have to decide per circle.
+                const z3::expr D = dist2(p.center);
+                const double rc = p.radius;
+                const z3::expr far = R + num(options.slack - rc);
+                require({name}, far >= 0 && D <= far * far, true);
+                // ||b - c| - rc| >= g, for g > 0: outside by g or inside by g.
+                const auto gap_at_least = [&](const z3::expr& g) {
+                    return D >= (num(rc) + g) * (num(rc) + g) ||
+                           (g <= num(rc) && D <= (num(rc) - g) * (num(rc) - g));
+                };
+                const z3::expr e = r[0] - r[1];
+                for (const z3::expr& g : {e - num(options.slack), -e - num(options.slack)})
+                    require({name}, g <= 0 || gap_at_least(g), true);
+                const double self = rule.self_distance() - 2 * options.slack;
+                if (self > 0) require({name, diam}, gap_at_least(num(self)), true);
+                break;
+            }
+            case geometry::PrimitiveKind::Arc:
+                break;  // sampled points only
         }
     }
 
     Skeleton skeleton() {
+        assert(model.has_value());  // only after a Sat check
         const z3::model& m = *model;
         Skeleton s;
         s.dof = dof;
@@ -418,7 +436,7 @@ void FrontStage::block(const Skeleton& s) {
 
 bool FrontStage::exhausted_by_blocking() const { return impl_->blocked > 0; }
 
-std::vector<std::string> FrontStage::minimal_core() {
+std::vector<task::TaskPart> FrontStage::minimal_core() {
     Impl& m = *impl_;
     z3::solver& s = m.unsat_refined ? m.fine : m.solver;
     if (m.expired()) return {};
@@ -426,7 +444,7 @@ std::vector<std::string> FrontStage::minimal_core() {
     m.set_timeout(s, limit);
     // Other calls (conflicts) may have run checks since: re-establish the
     // conflict so the core below is this one's.
-    const auto t0 = std::chrono::steady_clock::now();
+    const run::Stopwatch conflict;
     if (s.check(m.assumptions()) != z3::unsat) return {};
     // A trial without a needed literal is satisfiable, and nlsat can take
     // its whole timeout to find the model (10 s on a 640-primitive path,
@@ -435,9 +453,7 @@ std::vector<std::string> FrontStage::minimal_core() {
     // conflict took.
     const double trial_limit = std::min(
         limit,
-        std::max(m.options.core_trial_seconds,
-                 m.options.core_trial_factor *
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()));
+        std::max(m.options.core_trial_seconds, m.options.core_trial_factor * conflict.seconds()));
     z3::expr_vector core = s.unsat_core();
     std::vector<z3::expr> kept;
     for (unsigned i = 0; i < core.size(); ++i) kept.push_back(core[i]);
@@ -465,17 +481,17 @@ std::vector<std::string> FrontStage::minimal_core() {
             ++i;
         }
     }
-    std::vector<std::string> out;
-    for (const auto& name : m.names) {
-        const bool in = std::any_of(kept.begin(), kept.end(), [&](const z3::expr& e) {
-            return e.decl().name().str() == name;
-        });
-        if (in) out.push_back(name);
+    std::vector<task::TaskPart> out;
+    for (const auto& part : m.names) {
+        const z3::expr& literal = m.literal_of.at(part);
+        const bool in = std::any_of(kept.begin(), kept.end(),
+                                    [&](const z3::expr& e) { return z3::eq(e, literal); });
+        if (in) out.push_back(part);
     }
     return out;
 }
 
-bool FrontStage::conflicts(const std::vector<std::string>& parts) {
+bool FrontStage::conflicts(const std::vector<task::TaskPart>& parts) {
     Impl& m = *impl_;
     z3::expr_vector a(m.ctx);
     for (const auto& part : parts) {
@@ -498,7 +514,7 @@ std::string FrontStage::smtlib() const {
     if (pos != std::string::npos) s.erase(pos);
     s += "(check-sat-assuming (";
     for (std::size_t i = 0; i < impl_->names.size(); ++i)
-        s += (i ? " |" : "|") + impl_->names[i] + "|";
+        s += (i ? " |" : "|") + task::to_string(impl_->names[i]) + "|";
     return s + "))\n";
 }
 

@@ -1,6 +1,7 @@
 #include <modsynth/synth/design_choice.h>
 
 #include <algorithm>
+#include <cassert>
 #include <limits>
 #include <stdexcept>
 
@@ -31,6 +32,9 @@ std::size_t choose_design(std::span<const DesignMerit> designs, double tie, doub
         if (!candidate(d) || d.motion_time > slowest) continue;
         if (chosen == designs.size() || shorter(d, designs[chosen])) chosen = i;
     }
+    // The shortest design is within the tie and, if it is not the
+    // clearest, within the tie of it: something is always chosen.
+    assert(chosen < designs.size());
     return chosen;
 }
 

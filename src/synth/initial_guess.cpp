@@ -223,12 +223,9 @@ bool sort_and_keep_distinct(std::vector<ScoredRobot>& all, int count, double dis
 // the candidates scored by then are kept.
 template <class UntilUnclear, class Whole>
 std::vector<ScoredRobot> choose_candidates(std::vector<ScoredRobot> all, int count,
-                                           double distinct_distance,
-                                           std::chrono::steady_clock::time_point deadline,
+                                           double distinct_distance, run::Deadline deadline,
                                            UntilUnclear&& until_unclear, Whole&& whole) {
-    const auto in_time = [&](std::size_t k) {
-        return k % 16 != 0 || std::chrono::steady_clock::now() < deadline;
-    };
+    const auto in_time = [&](std::size_t k) { return k % 16 != 0 || !deadline.expired(); };
     std::vector<std::size_t> order(all.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -258,8 +255,7 @@ std::vector<ScoredRobot> choose_candidates(std::vector<ScoredRobot> all, int cou
 }
 
 std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::Skeleton& skeleton,
-                                            int count, unsigned seed,
-                                            std::chrono::steady_clock::time_point deadline,
+                                            int count, unsigned seed, run::Deadline deadline,
                                             const InitialGuessOptions& options) {
     const auto pts = path_points(task, options.scoring_spacing, options);
     std::vector<std::vector<Vec2>> per_primitive;
@@ -326,8 +322,7 @@ std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::S
 }  // namespace
 
 std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skeleton& skeleton,
-                                         int count, unsigned seed,
-                                         std::chrono::steady_clock::time_point deadline,
+                                         int count, unsigned seed, run::Deadline deadline,
                                          const InitialGuessOptions& options) {
     text::require_valid(options);
     if (kinematics::has_proximal_link(skeleton.dof))
@@ -352,9 +347,7 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
     };
     if (skeleton.link_lengths.size() == 2)
         consider(skeleton.base, skeleton.link_lengths[0], skeleton.link_lengths[1]);
-    for (int i = 0;
-         i < options.candidates_two && (i % 16 != 0 || std::chrono::steady_clock::now() < deadline);
-         ++i) {
+    for (int i = 0; i < options.candidates_two && (i % 16 != 0 || !deadline.expired()); ++i) {
         const Vec2 base(bmin.x() + u(rng) * (bmax.x() - bmin.x()),
                         bmin.y() + u(rng) * (bmax.y() - bmin.y()));
         double far = 0.0, near = std::numeric_limits<double>::infinity();

@@ -41,6 +41,23 @@ const char* name_of(const SweptAttempt& attempt) {
     return "sampled";
 }
 
+namespace {
+
+// How far a point lies outside the part of SV^over's bound a primitive
+// fixes: its segment, or the disc of an arc's or circle's circle.
+double own_part_gap(const geometry::Primitive& prim, const geometry::Vec2& c) {
+    switch (prim.kind) {
+        case geometry::PrimitiveKind::Line:
+            return geometry::point_segment(c, prim.start, prim.end);
+        case geometry::PrimitiveKind::Arc:
+        case geometry::PrimitiveKind::Circle:
+            return (c - prim.center).norm() - prim.radius;
+    }
+    geometry::invalid_kind(prim.kind);
+}
+
+}  // namespace
+
 bool swept_over_plausible(const task::Task& task, const kinematics::Robot& robot) {
     // Nor can it be met at all when an obstacle's clearance circle meets the
     // primitive's own part of the bound (the segment; for an arc, the disc of
@@ -50,10 +67,7 @@ bool swept_over_plausible(const task::Task& task, const kinematics::Robot& robot
     for (const auto& prim : task.trajectory) {
         for (const auto& ob : task.obstacles) {
             const double need = rule.obstacle_distance(ob) + margins.clearance;
-            const double gap = prim.kind == geometry::PrimitiveKind::Line
-                                   ? geometry::point_segment(ob.center, prim.start, prim.end)
-                                   : (ob.center - prim.center).norm() - prim.radius;
-            if (gap < need) return false;
+            if (own_part_gap(prim, ob.center) < need) return false;
         }
     }
     const int dof = robot.dof();

@@ -1,7 +1,7 @@
 #include <modsynth/synth/synthesizer.h>
 
 #include <algorithm>
-#include <chrono>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -22,29 +22,37 @@
 #include <modsynth/nlp/formulation.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/nlp/warm_start.h>
+#include <modsynth/prove/conflict_text.h>
+#include <modsynth/prove/provers.h>
+#include <modsynth/run/stopwatch.h>
+#include <modsynth/smt/common_core.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/design_choice.h>
-#include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
-#include <modsynth/synth/obstacle_proof.h>
-#include <modsynth/synth/reach_proof.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 #include <modsynth/verify/verifier.h>
 
 namespace modsynth::synth {
+
+using prove::BranchAndBoundOptions;
+using prove::describe_conflict;
+using prove::Proof;
+using prove::Prover;
+using prove::provers;
+
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
     std::string s;
     for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
     return s;
+}
+
+std::string names(const std::vector<task::TaskPart>& parts) {
+    std::vector<std::string> v;
+    for (const task::TaskPart& p : parts) v.push_back(task::to_string(p));
+    return join(v, ", ");
 }
 
 // Points where the refinement constrains the arm: evenly spaced along each
@@ -119,22 +127,31 @@ public:
         : task_(task),
           opt_(options),
           stats_(stats),
-          start_(Clock::now()),
+          deadline_(run::Deadline::in(std::max(0.0, options.time_limit))),
           motion_(motion_options_for(task, options)) {
-        deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(
-                                 std::chrono::duration<double>(std::max(0.0, opt_.time_limit)));
         motion_.deadline = deadline_;
     }
 
     Solution run();
-    Solution timed(Solution solution);
-    double motion_seconds(const Solution& solution) const;
 
 private:
-    double remaining() const { return opt_.time_limit - seconds_since(start_); }
-    void say(const std::string& line) {
-        stage_ = line;
-        if (opt_.progress) opt_.progress(text::format("[%7.3fs] ", seconds_since(start_)) + line);
+    /// What the front stage concluded for each joint count.
+    struct FrontStageVerdicts {
+        /// The cores of the joint counts proved infeasible.
+        std::vector<std::vector<task::TaskPart>> cores;
+        std::vector<smt::Skeleton> searched;  ///< every skeleton tried, for the retries
+        bool all_unsat = true;                ///< every joint count proved infeasible
+    };
+    std::optional<Proof> find_proof();
+    std::optional<Solution> search_skeletons(FrontStageVerdicts& verdicts);
+    Solution infeasible(Proof proof) const;
+    Solution unknown(const std::vector<std::vector<task::TaskPart>>& cores) const;
+    Solution timed(Solution solution);
+    double motion_seconds(const Solution& solution) const;
+    double remaining() const { return deadline_.remaining(); }
+    void say(run::Stage stage, const std::string& message) {
+        stage_ = message;
+        if (opt_.progress) opt_.progress({stage, message, clock_.seconds()});
     }
     // Each step takes values and gives values: skeleton -> refined robot ->
     // verdict on its motion -> (certified solution | the next problem).
@@ -151,8 +168,8 @@ private:
     const task::Task& task_;
     const SynthesisOptions& opt_;
     SynthesisStats& stats_;
-    Clock::time_point start_;
-    Clock::time_point deadline_;
+    const run::Stopwatch clock_;
+    const run::Deadline deadline_;
     control::MotionOptions motion_;
     std::vector<std::string> tried_;
     /// Refinements that failed, by skeleton, swept-volume model and start
@@ -167,118 +184,132 @@ private:
 };
 
 Solution Search::run() {
-    Solution out;
-    out.task_name = task_.name;
-    // Reach, walls and detours first: exact geometry in milliseconds, where
-    // the front stage could only search.
-    const auto t_walls = Clock::now();
-    if (auto core = out_of_reach_core(task_)) {
-        stats_.front_seconds += seconds_since(t_walls);
-        out.status = Status::Infeasible;
-        out.explanation.message = "Proved infeasible: " + describe_conflict(task_, *core);
-        out.explanation.core = std::move(*core);
-        say("reach: " + out.explanation.message);
-        return out;
+    if (auto proof = find_proof()) return infeasible(std::move(*proof));
+    FrontStageVerdicts verdicts;
+    if (auto found = search_skeletons(verdicts)) return timed(std::move(*found));
+    // Blocking skeletons proves nothing: while time is left, their other
+    // initial guesses are tried.
+    if (!verdicts.searched.empty())
+        if (auto found = retry(verdicts.searched)) return timed(std::move(*found));
+    if (verdicts.all_unsat && !verdicts.cores.empty()) {
+        const run::Stopwatch t0;
+        Proof proof;
+        proof.core = smt::common_core(
+            task_, verdicts.cores, std::max(0.1, std::min(opt_.explanation_seconds, remaining())));
+        proof.message = describe_conflict(task_, proof.core);
+        stats_.front_seconds += t0.seconds();
+        return infeasible(std::move(proof));
     }
-    std::optional<ObstacleProof> proof = prove_obstacle_infeasible(task_);
-    if (!proof) {
-        // Two joints only: a branch and bound over the designs settles what
-        // the walls and detours leave open, within a small share of the run.
-        BranchAndBoundOptions bnb = opt_.branch_and_bound;
-        bnb.time_limit = std::min(bnb.time_limit, opt_.branch_and_bound_share * opt_.time_limit);
-        // The core is shrunk only within what the proof leaves of its share.
-        bnb.core_time_limit = std::min(bnb.core_time_limit, bnb.time_limit);
-        if (bnb.time_limit > 0.0) proof = prove_two_joint_infeasible(task_, bnb, deadline_);
+    return unknown(verdicts.cores);
+}
+
+// The provers first (provers.h): exact geometry in milliseconds, where the
+// front stage could only search.
+std::optional<Proof> Search::find_proof() {
+    // Two joints only: the branch and bound gets a small share of the run,
+    // and its core is shrunk only within what the proof leaves of it.
+    BranchAndBoundOptions bnb = opt_.branch_and_bound;
+    bnb.time_limit = std::min(bnb.time_limit, opt_.branch_and_bound_share * opt_.time_limit);
+    bnb.core_time_limit = std::min(bnb.core_time_limit, bnb.time_limit);
+    const run::Stopwatch proving;
+    for (const Prover& prover : provers(bnb)) {
+        std::optional<Proof> proof = prover.prove(task_, deadline_);
+        if (!proof) continue;
+        stats_.front_seconds += proving.seconds();
+        say(run::Stage::Proofs,
+            std::string(prover.name) + ": proved infeasible, " + proof->message);
+        return proof;
     }
-    stats_.front_seconds += seconds_since(t_walls);
-    if (proof) {
-        say("obstacles: proved infeasible, " + proof->message);
-        out.status = Status::Infeasible;
-        out.explanation.message = "Proved infeasible: " + proof->message;
-        out.explanation.core = std::move(proof->core);
-        out.explanation.separation = std::move(proof->separation);
-        out.explanation.geodesic = std::move(proof->geodesic);
-        return out;
-    }
-    std::vector<std::vector<std::string>> cores;
-    std::vector<smt::Skeleton> searched;  ///< every skeleton tried, for the retries
-    bool all_unsat = true;
+    stats_.front_seconds += proving.seconds();
+    return std::nullopt;
+}
+
+// For each allowed joint count, fewest first, the front stage and every
+// skeleton it offers, until one is certified. Breadth first: every
+// skeleton, of every joint count, gets its best initial guess before any
+// gets its others (retry). A wrong elbow sign fails on each of its guesses,
+// and each failure costs a full refinement; where every first guess of
+// fewer joints fails, more joints are usually needed (a base ringed by
+// posts, scripts/keyhole-tasks).
+std::optional<Solution> Search::search_skeletons(FrontStageVerdicts& verdicts) {
     for (int dof : task_.robot.dof) {
         if (remaining() <= 0.0) {
-            all_unsat = false;
+            verdicts.all_unsat = false;
             break;
         }
-        const auto t0 = Clock::now();
+        const run::Stopwatch t0;
         smt::FrontStageOptions fo = opt_.front;
         fo.time_limit = std::min(opt_.front.time_limit, std::max(0.1, remaining()));
         // Tearing down a large encoding takes time too: the front stage
         // stops a little before the run must end.
-        fo.deadline =
-            deadline_ -
-            std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
-                std::min(opt_.front_reserve_seconds, opt_.front_reserve_share * opt_.time_limit)));
-        say(std::to_string(dof) + " joints: front stage");
+        fo.deadline = deadline_.reserve(
+            std::min(opt_.front_reserve_seconds, opt_.front_reserve_share * opt_.time_limit));
+        say(run::Stage::FrontStage, std::to_string(dof) + " joints: front stage");
         smt::FrontStage front(task_, dof, fo);
         auto result = front.check();
-        stats_.front_seconds += seconds_since(t0);
+        stats_.front_seconds += t0.seconds();
         if (result == smt::FrontStage::Result::Unsat) {
             // A core found for fewer joints often holds here too: checking
             // it is cheaper than minimising afresh.
+            auto& cores = verdicts.cores;
             const auto known = std::find_if(cores.begin(), cores.end(),
                                             [&](const auto& c) { return front.conflicts(c); });
             cores.push_back(known != cores.end() ? *known : front.minimal_core());
-            say(std::to_string(dof) + " joints: proved infeasible, conflict between " +
-                join(cores.back(), ", "));
+            say(run::Stage::FrontStage, std::to_string(dof) +
+                                            " joints: proved infeasible, conflict between " +
+                                            names(cores.back()));
             tried_.push_back(std::to_string(dof) + " joints proved infeasible (" +
-                             join(cores.back(), ", ") + ")");
+                             names(cores.back()) + ")");
             continue;
         }
-        all_unsat = false;
+        verdicts.all_unsat = false;
         if (result == smt::FrontStage::Result::Unknown) {
-            say(std::to_string(dof) + " joints: front stage gave up (" + front.reason_unknown() +
-                ")");
+            say(run::Stage::FrontStage, std::to_string(dof) + " joints: front stage gave up (" +
+                                            front.reason_unknown() + ")");
             tried_.push_back(std::to_string(dof) + " joints: front stage undecided");
             continue;
         }
-        // Breadth first: every skeleton, of every joint count, gets its best
-        // initial guess before any gets its others. A wrong elbow sign fails
-        // on each of its guesses, and each failure costs a full refinement;
-        // where every first guess of fewer joints fails, more joints are
-        // usually needed (a base ringed by posts, scripts/keyhole-tasks).
         int skeletons = 0;
         while (result == smt::FrontStage::Result::Sat && remaining() > 0.0) {
             const smt::Skeleton sk = front.skeleton();
+            assert(sk.dof == dof && sk.link_lengths.size() == static_cast<std::size_t>(dof));
             ++skeletons;
             ++stats_.skeletons;
-            say(text::format("%d joints: skeleton %d (elbow %+d, base region %d)", dof, skeletons,
+            say(run::Stage::Search,
+                text::format("%d joints: skeleton %d (elbow %+d, base region %d)", dof, skeletons,
                              sk.elbow, sk.base_region));
-            searched.push_back(sk);
-            if (auto found = try_skeleton(sk, 1, opt_.seed))
-                return timed(shorten(sk, std::move(*found)));
+            verdicts.searched.push_back(sk);
+            if (auto found = try_skeleton(sk, 1, opt_.seed)) return shorten(sk, std::move(*found));
             front.block(sk);
-            const auto t1 = Clock::now();
+            const run::Stopwatch t1;
             result = front.check();
-            stats_.front_seconds += seconds_since(t1);
+            stats_.front_seconds += t1.seconds();
         }
         const bool exhausted = result != smt::FrontStage::Result::Sat;
         tried_.push_back(text::format("%d joints: %d skeleton(s) searched", dof, skeletons) +
                          (exhausted ? " (all of them) without a certified motion" : ""));
-        if (exhausted) say(std::to_string(dof) + " joints: search exhausted");
+        if (exhausted) say(run::Stage::Search, std::to_string(dof) + " joints: search exhausted");
     }
-    // Blocking skeletons proves nothing: while time is left, their other
-    // initial guesses are tried.
-    if (!searched.empty())
-        if (auto found = retry(searched)) return timed(std::move(*found));
-    if (all_unsat && !cores.empty()) {
-        const auto t0 = Clock::now();
-        out.status = Status::Infeasible;
-        out.explanation.core = common_core(
-            task_, cores, std::max(0.1, std::min(opt_.explanation_seconds, remaining())));
-        out.explanation.message =
-            "Proved infeasible: " + describe_conflict(task_, out.explanation.core);
-        stats_.front_seconds += seconds_since(t0);
-        return out;
-    }
+    return std::nullopt;
+}
+
+Solution Search::infeasible(Proof proof) const {
+    assert(!proof.core.empty() && !proof.message.empty());  // a proof names what conflicts
+    Solution out;
+    out.task_name = task_.name;
+    out.status = Status::Infeasible;
+    out.explanation.message = "Proved infeasible: " + proof.message;
+    out.explanation.core = std::move(proof.core);
+    out.explanation.separation = std::move(proof.separation);
+    out.explanation.geodesic = std::move(proof.geodesic);
+    return out;
+}
+
+// No robot and no proof: what was tried, and the cores of the joint counts
+// the front stage proved infeasible.
+Solution Search::unknown(const std::vector<std::vector<task::TaskPart>>& cores) const {
+    Solution out;
+    out.task_name = task_.name;
     const bool out_of_time = remaining() <= 0.0;
     out.status =
         Status(Status::Unknown, stage_,
@@ -298,13 +329,16 @@ Solution Search::run() {
 // The chosen robot's certified motion, timed for a controller (retime.h):
 // its q stay as certified, so the certificate holds for the result.
 Solution Search::timed(Solution solution) {
-    const auto t0 = Clock::now();
+    assert(solution.status == Status::Solved && !solution.samples.empty() &&
+           solution.certificate.ok);
+    const run::Stopwatch t0;
     control::RetimeStats timing;
     solution.samples = control::retime_for(task_, std::move(solution.samples),
                                            control::joint_limits_for(task_, solution.robot.dof()),
                                            opt_.retime, &timing);
-    say(text::format("timed: %.3f s of motion, %d rests, %d passes, in %.1f ms", timing.duration,
-                     timing.rests, timing.passes, 1e3 * seconds_since(t0)));
+    say(run::Stage::Timing,
+        text::format("timed: %.3f s of motion, %d rests, %d passes, in %.1f ms", timing.duration,
+                     timing.rests, timing.passes, 1e3 * t0.seconds()));
     stats_.timing = std::move(timing);
     return solution;
 }
@@ -337,7 +371,8 @@ std::optional<Solution> Search::retry(const std::vector<smt::Skeleton>& skeleton
         const unsigned seed = opt_.seed + 1000003u * pass;
         for (const smt::Skeleton& sk : skeletons) {
             if (remaining() <= 0.0) break;
-            say(pass == 0 ? text::format("%d joints: more initial guesses for elbow %+d, base "
+            say(run::Stage::Search,
+                pass == 0 ? text::format("%d joints: more initial guesses for elbow %+d, base "
                                          "region %d",
                                          sk.dof, sk.elbow, sk.base_region)
                           : text::format("%d joints: retry %u, elbow %+d, base region %d", sk.dof,
@@ -380,7 +415,8 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
                               certified.size() > 1 ? motion_seconds(c.solution)
                                                    : std::numeric_limits<double>::infinity()});
             if (certified.size() > 1)
-                say(text::format("%d joints: elbow %+d, total length %.4f m: %.3f s of motion",
+                say(run::Stage::Shortening,
+                    text::format("%d joints: elbow %+d, total length %.4f m: %.3f s of motion",
                                  found.dof, c.solution.robot.elbow, merits.back().total_length,
                                  merits.back().motion_time));
         }
@@ -396,13 +432,15 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
     const auto out_of_time = [&] {
         if (remaining() >= opt_.shorten_reserve * certified_seconds_ && remaining() > 0.0)
             return false;
-        say(text::format("%d joints: no time left to look for a shorter robot", found.dof));
+        say(run::Stage::Shortening,
+            text::format("%d joints: no time left to look for a shorter robot", found.dof));
         return true;
     };
     for (int region : task::base_region_choices(task_)) {
         const double bound = shortest_possible(region, found.dof);
         if (bound >= shortest - opt_.shorten_gap) {
-            say(text::format("%d joints: no robot with base region %d is shorter than %.4f m",
+            say(run::Stage::Shortening,
+                text::format("%d joints: no robot with base region %d is shorter than %.4f m",
                              found.dof, region, bound));
             // The other elbow could then give a robot about as long that
             // passes farther from the obstacles. The robot found, with the
@@ -412,7 +450,8 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
                 if (out_of_time()) return chosen();
                 kinematics::Robot other = certified.front().solution.robot;
                 other.elbow = -other.elbow;
-                say(text::format("%d joints: the same robot with elbow %+d?", found.dof,
+                say(run::Stage::Shortening,
+                    text::format("%d joints: the same robot with elbow %+d?", found.dof,
                                  other.elbow));
                 if (auto twin = judge(other).solution)
                     certified.push_back({std::move(*twin), certified.front().by});
@@ -425,15 +464,18 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
             smt::Skeleton variant = found;
             variant.base_region = region;
             variant.elbow = elbow;
-            say(text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof,
+            say(run::Stage::Shortening,
+                text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof,
                              elbow, region));
             auto candidate = try_skeleton(variant, opt_.guesses_per_variant, opt_.seed);
             if (!candidate) continue;
             const double length = candidate->robot.total_length();
             if (length < shortest - 1e-6)
-                say(text::format("    shorter: total length %.4f m", length));
+                say(run::Stage::Shortening,
+                    text::format("    shorter: total length %.4f m", length));
             else if (length <= shortest + opt_.length_tie)
-                say(text::format("    as short, to within %.4f m: total length %.4f m",
+                say(run::Stage::Shortening,
+                    text::format("    as short, to within %.4f m: total length %.4f m",
                                  opt_.length_tie, length));
             else
                 continue;
@@ -488,9 +530,10 @@ std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int 
             return failed_.count(refinement_key(skeleton, g.robot, a)) > 0;
         });
         if (attempts.empty()) continue;  // failed before from this very start
-        say(text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(),
+        say(run::Stage::Search,
+            text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(),
                          g.robot.base.y(), g.robot.total_length()) +
-            text::format(", margin %.4f m", g.margin));
+                text::format(", margin %.4f m", g.margin));
         for (std::size_t i = 0; i < attempts.size(); ++i) {
             if (auto s = refine(skeleton, g.robot, attempts[i])) return s;
             failed_.insert(refinement_key(skeleton, g.robot, attempts[i]));
@@ -502,7 +545,7 @@ std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int 
 
 std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
                                        const kinematics::Robot& start, SweptAttempt attempt) {
-    const auto started = Clock::now();
+    const run::Stopwatch started;
     const char* name = name_of(attempt);
     const nlp::SweptVolume swept = attempt.swept;
     nlp::ArmProblem problem;
@@ -518,7 +561,7 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
     std::optional<nlp::Formulation> last;
     nlp::SolverResult last_result;
     for (int round = 0; round < opt_.refinement_rounds && remaining() > 0.0; ++round) {
-        const auto t0 = Clock::now();
+        const run::Stopwatch t0;
         nlp::Formulation f = nlp::formulate(problem);
         nlp::SolverOptions so;
         // A refinement that needs more than this is better restarted from
@@ -528,18 +571,19 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
                      opt_.solve_seconds_per_kvariable * 1e-3 * f.program.num_variables());
         so.time_limit = std::min(budget, std::max(0.05, remaining()));
         so.max_iterations = round == 0 ? opt_.first_solve_iterations : opt_.later_solve_iterations;
-        so.wall_limit = std::max(0.05, remaining());
+        so.deadline = deadline_.at_least(0.05);
         std::optional<nlp::WarmStart> warm;
         if (last && opt_.warm_start_rounds)
             warm = nlp::carry_over(last->program, last_result, f.program);
         const nlp::SolverResult res = nlp::minimize(f.program, so, warm ? &*warm : nullptr);
-        stats_.refine_seconds += seconds_since(t0);
+        stats_.refine_seconds += t0.seconds();
         ++stats_.nlp_solves;
         if (!res.usable()) {
-            say(std::string("    ") + name +
-                text::format(": refinement did not converge in %d iterations, %.3f s (",
-                             res.iterations, seconds_since(t0)) +
-                res.message + ")");
+            say(run::Stage::Refinement,
+                std::string("    ") + name +
+                    text::format(": refinement did not converge in %d iterations, %.3f s (",
+                                 res.iterations, t0.seconds()) +
+                    res.message + ")");
             return std::nullopt;
         }
         const kinematics::Robot robot = nlp::robot_from(f, res.x);
@@ -549,13 +593,14 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
         std::string links;
         for (double r : robot.link_lengths)
             links += text::format(links.empty() ? "%.4f" : " + %.4f", r);
-        say(std::string("    ") + name + ": candidate links " + links +
-            text::format(" m with %zu points, %d variables, in %d iterations, %.3f s",
-                         problem.points.size(), variables, res.iterations, seconds_since(t0)));
+        say(run::Stage::Refinement,
+            std::string("    ") + name + ": candidate links " + links +
+                text::format(" m with %zu points, %d variables, in %d iterations, %.3f s",
+                             problem.points.size(), variables, res.iterations, t0.seconds()));
         Verdict verdict = judge(robot);
         if (verdict.solution) {
             stats_.certified_by = name;
-            certified_seconds_ = seconds_since(started);
+            certified_seconds_ = started.seconds();
             if (stats_.first_certified_by.empty()) stats_.first_certified_by = name;
             return std::move(verdict.solution);
         }
@@ -581,29 +626,29 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
 // Plans and certifies the motion of one candidate robot.
 Verdict Search::judge(const kinematics::Robot& robot) {
     Verdict verdict;
-    const auto t0 = Clock::now();
+    const run::Stopwatch t0;
     control::MotionFailure failure;
     auto motion = control::plan_motion(task_, robot, motion_, &failure);
     if (!motion && failure.gave_up) {
-        say("    motion planning stopped: " + failure.message);
-        stats_.verify_seconds += seconds_since(t0);
+        say(run::Stage::Verification, "    motion planning stopped: " + failure.message);
+        stats_.verify_seconds += t0.seconds();
         verdict.gave_up = true;  // the refinement of this guess ends
         return verdict;
     }
     if (!motion && failure.travel) {
         // Nothing along the path to learn from: the next guess may do.
-        say("    no clear travel: " + failure.message);
-        stats_.verify_seconds += seconds_since(t0);
+        say(run::Stage::Verification, "    no clear travel: " + failure.message);
+        stats_.verify_seconds += t0.seconds();
         return verdict;
     }
     if (!motion) {
-        say("    out of reach at " + failure.message);
+        say(run::Stage::Verification, "    out of reach at " + failure.message);
         if (failure.transition) {
             verdict.deeper_transitions = 1;
         } else {
             verdict.points.emplace_back(failure.primitive, failure.s);
         }
-        stats_.verify_seconds += seconds_since(t0);
+        stats_.verify_seconds += t0.seconds();
         return verdict;
     }
     const verify::VerifyOptions vo = verify::options_for(motion_, opt_.verify);
@@ -614,7 +659,7 @@ Verdict Search::judge(const kinematics::Robot& robot) {
         if (!control::refine_motion(task_, robot, *motion, cert.coarse_pairs)) break;
         cert = verify::certify(task_, robot, *motion, vo);
     }
-    stats_.verify_seconds += seconds_since(t0);
+    stats_.verify_seconds += t0.seconds();
     if (cert.ok) {
         Solution& out = verdict.solution.emplace();
         out.task_name = task_.name;
@@ -622,10 +667,11 @@ Verdict Search::judge(const kinematics::Robot& robot) {
         out.robot = robot;
         out.samples = std::move(*motion);
         out.certificate = std::move(cert);
-        say(text::format(
-            "    certified: clearance margin %.4f m, self margin %.4f m, deviation %.2g m",
-            out.certificate.min_clearance, out.certificate.min_self_clearance,
-            out.certificate.max_deviation));
+        say(run::Stage::Verification,
+            text::format(
+                "    certified: clearance margin %.4f m, self margin %.4f m, deviation %.2g m",
+                out.certificate.min_clearance, out.certificate.min_self_clearance,
+                out.certificate.max_deviation));
         return verdict;
     }
     std::set<std::pair<int, long>> seen;
@@ -640,8 +686,9 @@ Verdict Search::judge(const kinematics::Robot& robot) {
         if (static_cast<int>(verdict.points.size()) >= opt_.counterexamples_per_round) break;
     }
     if (!cert.violations.empty())
-        say("    verification: " + std::to_string(cert.violations.size()) +
-            " violation(s), first: " + cert.violations.front().message);
+        say(run::Stage::Verification,
+            "    verification: " + std::to_string(cert.violations.size()) +
+                " violation(s), first: " + cert.violations.front().message);
     return verdict;
 }
 

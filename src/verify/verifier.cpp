@@ -275,8 +275,14 @@ private:
             // primitive, within the join tolerance (added) of the start of
             // sb's, along sb's.
             const geometry::Vec2 from = same_trace ? a.target : prim.start;
-            if (prim.kind != geometry::PrimitiveKind::Line)
-                sag = sagitta(prim.radius, (b.target - from).norm());
+            switch (prim.kind) {
+                case geometry::PrimitiveKind::Line:
+                    break;
+                case geometry::PrimitiveKind::Arc:
+                case geometry::PrimitiveKind::Circle:
+                    sag = sagitta(prim.radius, (b.target - from).norm());
+                    break;
+            }
             if (across) sag += (a.target - prim.start).norm();
         }
         // Across a boundary both targets are the same transition point (up to

@@ -10,7 +10,7 @@ TEST_CASE("the public API reads, solves, writes, reads back and certifies", "[ap
     modsynth::SolveOptions options;
     options.time_limit = 20.0;
     int lines = 0;
-    options.progress = [&](const std::string&) { ++lines; };
+    options.progress = [&](const modsynth::ProgressEvent&) { ++lines; };
     const modsynth::Solution solution = modsynth::solve(task, options);
     REQUIRE(solution.status == modsynth::Status::Solved);
     CHECK(lines > 0);

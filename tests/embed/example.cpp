@@ -4,18 +4,23 @@
 //
 //   modsynth_embed_example TASK.json
 //
-// Designs a robot for the task, certifies the answer again as a reader of
-// the solution document would, or explains why there is none. Exit 0 when
+//   modsynth_embed_example TASK.json SOLUTION.json
+//
+// Designs a robot for the task (with the modules that carry it), certifies
+// the answer again as a reader of the solution document would, or explains
+// why there is none; with SOLUTION.json, writes the answer there too (the
+// same bytes as `modsynth solve TASK.json -o SOLUTION.json`). Exit 0 when
 // solved and re-certified, 1 when proved infeasible and explained, 2 on bad
 // input, 3 otherwise.
 #include <cstdio>
 #include <exception>
+#include <fstream>
 
 #include <modsynth/modsynth.h>
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: %s TASK.json\n", argv[0]);
+    if (argc != 2 && argc != 3) {
+        std::fprintf(stderr, "usage: %s TASK.json [SOLUTION.json]\n", argv[0]);
         return 2;
     }
     try {
@@ -23,6 +28,14 @@ int main(int argc, char** argv) {
         modsynth::SolveOptions options;
         options.time_limit = 30.0;
         const modsynth::Solution solution = modsynth::solve(task, options);
+        if (argc == 3) {
+            std::ofstream out(argv[2], std::ios::binary);
+            out << modsynth::write_solution_json(solution);
+            if (!out) {
+                std::fprintf(stderr, "error: %s cannot be written\n", argv[2]);
+                return 3;
+            }
+        }
 
         if (solution.status == modsynth::Status::Solved) {
             // The document round trip loses nothing the certificate rests on.
@@ -34,11 +47,13 @@ int main(int argc, char** argv) {
                 "(clearance margin %.4f m)\n",
                 task.name.c_str(), read.robot.dof(), read.robot.total_length(),
                 again.ok ? "yes" : "no", again.min_clearance);
+            if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
             return again.ok ? 0 : 3;
         }
         const modsynth::Explanation why = modsynth::explain(task, 30.0, 1.0);
         std::printf("%s: %s\n", task.name.c_str(), why.message.c_str());
-        for (const auto& part : why.core) std::printf("  conflicting: %s\n", part.c_str());
+        for (const auto& part : why.core)
+            std::printf("  conflicting: %s\n", to_string(part).c_str());
         for (const auto& s : why.suggestions) std::printf("  change: %s\n", s.change.c_str());
         return why.status == modsynth::Status::Infeasible && !why.core.empty() ? 1 : 3;
     } catch (const modsynth::InputError& e) {

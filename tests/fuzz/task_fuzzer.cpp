@@ -17,7 +17,7 @@
 #include <modsynth/io/spatial_task_io.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
-#include <modsynth/synth/explanation.h>
+#include <modsynth/prove/conflict_text.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/limits.h>
 #include <modsynth/text/printable.h>
@@ -85,12 +85,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto again = to_json(parse_task(to_json(task)));
     if (again != to_json(task)) std::abort();
     // The descriptions explain and the report print for every part.
+    using modsynth::task::RobotKey;
+    using modsynth::task::TaskPart;
     for (std::size_t j = 0; j < task.trajectory.size() && j < 8; ++j)
-        (void)modsynth::synth::describe_part(task, "trajectory[" + std::to_string(j) + "]");
+        (void)modsynth::prove::describe_part(task, TaskPart::primitive(task, static_cast<int>(j)));
     for (std::size_t i = 0; i < task.obstacles.size() && i < 8; ++i)
-        (void)modsynth::synth::describe_part(task, "obstacles[" + std::to_string(i) + "]");
-    for (const char* part : {"base_regions", "robot.max_link_length", "robot.min_link_length",
-                             "robot.link_diameter", "robot.dof"})
-        (void)modsynth::synth::describe_part(task, part);
+        (void)modsynth::prove::describe_part(task, TaskPart::obstacle(static_cast<int>(i)));
+    for (const TaskPart& part :
+         {TaskPart::base_regions(), TaskPart::robot(RobotKey::MaxLinkLength),
+          TaskPart::robot(RobotKey::MinLinkLength), TaskPart::robot(RobotKey::LinkDiameter),
+          TaskPart::robot(RobotKey::Dof)})
+        (void)modsynth::prove::describe_part(task, part);
     return 0;
 }

@@ -195,7 +195,16 @@ TEST_CASE("segment-primitive distance agrees with dense sampling", "[geometry][s
         const Primitive p = random_primitive(rng);
         SegmentPair s = random_pair(rng);
         // Some segments pass near the center or touch the curve.
-        if (i % 4 == 1 && p.kind != PrimitiveKind::Line) s.c = p.center;
+        if (i % 4 == 1) {
+            switch (p.kind) {
+                case PrimitiveKind::Line:
+                    break;
+                case PrimitiveKind::Arc:
+                case PrimitiveKind::Circle:
+                    s.c = p.center;
+                    break;
+            }
+        }
         if (i % 4 == 2) s.a = point_at(p, 0.4 * length(p));
         const double exact = segment_primitive(s.a, s.b, p);
         const double sampled =

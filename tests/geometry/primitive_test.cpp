@@ -37,8 +37,26 @@ Primitive random_primitive(std::mt19937& rng) {
 
 Where expected_where(const Primitive& p, double s) {
     if (s == 0.0) return Where::Start;
-    if (p.kind != PrimitiveKind::Circle && s == length(p)) return Where::End;
-    return Where::Interior;
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+        case PrimitiveKind::Arc:
+            return s == length(p) ? Where::End : Where::Interior;
+        case PrimitiveKind::Circle:
+            return Where::Interior;  // its end is its start
+    }
+    modsynth::geometry::invalid_kind(p.kind);
+}
+
+// Arcs and circles have a centre and a radius.
+bool curved(const Primitive& p) {
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return false;
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            return true;
+    }
+    modsynth::geometry::invalid_kind(p.kind);
 }
 
 }  // namespace
@@ -228,7 +246,7 @@ TEST_CASE("end points and clamping hold for random primitives", "[geometry]") {
         CHECK(point_at(p, length(p)) == p.end);
         CHECK(point_at(p, length(p) + 1.0) == p.end);
         CHECK(point_at(p, -1.0) == p.start);
-        if (p.kind != PrimitiveKind::Line) {
+        if (curved(p)) {
             CHECK(std::abs((p.end - p.center).norm() - p.radius) <= kEps);
             // The end computed from angles matches the stored end.
             CHECK(near(p.center + p.radius * unit(p.start_angle + p.sweep), p.end, 1e-9));

@@ -1,7 +1,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <string>
 
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/io/task_io.h>
@@ -15,32 +17,42 @@ using namespace modsynth;
 
 namespace {
 
+// Keys of the test programs: a family and a number.
+nlp::Key key(nlp::Key::Family family, int index) {
+    nlp::Key k;
+    k.family = family;
+    k.index = index;
+    return k;
+}
+
 // min (x - 2)^2 + (y - 1)^2 on the unit disc, written twice (`twice`
-// repeats the disc's label, as both ends of a link share one), plus, when
-// `with_z`, a variable z >= 0.5 minimised on its own.
+// repeats the disc's key, as both ends of a separating line share one),
+// plus, when `with_z`, a variable z >= 0.5 minimised on its own.
 nlp::QuadraticProgram disc_program(bool with_z, bool twice) {
+    using F = nlp::Key::Family;
     nlp::QuadraticProgram qp;
     int z = -1;
-    if (with_z) z = qp.add_variable(0.5, 3.0, 2.0, "z");  // first: shifts every index
-    const int x = qp.add_variable(-nlp::kInfinity, nlp::kInfinity, 0.0, "x");
-    const int y = qp.add_variable(-nlp::kInfinity, nlp::kInfinity, 0.0, "y");
+    if (with_z) z = qp.add_variable(0.5, 3.0, 2.0, "z", key(F::Lambda, 0));  // shifts every index
+    const int x = qp.add_variable(-nlp::kInfinity, nlp::kInfinity, 0.0, "x", key(F::Base, 0));
+    const int y = qp.add_variable(-nlp::kInfinity, nlp::kInfinity, 0.0, "y", key(F::Base, 1));
     nlp::Quadratic f;
     f.add(5.0).add(x, x, 1.0).add(x, -4.0).add(y, y, 1.0).add(y, -2.0);
     if (with_z) f.add(z, 1.0);
     qp.set_objective(f);
-    if (with_z) qp.add_constraint(nlp::Quadratic{}.add(z, z, 1.0), 0.0, 9.0, "z box");
+    if (with_z)
+        qp.add_constraint(nlp::Quadratic{}.add(z, z, 1.0), 0.0, 9.0, "z box", key(F::Bisector, 0));
     const auto disc = nlp::Quadratic{}.add(x, x, 1.0).add(y, y, 1.0);
-    qp.add_constraint(disc, -nlp::kInfinity, 1.0, "disc");
+    qp.add_constraint(disc, -nlp::kInfinity, 1.0, "disc", key(F::Clearance, 0));
     if (twice)
         qp.add_constraint(nlp::Quadratic{}.add(x, x, 2.0).add(y, y, 2.0), -nlp::kInfinity, 2.0,
-                          "disc");
+                          "disc", key(F::Clearance, 0));
     qp.finalize();
     return qp;
 }
 
 }  // namespace
 
-TEST_CASE("a solution carries over to a larger program by name and label", "[nlp]") {
+TEST_CASE("a solution carries over to a larger program by key", "[nlp]") {
     const nlp::QuadraticProgram small = disc_program(false, true);
     const nlp::SolverResult solved = nlp::minimize(small, {});
     REQUIRE(solved.usable());
@@ -56,7 +68,7 @@ TEST_CASE("a solution carries over to a larger program by name and label", "[nlp
     CHECK(w.x[2] == solved.x[1]);
     CHECK(w.z_lower[0] == 0.0);
     CHECK(w.z_lower[1] == solved.z_lower[0]);
-    // "z box" is new; the two "disc" constraints match in order.
+    // "z box" is new; the two "disc" constraints, of one key, match in order.
     CHECK(w.lambda[0] == 0.0);
     CHECK(w.lambda[1] == solved.lambda[0]);
     CHECK(w.lambda[2] == solved.lambda[1]);
@@ -118,4 +130,52 @@ TEST_CASE("a warm start that does not fit the program is refused", "[nlp]") {
     nlp::WarmStart w;
     w.x = {0.0};
     CHECK_THROWS_AS(nlp::minimize(qp, {}, &w), std::invalid_argument);
+}
+
+namespace {
+
+// Whether two entries share a key exactly when they share a label (or a
+// name): the warm start then matches what it matched by words before.
+template <typename KeyOf, typename WordsOf>
+void check_keys_follow_words(int count, KeyOf key_of, WordsOf words_of) {
+    std::map<nlp::Key, std::string> words_of_key;
+    std::map<std::string, nlp::Key> key_of_words;
+    for (int i = 0; i < count; ++i) {
+        const nlp::Key& k = key_of(i);
+        const std::string& w = words_of(i);
+        INFO(w);
+        CHECK(k.family != nlp::Key::Family::None);
+        const auto [a, new_key] = words_of_key.emplace(k, w);
+        const auto [b, new_words] = key_of_words.emplace(w, k);
+        CHECK(new_key == new_words);
+        CHECK(a->second == w);
+        CHECK(b->second == k);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("every variable and constraint of a refinement is keyed as its words say", "[nlp]") {
+    using nlp::SweptVolume;
+    for (const SweptVolume swept : {SweptVolume::Sampled, SweptVolume::Over, SweptVolume::App}) {
+        for (const int dof : {2, 3}) {
+            INFO("swept " << static_cast<int>(swept) << ", " << dof << " joints");
+            nlp::ArmProblem p = testing::rose_arm_problem(swept);
+            if (dof == 3) {
+                p.skeleton.dof = 3;
+                p.start.link_lengths = {0.2, 0.35, 0.3};
+                for (int j = 0; j < static_cast<int>(p.task->trajectory.size()); ++j)
+                    p.start.proximal_angles.push_back(0.3 + 0.05 * j);
+            }
+            const nlp::Formulation f = nlp::formulate(p);
+            const nlp::QuadraticProgram& qp = f.program;
+            check_keys_follow_words(
+                qp.num_variables(), [&](int i) -> const nlp::Key& { return qp.variable_key(i); },
+                [&](int i) -> const std::string& { return qp.variable_name(i); });
+            check_keys_follow_words(
+                qp.num_constraints(),
+                [&](int m) -> const nlp::Key& { return qp.constraint_key(m); },
+                [&](int m) -> const std::string& { return qp.constraint_label(m); });
+        }
+    }
 }

@@ -13,9 +13,9 @@
 
 #include <modsynth/baseline/baseline.h>
 #include <modsynth/control/motion.h>
+#include <modsynth/explanation/explanation.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/smt/front_stage.h>
-#include <modsynth/synth/explanation.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/text/option_check.h>
@@ -110,7 +110,6 @@ TEST_CASE("solver options: defaults valid, each bad field named", "[options][nlp
         {"SolverOptions::warm_mu", [](O& o) { o.warm_mu = kNaN; }},
         {"SolverOptions::print_level", [](O& o) { o.print_level = 13; }},
         {"SolverOptions::reported_violations", [](O& o) { o.reported_violations = -1; }},
-        {"SolverOptions::wall_limit", [](O& o) { o.wall_limit = kNaN; }},
         {"ProgressWatchOptions::stall_window", [](O& o) { o.watch.stall_window = 0; }},
     });
     nlp::QuadraticProgram qp;
@@ -239,13 +238,12 @@ TEST_CASE("initial guess options: defaults valid, each bad field named", "[optio
     O bad;
     bad.proximal_angles = 0;
     smt::Skeleton skeleton;
-    CHECK_THROWS_WITH(synth::initial_guesses(testing::line_task(), skeleton, 1, 0,
-                                             std::chrono::steady_clock::time_point::max(), bad),
+    CHECK_THROWS_WITH(synth::initial_guesses(testing::line_task(), skeleton, 1, 0, {}, bad),
                       Catch::Contains("InitialGuessOptions::proximal_angles"));
 }
 
 TEST_CASE("relaxation options: defaults valid, each bad field named", "[options][explain]") {
-    using O = synth::RelaxationOptions;
+    using O = explanation::RelaxationOptions;
     check_options<O>({
         {"RelaxationOptions::check_seconds", [](O& o) { o.check_seconds = 0.0; }},
         {"RelaxationOptions::longest_link", [](O& o) { o.longest_link = kNaN; }},
@@ -259,9 +257,10 @@ TEST_CASE("relaxation options: defaults valid, each bad field named", "[options]
     });
     O bad;
     bad.check_seconds = -1.0;
-    CHECK_THROWS_WITH(
-        synth::suggest_relaxations(testing::line_task(), {"robot.max_link_length"}, 1.0, 1.0, bad),
-        Catch::Contains("RelaxationOptions::check_seconds"));
+    CHECK_THROWS_WITH(explanation::suggest_relaxations(
+                          testing::line_task(),
+                          {task::TaskPart::robot(task::RobotKey::MaxLinkLength)}, 1.0, 1.0, bad),
+                      Catch::Contains("RelaxationOptions::check_seconds"));
 }
 
 TEST_CASE("baseline options: defaults valid, each bad field named", "[options][baseline]") {

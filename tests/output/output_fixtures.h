@@ -104,7 +104,9 @@ inline synth::Solution infeasible_solution(const task::Task& task) {
     s.task_name = task.name;
     s.status = synth::Status::Infeasible;
     s.explanation.message = "No robot <can> do this & that";
-    s.explanation.core = {"trajectory[1]", "obstacles[0]", "base_regions", "robot.max_link_length"};
+    s.explanation.core = {task::TaskPart::trajectory(1), task::TaskPart::obstacle(0),
+                          task::TaskPart::base_regions(),
+                          task::TaskPart::robot(task::RobotKey::MaxLinkLength)};
     return s;
 }
 

@@ -64,7 +64,7 @@ std::vector<int> every(const task::Task& t) {
 
 }  // namespace
 
-std::string check_separation_witness(const task::Task& t, const synth::SeparationWitness& w) {
+std::string check_separation_witness(const task::Task& t, const prove::SeparationWitness& w) {
     if (w.walls.size() != t.base_regions.size()) return "not one wall per base region";
     for (const auto& wall : w.walls) {
         const std::string at = "wall of base_regions[" + std::to_string(wall.base_region) + "]: ";
@@ -147,7 +147,7 @@ double roadmap_distance(const task::Task& t, const task::BaseRegion& region, con
     return std::numeric_limits<double>::infinity();
 }
 
-std::string check_geodesic_witness(const task::Task& t, const synth::GeodesicWitness& w) {
+std::string check_geodesic_witness(const task::Task& t, const prove::GeodesicWitness& w) {
     const int links = *std::max_element(t.robot.dof.begin(), t.robot.dof.end());
     if (std::abs(w.reach - links * t.robot.max_link_length) > 1e-12) return "reach misreported";
     if (w.detours.size() != t.base_regions.size()) return "not one detour per base region";

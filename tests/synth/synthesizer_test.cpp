@@ -8,7 +8,7 @@
 
 #include <modsynth/geometry/farthest_reach.h>
 #include <modsynth/io/task_io.h>
-#include <modsynth/synth/reach_proof.h>
+#include <modsynth/prove/reach_proof.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/verify/verifier.h>
 
@@ -76,7 +76,7 @@ TEST_CASE("out-of-reach tasks are proved infeasible with a core naming the unrea
         const synth::Solution s = synth::synthesize(t, {});
         REQUIRE(s.status == synth::Status::Infeasible);
         const auto expect = testing::read_json(stem_of(path) + ".expect.json");
-        const auto& core = s.explanation.core;
+        const auto core = task::to_strings(s.explanation.core);
         bool names_one = false;
         for (const auto& part : expect["core_should_include_one_of"])
             names_one = names_one ||
@@ -114,7 +114,7 @@ TEST_CASE("the shortening pass skips the variants that cannot be shorter", "[syn
     std::vector<std::string> lines;
     synth::SynthesisOptions options;
     options.shorten_gap = 0.5;
-    options.progress = [&](const std::string& l) { lines.push_back(l); };
+    options.progress = [&](const run::ProgressEvent& e) { lines.push_back(e.message); };
     const synth::Solution first = synth::synthesize(t, options);
     REQUIRE(first.status == synth::Status::Solved);
     CHECK(said(lines, "shorter robot") == 0);
@@ -160,12 +160,12 @@ TEST_CASE("a long path out of reach is proved infeasible well within a 10 s limi
     t.base_regions.push_back({geometry::Vec2(-0.08, -0.08), geometry::Vec2(0.08, 0.08)});
     t.robot.dof = {2, 3};
     t.robot.max_link_length = 0.15;
-    REQUIRE_FALSE(synth::out_of_reach_core(t));
+    REQUIRE_FALSE(prove::out_of_reach_core(t));
     synth::SynthesisOptions options;
     options.time_limit = 10.0;
     const synth::Solution s = synth::synthesize(t, options);
     REQUIRE(s.status == synth::Status::Infeasible);
-    const auto& core = s.explanation.core;
+    const auto core = task::to_strings(s.explanation.core);
     CHECK(std::find(core.begin(), core.end(), "robot.max_link_length") != core.end());
     CHECK(std::count_if(core.begin(), core.end(),
                         [](const std::string& p) { return p.rfind("trajectory[", 0) == 0; }) >= 2);
@@ -203,7 +203,7 @@ TEST_CASE("progress is reported stage by stage", "[synth]") {
     const task::Task t = io::load_task(testing::source_path("tasks/rose.json"));
     std::vector<std::string> lines;
     synth::SynthesisOptions options;
-    options.progress = [&](const std::string& l) { lines.push_back(l); };
+    options.progress = [&](const run::ProgressEvent& e) { lines.push_back(e.message); };
     synth::synthesize(t, options);
     REQUIRE(lines.size() >= 3);
     CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
@@ -220,7 +220,7 @@ TEST_CASE("wipe-table and clean-table: 2 joints exhausted, then solved with 3", 
         const task::Task t = io::load_task(testing::source_path(name));
         std::vector<std::string> lines;
         synth::SynthesisOptions options;
-        options.progress = [&](const std::string& l) { lines.push_back(l); };
+        options.progress = [&](const run::ProgressEvent& e) { lines.push_back(e.message); };
         const synth::Solution s = synth::synthesize(t, options);
         REQUIRE(s.status == synth::Status::Solved);
         CHECK(s.robot.dof() == 3);
@@ -246,7 +246,7 @@ TEST_CASE("a search that finds nothing goes on to its time limit and never repea
     options.time_limit = 2.0;
     options.first_solve_iterations = 1;
     std::vector<std::string> lines;
-    options.progress = [&](const std::string& l) { lines.push_back(l); };
+    options.progress = [&](const run::ProgressEvent& e) { lines.push_back(e.message); };
     const synth::Solution s = synth::synthesize(t, options);
     REQUIRE(s.status == synth::Status::Unknown);
     CHECK(s.status.reason == "time limit");

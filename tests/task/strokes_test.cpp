@@ -80,20 +80,21 @@ TEST_CASE("strokes: parts are named strokes[s][j], a trajectory keeps trajectory
     CHECK(task::part_name(t, 1) == "strokes[0][1]");
     CHECK(task::part_name(t, 2) == "strokes[1][0]");
     CHECK(task::part_name(t, 3) == "strokes[2][0]");
-    CHECK(task::primitive_of_part(t, "strokes[1][0]") == 2);
-    CHECK(task::primitive_of_part(t, "strokes[0][1].end") == 1);
-    CHECK_FALSE(task::primitive_of_part(t, "strokes[1][1]"));
-    CHECK_FALSE(task::primitive_of_part(t, "strokes[3][0]"));
-    CHECK_FALSE(task::primitive_of_part(t, "trajectory[0]"));
-    CHECK(task::names_primitive("strokes[2][0]"));
+    using task::TaskPart;
+    CHECK(TaskPart::primitive(t, 2) == TaskPart::stroke_primitive(1, 0));
+    CHECK(task::primitive_index(t, TaskPart::stroke_primitive(1, 0)) == 2);
+    CHECK(task::primitive_index(t, TaskPart::stroke_primitive(0, 1).with_field("end")) == 1);
+    CHECK_FALSE(task::primitive_index(t, TaskPart::stroke_primitive(1, 1)));
+    CHECK_FALSE(task::primitive_index(t, TaskPart::stroke_primitive(3, 0)));
+    CHECK_FALSE(task::primitive_index(t, TaskPart::trajectory(0)));
 
     const Task one =
         parse_task({{"format", "modsynth-task/1"}, {"trajectory", {line(0.4, 0.1, 0.5, 0.1)}}});
     CHECK_FALSE(task::has_strokes(one));
     CHECK(task::stroke_count(one) == 1);
     CHECK(task::part_name(one, 0) == "trajectory[0]");
-    CHECK(task::primitive_of_part(one, "trajectory[0]") == 0);
-    CHECK_FALSE(task::primitive_of_part(one, "strokes[0][0]"));
+    CHECK(task::primitive_index(one, TaskPart::trajectory(0)) == 0);
+    CHECK_FALSE(task::primitive_index(one, TaskPart::stroke_primitive(0, 0)));
     CHECK(task::has_transition_after(
         parse_task({{"format", "modsynth-task/1"},
                     {"trajectory", {line(0.4, 0.1, 0.5, 0.1), line(0.5, 0.1, 0.5, 0.2)}}}),

@@ -2,13 +2,13 @@
 // The paper's discretized baseline end to end (IV-B): design from N
 // equidistant points, RRT between the poses, and the fidelity of what the
 // robot would then do, timed stage by stage.
-#include <functional>
 #include <string>
 #include <vector>
 
 #include <modsynth/baseline/discretized_design.h>
 #include <modsynth/baseline/fidelity.h>
 #include <modsynth/baseline/rrt_motion.h>
+#include <modsynth/run/progress.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::baseline {
@@ -24,8 +24,8 @@ struct BaselineOptions {
     DesignOptions design;
     PlannerOptions planner;
     FidelityOptions fidelity;
-    /// Called with one line per stage (may be empty).
-    std::function<void(const std::string&)> progress;
+    /// Told of every step (may be empty).
+    run::ProgressSink progress;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;

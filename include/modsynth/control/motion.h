@@ -1,13 +1,13 @@
 #pragma once
 // The control: joint angles over time (formats.md "samples"), computed from
 // the exact inverse kinematics along each primitive.
-#include <chrono>
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <modsynth/kinematics/robot.h>
+#include <modsynth/run/deadline.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::control {
@@ -74,7 +74,7 @@ struct MotionOptions {
     /// keep the files readable, and rounding is monotone, so t stays
     /// non-decreasing.
     double ticks_per_second = 1e6;
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    run::Deadline deadline;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;

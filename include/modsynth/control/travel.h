@@ -5,12 +5,12 @@
 // the EE clear of the lower links all the way (the bound of
 // kinematics/motion_clearance.h, which the verifier also proves). OMPL stays
 // out of this interface.
-#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <modsynth/kinematics/robot.h>
+#include <modsynth/run/deadline.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::control {
@@ -27,7 +27,7 @@ struct TravelOptions {
     /// Times a pair of consecutive poses may be halved until the certified
     /// bound holds between them.
     int max_halvings = 8;
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    run::Deadline deadline;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;

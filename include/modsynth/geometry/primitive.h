@@ -5,7 +5,14 @@
 
 namespace modsynth::geometry {
 
+/// Every place that treats kinds apart switches over all of them with no
+/// default (the build has -Werror=switch), so a new kind is a compile error
+/// wherever it needs handling; docs/design.md lists those places.
 enum class PrimitiveKind { Line, Arc, Circle };
+
+/// After a switch over every PrimitiveKind: a value outside the enum is a
+/// broken invariant (std::logic_error).
+[[noreturn]] void invalid_kind(PrimitiveKind kind);
 
 /// A line segment, an arc or a full circle. Arcs and circles share one
 /// representation: a center, a radius, the polar angle of the start about the
@@ -27,6 +34,8 @@ Primitive make_line(const Vec2& start, const Vec2& end);
 /// projected onto the circle through start. start == end gives a full circle.
 Primitive make_arc(const Vec2& start, const Vec2& end, const Vec2& center, bool ccw);
 Primitive make_circle(const Vec2& start, const Vec2& center, bool ccw);
+/// The same primitive moved by `offset`.
+Primitive translate(const Primitive& p, const Vec2& offset);
 
 double length(const Primitive& p);
 /// Point at arc length s from the start (s is clamped to [0, length]).

@@ -40,8 +40,8 @@ nlohmann::json to_json(const synth::Solution& solution);
 nlohmann::json to_json(const kinematics::DhChain& chain);
 /// The witnesses of an obstacle proof, as in "explanation.separation" and
 /// "explanation.geodesic" (formats.md).
-nlohmann::json to_json(const synth::SeparationWitness& witness);
-nlohmann::json to_json(const synth::GeodesicWitness& witness);
+nlohmann::json to_json(const prove::SeparationWitness& witness);
+nlohmann::json to_json(const prove::GeodesicWitness& witness);
 /// Adds to `out` the keys "separation" and "geodesic" that `e` carries.
 void add_witnesses(const synth::Explanation& e, nlohmann::json& out);
 /// Writes the document atomically; throws std::runtime_error naming the

@@ -38,8 +38,9 @@ struct Point {
 
 Point constant(const Vec2& v);
 Point variable(int ix, int iy, const Vec2& v);
-/// Two new unbounded variables, started at v.
-Point new_point(QuadraticProgram& qp, const std::string& name, const Vec2& v);
+/// Two new unbounded variables, started at v; keyed as `key` with index 0
+/// (x) and 1 (y).
+Point new_point(QuadraticProgram& qp, const std::string& name, const Vec2& v, Key key = {});
 
 Quadratic squared_distance(const Point& a, const Point& b);
 /// cross(e - o, p - o).
@@ -52,13 +53,15 @@ Quadratic scaled(const Quadratic& q, double k);
 /// The unit direction from c to the nearest point of segment ab.
 Vec2 away_from(const Vec2& c, const Vec2& a, const Vec2& b);
 
-/// |a - b| = x[r] (paper eq. 11).
-void add_link(QuadraticProgram& qp, const Point& a, const Point& b, int r, const std::string& tag);
+/// |a - b| = x[r] (paper eq. 11). `tag` and the role, place, link and
+/// obstacle of `key` say what for (a key without a role: unkeyed).
+void add_link(QuadraticProgram& qp, const Point& a, const Point& b, int r, const std::string& tag,
+              Key key = {});
 
 /// Keeps segment ab at least `need` from c: some unit n (two new variables)
 /// with n . (a - c) >= need and n . (b - c) >= need, so that the line
-/// through c along n's normal separates them.
+/// through c along n's normal separates them. Tagged as add_link.
 void add_keep_apart(QuadraticProgram& qp, const Point& a, const Point& b, const Point& c,
-                    double need, const std::string& tag);
+                    double need, const std::string& tag, Key key = {});
 
 }  // namespace modsynth::nlp::bilinear

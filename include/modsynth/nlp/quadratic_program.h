@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include <modsynth/nlp/key.h>
+
 namespace modsynth::nlp {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -44,8 +46,10 @@ struct Quadratic {
 
 class QuadraticProgram {
 public:
-    int add_variable(double lower, double upper, double start, std::string name);
-    int add_constraint(Quadratic g, double lower, double upper, std::string label);
+    /// `name` and `label` are for people; `key` is what a warm start
+    /// matches by (warm_start.h; unkeyed ones start afresh).
+    int add_variable(double lower, double upper, double start, std::string name, Key key = {});
+    int add_constraint(Quadratic g, double lower, double upper, std::string label, Key key = {});
     void set_objective(Quadratic f) { objective_ = std::move(f); }
 
     int num_variables() const { return static_cast<int>(lower_.size()); }
@@ -56,6 +60,8 @@ public:
     void set_start(int i, double v) { start_[i] = v; }
     const std::string& variable_name(int i) const { return names_[i]; }
     const std::string& constraint_label(int m) const { return labels_[m]; }
+    const Key& variable_key(int i) const { return variable_keys_[i]; }
+    const Key& constraint_key(int m) const { return constraint_keys_[m]; }
     double constraint_lower(int m) const { return c_lower_[m]; }
     double constraint_upper(int m) const { return c_upper_[m]; }
     const Quadratic& constraint(int m) const { return constraints_[m]; }
@@ -95,6 +101,7 @@ private:
     std::vector<Quadratic> constraints_;
     std::vector<double> c_lower_, c_upper_;
     std::vector<std::string> labels_;
+    std::vector<Key> variable_keys_, constraint_keys_;
     Quadratic objective_;
     std::vector<Entry> jac_, hess_;
     // Per constraint, where each of its linear and quadratic terms lands.

@@ -7,6 +7,7 @@
 #include <modsynth/nlp/progress_watch.h>
 #include <modsynth/nlp/quadratic_program.h>
 #include <modsynth/nlp/smooth_program.h>
+#include <modsynth/run/deadline.h>
 
 namespace modsynth::nlp {
 
@@ -14,9 +15,9 @@ struct SolverOptions {
     /// Seconds of CPU time (Ipopt's max_cpu_time); callers shorten it to
     /// what is left of their own budget.
     double time_limit = 10.0;
-    /// Seconds of wall-clock time, checked after each iteration: a caller's
-    /// deadline (the CPU-time limit above is Ipopt's own measure).
-    double wall_limit = kInfinity;
+    /// The caller's deadline on the wall clock, checked after each
+    /// iteration (the CPU-time limit above is Ipopt's own measure).
+    run::Deadline deadline;
     /// When a solve is doomed (diverging duals, a stalled primal
     /// infeasibility) and is stopped before its limits.
     ProgressWatchOptions watch;

@@ -14,9 +14,10 @@ struct WarmStart {
     std::vector<double> x, lambda, z_lower, z_upper;
 };
 
-/// A solution of `from` as a start of `to`, matched by variable name and by
-/// constraint label (the k-th constraint of a label to the k-th). What `to`
-/// adds starts at its own start values with zero multipliers.
+/// A solution of `from` as a start of `to`, matched by variable key and by
+/// constraint key (key.h; the k-th constraint of a key to the k-th). What
+/// `to` adds, and whatever has no key, starts at its own start values with
+/// zero multipliers.
 WarmStart carry_over(const QuadraticProgram& from, const SolverResult& solved,
                      const QuadraticProgram& to);
 

@@ -5,12 +5,13 @@
 // constraint family is guarded by an assumption literal named after the
 // task part it comes from, so an unsat answer is a proof of infeasibility
 // whose core reads as an explanation.
-#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <modsynth/run/deadline.h>
 #include <modsynth/smt/skeleton.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::smt {
@@ -66,7 +67,7 @@ struct FrontStageOptions {
     /// No work past this instant: encoding stops (the check then answers
     /// Unknown), every check's timeout ends here, and core minimisation
     /// returns the core it has.
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    run::Deadline deadline;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;
@@ -95,10 +96,10 @@ public:
     /// After Unsat (before any block): the task parts whose constraints
     /// conflict, as named in formats.md, shrunk to a minimal set by deletion.
     /// Empty if the conflict cannot be re-established.
-    std::vector<std::string> minimal_core();
+    std::vector<task::TaskPart> minimal_core();
     /// True when these task parts alone are proved to conflict (unsat with
     /// only their literals assumed); false when satisfiable or undecided.
-    bool conflicts(const std::vector<std::string>& parts);
+    bool conflicts(const std::vector<task::TaskPart>& parts);
     /// The encoding as an SMT-LIB2 script (assumption literals as named
     /// Booleans), for regression suites.
     std::string smtlib() const;

@@ -2,11 +2,11 @@
 // Initial guesses for the refinement: a cheap, deterministic random search
 // over 2-joint robots on one skeleton (elbow sign and base region) that
 // scores each candidate by its worst margin at points along the path.
-#include <chrono>
 #include <string>
 #include <vector>
 
 #include <modsynth/kinematics/robot.h>
+#include <modsynth/run/deadline.h>
 #include <modsynth/smt/skeleton.h>
 #include <modsynth/task/task.h>
 
@@ -74,9 +74,8 @@ double path_margin(const task::Task& task, const kinematics::Robot& robot, doubl
 /// shortest first, and no further than the `count`-th distinct clear one;
 /// scoring stops at the deadline (those scored by then are kept). Throws std::invalid_argument
 /// when the options are not valid.
-std::vector<ScoredRobot> initial_guesses(
-    const task::Task& task, const smt::Skeleton& skeleton, int count, unsigned seed,
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max(),
-    const InitialGuessOptions& options = {});
+std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skeleton& skeleton,
+                                         int count, unsigned seed, run::Deadline deadline = {},
+                                         const InitialGuessOptions& options = {});
 
 }  // namespace modsynth::synth

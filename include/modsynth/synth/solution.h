@@ -8,19 +8,20 @@
 #include <modsynth/hardware/selection.h>
 #include <modsynth/kinematics/dh_chain.h>
 #include <modsynth/kinematics/robot.h>
+#include <modsynth/prove/wall_witness.h>
 #include <modsynth/synth/status.h>
-#include <modsynth/synth/wall_witness.h>
+#include <modsynth/task/part.h>
 #include <modsynth/verify/verifier.h>
 
 namespace modsynth::synth {
 
 struct Explanation {
     std::string message;
-    std::vector<std::string> core;  ///< task parts, named as in formats.md
+    std::vector<task::TaskPart> core;  ///< the task parts involved
     /// The data of an obstacle proof, when the task was proved infeasible
     /// that way (formats.md, "explanation.separation", ".geodesic").
-    std::optional<SeparationWitness> separation;
-    std::optional<GeodesicWitness> geodesic;
+    std::optional<prove::SeparationWitness> separation;
+    std::optional<prove::GeodesicWitness> geodesic;
 };
 
 struct Solution {

@@ -1,13 +1,14 @@
 #pragma once
 // The pipeline: Z3 front stage (skeleton, proof of infeasibility), Ipopt
 // refinement with counterexamples from the certified verification, control.
-#include <functional>
 #include <string>
+#include <vector>
 
 #include <modsynth/control/motion.h>
 #include <modsynth/control/retime.h>
+#include <modsynth/prove/branch_and_bound.h>
+#include <modsynth/run/progress.h>
 #include <modsynth/smt/front_stage.h>
-#include <modsynth/synth/branch_and_bound.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/synth/swept_choice.h>
@@ -42,8 +43,8 @@ struct SynthesisOptions {
     /// started, so that a walled-in task is answered within 2 s in all (the
     /// shrinking took every second it was given). `explain` shrinks a core
     /// with its own, longer budget.
-    BranchAndBoundOptions branch_and_bound = [] {
-        BranchAndBoundOptions o;
+    prove::BranchAndBoundOptions branch_and_bound = [] {
+        prove::BranchAndBoundOptions o;
         o.core_time_limit = 0.75 * o.time_limit;
         return o;
     }();
@@ -126,8 +127,8 @@ struct SynthesisOptions {
     /// The model of the swept area the refinement starts each guess from,
     /// and so the order models are tried in (swept_choice.h).
     SweptChoice swept = SweptChoice::Auto;
-    /// Called with one line per stage event (may be empty).
-    std::function<void(const std::string&)> progress;
+    /// Told of every step (may be empty).
+    run::ProgressSink progress;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;
@@ -152,6 +153,9 @@ struct SynthesisStats {
     /// not converge, or its candidate failed verification and the rounds
     /// went on with lines.
     int fallbacks = 0;
+    /// What the user should be told besides the answer (e.g. that no
+    /// modules were chosen, and why).
+    std::vector<std::string> notes;
     /// How the returned motion was timed (solved only): its duration, its
     /// stops, where the EE runs slower than options.retime.ee_speed.
     control::RetimeStats timing;

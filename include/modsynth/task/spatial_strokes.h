@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <string>
 
+#include <modsynth/task/part.h>
 #include <modsynth/task/spatial_task.h>
 
 namespace modsynth::task {
@@ -43,11 +44,17 @@ inline bool has_transition_after(const SpatialTask& task, int j) {
     return j + 1 < static_cast<int>(task.trajectory.size()) && !ends_stroke(task, j);
 }
 
+/// Primitive j of task.trajectory as a part (task/part.h), named as the
+/// document names it, as TaskPart::primitive names a planar one.
+inline TaskPart primitive_part(const SpatialTask& task, int j) {
+    if (!has_strokes(task)) return TaskPart::trajectory(j);
+    const int s = stroke_of(task, j);
+    return TaskPart::stroke_primitive(s, j - stroke_first(task, s));
+}
+
 /// "trajectory[j]" or "strokes[s][k]".
 inline std::string part_name(const SpatialTask& task, int j) {
-    if (!has_strokes(task)) return "trajectory[" + std::to_string(j) + "]";
-    const int s = stroke_of(task, j);
-    return "strokes[" + std::to_string(s) + "][" + std::to_string(j - stroke_first(task, s)) + "]";
+    return to_string(primitive_part(task, j));
 }
 
 }  // namespace modsynth::task

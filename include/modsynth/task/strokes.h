@@ -6,9 +6,9 @@
 // point; between strokes the arm travels freely.
 #include <algorithm>
 #include <cstddef>
-#include <optional>
 #include <string>
 
+#include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::task {
@@ -57,46 +57,10 @@ inline bool has_transition_after(const Task& task, int j) {
     return j + 1 < static_cast<int>(task.trajectory.size()) && !ends_stroke(task, j);
 }
 
-/// How the document names primitive j: "trajectory[j]" or "strokes[s][k]".
+/// How the document names primitive j: "trajectory[j]" or "strokes[s][k]"
+/// (task/part.h makes it a value).
 inline std::string part_name(const Task& task, int j) {
-    if (!has_strokes(task)) return "trajectory[" + std::to_string(j) + "]";
-    const int s = stroke_of(task, j);
-    return "strokes[" + std::to_string(s) + "][" + std::to_string(j - stroke_first(task, s)) + "]";
-}
-
-/// Whether a part name names a primitive ("trajectory[..." or "strokes[...").
-inline bool names_primitive(const std::string& part) {
-    return part.rfind("trajectory[", 0) == 0 || part.rfind("strokes[", 0) == 0;
-}
-
-/// The primitive a part name (as part_name writes it, possibly followed by
-/// ".key") names, as an index into task.trajectory; std::nullopt when it
-/// names none of this task's primitives.
-inline std::optional<int> primitive_of_part(const Task& task, const std::string& part) {
-    auto number = [&](std::size_t& at) -> std::optional<int> {
-        if (at >= part.size() || part[at] != '[') return std::nullopt;
-        std::size_t end = at + 1;
-        long value = 0;
-        while (end < part.size() && part[end] >= '0' && part[end] <= '9' && value < 1'000'000'000)
-            value = value * 10 + (part[end++] - '0');
-        if (end == at + 1 || end >= part.size() || part[end] != ']') return std::nullopt;
-        at = end + 1;
-        return static_cast<int>(value);
-    };
-    const int m = static_cast<int>(task.trajectory.size());
-    if (!has_strokes(task) && part.rfind("trajectory", 0) == 0) {
-        std::size_t at = 10;
-        const auto j = number(at);
-        if (j && *j < m) return j;
-    } else if (has_strokes(task) && part.rfind("strokes", 0) == 0) {
-        std::size_t at = 7;
-        const auto s = number(at);
-        if (!s || *s >= stroke_count(task)) return std::nullopt;
-        const auto k = number(at);
-        if (k && *k <= stroke_last(task, *s) - stroke_first(task, *s))
-            return primitive_index(task, *s, *k);
-    }
-    return std::nullopt;
+    return to_string(TaskPart::primitive(task, j));
 }
 
 }  // namespace modsynth::task

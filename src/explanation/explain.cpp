@@ -1,0 +1,56 @@
+#include <modsynth/explanation/explain.h>
+
+#include <algorithm>
+
+#include <modsynth/run/stopwatch.h>
+#include <modsynth/synth/synthesizer.h>
+#include <modsynth/text/option_check.h>
+
+namespace modsynth::explanation {
+
+bool ExplainOptions::IsValid(std::string* error) const {
+    return text::OptionCheck("ExplainOptions", error)
+        .at_least("time_limit", time_limit, 0.0)
+        .greater("solve_seconds", solve_seconds, 0.0)
+        .greater("proof_seconds", proof_seconds, 0.0)
+        .ok();
+}
+
+Explanation explain(const task::Task& task, const ExplainOptions& options) {
+    text::require_valid(options);
+    const run::Stopwatch clock;
+    const run::Deadline deadline = run::Deadline::in(options.time_limit);
+    const auto left = [&] { return std::max(0.0, deadline.remaining()); };
+    const auto say = [&](run::Stage stage, const char* message) {
+        if (options.progress) options.progress({stage, message, clock.seconds()});
+    };
+    Explanation out;
+    say(run::Stage::Proofs, "proving infeasibility");
+    const InfeasibilityProof proof =
+        prove_infeasible(task, std::min(options.proof_seconds, left()));
+    if (!proof.proved) {
+        // Not proved infeasible: say what a full run finds.
+        say(run::Stage::Search, "solving the task");
+        synth::SynthesisOptions o;
+        o.time_limit = left();
+        const synth::Solution s = synth::synthesize(task, o);
+        out.status = s.status;
+        out.message = unproved_message(proof, s);
+        out.core = s.explanation.core;
+        out.separation = s.explanation.separation;
+        out.geodesic = s.explanation.geodesic;
+        return out;
+    }
+    out.proved = true;
+    out.status = synth::Status::Infeasible;
+    out.message = proved_message(proof);
+    out.core = proof.core;
+    out.separation = proof.separation;
+    out.geodesic = proof.geodesic;
+    if (options.proved) options.proved(out);
+    say(run::Stage::Explanation, "looking for the smallest changes");
+    out.suggestions = suggest_relaxations(task, proof.core, options.solve_seconds, left());
+    return out;
+}
+
+}  // namespace modsynth::explanation

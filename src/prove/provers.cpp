@@ -1,0 +1,31 @@
+#include <modsynth/prove/provers.h>
+
+#include <modsynth/prove/conflict_text.h>
+#include <modsynth/prove/obstacle_proof.h>
+#include <modsynth/prove/reach_proof.h>
+
+namespace modsynth::prove {
+
+std::vector<Prover> provers(const BranchAndBoundOptions& two_joint) {
+    return {
+        {"reach",
+         [](const task::Task& task, const run::Deadline&) -> std::optional<Proof> {
+             auto core = out_of_reach_core(task);
+             if (!core) return std::nullopt;
+             Proof proof;
+             proof.message = describe_conflict(task, *core);
+             proof.core = std::move(*core);
+             return proof;
+         }},
+        {"obstacles", [](const task::Task& task,
+                         const run::Deadline&) { return prove_obstacle_infeasible(task); }},
+        {"obstacles",
+         [two_joint](const task::Task& task,
+                     const run::Deadline& deadline) -> std::optional<Proof> {
+             if (!(two_joint.time_limit > 0.0)) return std::nullopt;
+             return prove_two_joint_infeasible(task, two_joint, deadline);
+         }},
+    };
+}
+
+}  // namespace modsynth::prove

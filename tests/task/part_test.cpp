@@ -1,0 +1,88 @@
+#include <modsynth/task/part.h>
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include <modsynth/task/spatial_strokes.h>
+#include <modsynth/task/strokes.h>
+
+using namespace modsynth;
+using task::RobotKey;
+using task::TaskPart;
+
+TEST_CASE("task parts are written as formats.md names them and read back", "[task]") {
+    const std::vector<std::pair<TaskPart, std::string>> named = {
+        {TaskPart::trajectory(3), "trajectory[3]"},
+        {TaskPart::stroke_primitive(1, 0), "strokes[1][0]"},
+        {TaskPart::obstacle(12), "obstacles[12]"},
+        {TaskPart::base_regions(), "base_regions"},
+        {TaskPart::base_region(0), "base_regions[0]"},
+        {TaskPart::robot(RobotKey::MaxLinkLength), "robot.max_link_length"},
+        {TaskPart::robot(RobotKey::Modules, 1), "robot.modules[1]"},
+        // Spatial tasks name the same kinds of part.
+        {TaskPart::trajectory(2).with_field("normal"), "trajectory[2].normal"},
+        {TaskPart::robot(RobotKey::Twists), "robot.twists"},
+        {TaskPart::robot(RobotKey::ToolLength), "robot.tool_length"},
+        {TaskPart::obstacle(1).with_field("b"), "obstacles[1].b"},
+        {TaskPart::robot(RobotKey::JointLimits).with_field("velocity[2]"),
+         "robot.joint_limits.velocity[2]"},
+    };
+    for (const auto& [part, name] : named) {
+        INFO(name);
+        CHECK(task::to_string(part) == name);
+        const auto back = task::parse_task_part(name);
+        REQUIRE(back);
+        CHECK(*back == part);
+    }
+}
+
+TEST_CASE("names that are no task part are refused", "[task]") {
+    for (const char* name : {"", "trajectory", "trajectory[]", "trajectory[-1]", "trajectory[01]",
+                             "trajectory[1", "trajectory[1]x", "trajectory[1].", "strokes[1]",
+                             "obstacles[a]", "base_regionsX", "robot.", "robot.wings", "robot.dofs",
+                             "robot.modules[", "robot.dof.", "trajectory[99999999999]"}) {
+        INFO(name);
+        CHECK_FALSE(task::parse_task_part(name));
+    }
+}
+
+TEST_CASE("a part holds its entries and its keys", "[task]") {
+    CHECK(TaskPart::base_regions().holds(TaskPart::base_region(2)));
+    CHECK(TaskPart::trajectory(2).holds(TaskPart::trajectory(2).with_field("normal")));
+    CHECK(TaskPart::obstacle(1).holds(TaskPart::obstacle(1)));
+    CHECK_FALSE(TaskPart::obstacle(1).holds(TaskPart::obstacle(10)));
+    CHECK_FALSE(TaskPart::trajectory(2).with_field("normal").holds(TaskPart::trajectory(2)));
+    CHECK_FALSE(TaskPart::base_region(0).holds(TaskPart::base_regions()));
+    CHECK_FALSE(TaskPart::trajectory(0).holds(TaskPart::stroke_primitive(0, 0)));
+}
+
+TEST_CASE("a primitive part names its index in the task, as the document numbers it", "[task]") {
+    task::Task t;
+    for (int j = 0; j < 3; ++j)
+        t.trajectory.push_back(geometry::make_line({0.1 * j, 0.5}, {0.1 * j + 0.1, 0.5}));
+    CHECK(TaskPart::primitive(t, 2) == TaskPart::trajectory(2));
+    CHECK(task::primitive_index(t, TaskPart::trajectory(2)) == 2);
+    CHECK_FALSE(task::primitive_index(t, TaskPart::trajectory(3)));
+    CHECK_FALSE(task::primitive_index(t, TaskPart::obstacle(0)));
+    t.stroke_starts = {0, 2};
+    CHECK(TaskPart::primitive(t, 2) == TaskPart::stroke_primitive(1, 0));
+    CHECK(task::part_name(t, 1) == "strokes[0][1]");
+    CHECK(task::primitive_index(t, TaskPart::stroke_primitive(1, 0)) == 2);
+    CHECK_FALSE(task::primitive_index(t, TaskPart::stroke_primitive(1, 1)));
+    CHECK_FALSE(task::primitive_index(t, TaskPart::trajectory(0)));
+}
+
+TEST_CASE("a spatial task names its primitives as the same parts", "[task]") {
+    task::SpatialTask t;
+    for (int j = 0; j < 3; ++j)
+        t.trajectory.push_back(geometry::Line3{geometry::Vec3(0.1 * j, 0.5, 0.2),
+                                               geometry::Vec3(0.1 * j + 0.1, 0.5, 0.2)});
+    CHECK(task::primitive_part(t, 2) == TaskPart::trajectory(2));
+    CHECK(task::part_name(t, 2) == "trajectory[2]");
+    CHECK(task::to_string(task::primitive_part(t, 2).with_field("normal")) ==
+          "trajectory[2].normal");
+    t.stroke_starts = {0, 2};
+    CHECK(task::primitive_part(t, 2) == TaskPart::stroke_primitive(1, 0));
+    CHECK(task::part_name(t, 1) == "strokes[0][1]");
+}
