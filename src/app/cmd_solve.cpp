@@ -131,7 +131,8 @@ int run_solve(const SolveArgs& a) {
     io::TaskDocument doc = io::load_task_document(a.task);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
         return run_spatial_solve(
-            *spatial, {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed, a.quiet, a.exports},
+            *spatial,
+            {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed, a.quiet, a.exports},
             clock.started());
     const task::Task task = std::get<task::Task>(std::move(doc));
     const auto elapsed = [&] { return clock.seconds(); };

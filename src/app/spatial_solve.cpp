@@ -9,6 +9,7 @@
 #include <modsynth/io/solution_io.h>
 #include <modsynth/synth/spatial_module_choice.h>
 #include <modsynth/synth/spatial_synthesizer.h>
+#include <modsynth/task/part.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
@@ -42,7 +43,8 @@ void print_summary(const task::SpatialTask& task, const synth::Solution& solutio
         std::printf("  %s\n", solution.explanation.message.c_str());
         if (!solution.explanation.core.empty()) {
             std::printf("  core:");
-            for (const auto& c : solution.explanation.core) std::printf(" %s", c.c_str());
+            for (const auto& c : solution.explanation.core)
+                std::printf(" %s", task::to_string(c).c_str());
             std::printf("\n");
         }
         return;

@@ -11,6 +11,7 @@
 #include <modsynth/control/spatial_samples.h>
 #include <modsynth/kinematics/dh_chain.h>
 #include <modsynth/output/recertify.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
 
@@ -52,7 +53,7 @@ std::string vec(const Vec3& p) {
     return "[" + num(p.x()) + "," + num(p.y()) + "," + num(p.z()) + "]";
 }
 
-bool in_core(const synth::Solution& s, const std::string& part) {
+bool in_core(const synth::Solution& s, const task::TaskPart& part) {
     return s.status != synth::Status::Solved &&
            std::find(s.explanation.core.begin(), s.explanation.core.end(), part) !=
                s.explanation.core.end();
@@ -83,20 +84,20 @@ std::vector<Vec3> polyline(const geometry::Primitive3& p) {
 std::string task_data(const task::SpatialTask& task, const synth::Solution& s, Bounds& b) {
     std::string prims;
     for (std::size_t j = 0; j < task.trajectory.size(); ++j) {
-        const std::string part = task::part_name(task, static_cast<int>(j));
         std::string pts;
         for (const Vec3& p : polyline(task.trajectory[j])) {
             pts += (pts.empty() ? "" : ",") + vec(p);
             b.add(p);
         }
         prims += std::string(j ? "," : "") + "{\"i\":" + std::to_string(j) + ",\"col\":\"" +
-                 plot::primitive_colour(static_cast<int>(j)) +
-                 "\",\"core\":" + (in_core(s, part) ? "true" : "false") + ",\"pts\":[" + pts + "]}";
+                 plot::primitive_colour(static_cast<int>(j)) + "\",\"core\":" +
+                 (in_core(s, task::primitive_part(task, static_cast<int>(j))) ? "true" : "false") +
+                 ",\"pts\":[" + pts + "]}";
     }
     std::string obstacles;
     for (std::size_t i = 0; i < task.obstacles.size(); ++i) {
         const std::string core =
-            in_core(s, "obstacles[" + std::to_string(i) + "]") ? "true" : "false";
+            in_core(s, task::TaskPart::obstacle(static_cast<int>(i))) ? "true" : "false";
         std::string o = std::visit(
             [&](const auto& x) -> std::string {
                 using T = std::decay_t<decltype(x)>;
@@ -119,7 +120,7 @@ std::string task_data(const task::SpatialTask& task, const synth::Solution& s, B
         obstacles += std::string(i ? "," : "") + o + ",\"core\":" + core + "}";
     }
     std::string regions;
-    const std::string region_core = in_core(s, "base_regions") ? "true" : "false";
+    const std::string region_core = in_core(s, task::TaskPart::base_regions()) ? "true" : "false";
     for (std::size_t i = 0; i < task.base_regions.size(); ++i) {
         const auto& r = task.base_regions[i];
         b.add(r.min);
@@ -268,9 +269,11 @@ std::string explanation(const synth::Solution& s) {
         out +=
             "<p>The task parts that together cannot be satisfied (red in the view):</p>\n"
             "<ul id=\"core\">\n";
-        for (const auto& part : s.explanation.core)
-            out += "<li class=\"core-part\" data-part=\"" + escape(part) + "\"><code>" +
-                   escape(part) + "</code></li>\n";
+        for (const auto& part : s.explanation.core) {
+            const std::string name = task::to_string(part);
+            out += "<li class=\"core-part\" data-part=\"" + escape(name) + "\"><code>" +
+                   escape(name) + "</code></li>\n";
+        }
         out += "</ul>\n";
     }
     return out + "</section>\n";

@@ -5,13 +5,16 @@
 #include <cmath>
 #include <optional>
 #include <set>
+#include <stdexcept>
 
 #include <modsynth/control/joint_limits.h>
 #include <modsynth/control/path_corners.h>
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/nlp/solver.h>
+#include <modsynth/run/deadline.h>
 #include <modsynth/synth/design_choice.h>
 #include <modsynth/synth/spatial_reach_proof.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -19,6 +22,18 @@
 
 namespace modsynth::synth {
 namespace {
+
+// The spatial front stage and reach proof name their assumptions as the
+// document does; a core holds them as parts.
+std::vector<task::TaskPart> parts_of(const std::vector<std::string>& names) {
+    std::vector<task::TaskPart> parts;
+    for (const auto& name : names) {
+        const std::optional<task::TaskPart> part = task::parse_task_part(name);
+        if (!part) throw std::logic_error("a spatial core names no task part: " + name);
+        parts.push_back(*part);
+    }
+    return parts;
+}
 
 using Clock = std::chrono::steady_clock;
 using geometry::Vec3;
@@ -120,7 +135,7 @@ Solution Search::run() {
         stats_.front_seconds += seconds_since(t_reach);
         out.status = Status::Infeasible;
         out.explanation.message = "Proved infeasible: " + describe_spatial_reach(task_, *core);
-        out.explanation.core = std::move(*core);
+        out.explanation.core = parts_of(*core);
         say("reach: " + out.explanation.message);
         return out;
     }
@@ -243,7 +258,7 @@ Solution Search::run() {
         for (const auto& c : cores)
             for (const auto& part : c)
                 if (std::find(core.begin(), core.end(), part) == core.end()) core.push_back(part);
-        out.explanation.core = core;
+        out.explanation.core = parts_of(core);
         out.explanation.message =
             "Proved infeasible: no chain of " +
             std::string(dofs.size() > 1 ? "any allowed joint count" : "the allowed joint count") +
@@ -296,7 +311,7 @@ std::optional<Solution> Search::refine(const smt::SpatialSkeleton& skeleton,
         const nlp::SpatialFormulation f(problem);
         nlp::SolverOptions so;
         so.time_limit = std::min(opt_.solve_seconds, std::max(0.05, remaining()));
-        so.wall_limit = std::max(0.05, remaining());
+        so.deadline = run::Deadline::in(std::max(0.05, remaining()));
         so.max_iterations = opt_.solve_iterations;
         const nlp::SolverResult res = nlp::minimize(f, so);
         stats_.refine_seconds += seconds_since(t0);
