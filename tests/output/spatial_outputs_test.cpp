@@ -3,6 +3,8 @@
 // written together by write_exports as solve and export do.
 #include <catch2/catch.hpp>
 
+#include <modsynth/task/part.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -147,7 +149,9 @@ TEST_CASE("spatial report of an infeasible task names the core and draws no arm"
     s.task_name = c.task.name;
     s.status = synth::Status::Infeasible;
     s.explanation.message = "trajectory[0] <is> out of reach";
-    s.explanation.core = {"trajectory[0]", "obstacles[0]", "base_regions"};
+    s.explanation.core = {modsynth::task::TaskPart::trajectory(0),
+                          modsynth::task::TaskPart::obstacle(0),
+                          modsynth::task::TaskPart::base_regions()};
     const std::string html = output::html_report(c.task, s, {});
     check_self_contained(html);
     const auto data = scene_data(html);
