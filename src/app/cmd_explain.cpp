@@ -103,6 +103,8 @@ int run_explain(const ExplainArgs& a) {
         if (!a.json) std::printf("  - %s\n      then: %s\n", r.change.c_str(), r.outcome.c_str());
     }
     if (a.json) {
+        // A reader (the server's page) shows why there are none.
+        if (e.suggestions.empty()) out["note"] = "none found by changing one part alone";
         std::printf("%s\n",
                     out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
     } else if (e.suggestions.empty()) {
