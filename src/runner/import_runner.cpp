@@ -10,7 +10,7 @@
 #include <modsynth/task/input_error.h>
 #include <modsynth/text/format.h>
 
-#include "command.h"
+#include "exit_code.h"
 #include "imported_task.h"
 #include "process_pool.h"
 #include "temp_dir.h"
