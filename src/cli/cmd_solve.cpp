@@ -17,6 +17,7 @@
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/synth/module_choice.h>
 #include <modsynth/synth/solve.h>
+#include <modsynth/task/part_list.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
@@ -70,10 +71,7 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
     if (solution.status != synth::Status::Solved) {
         std::printf("  %s\n", solution.explanation.message.c_str());
         if (!solution.explanation.core.empty()) {
-            std::printf("  core:");
-            for (const auto& c : solution.explanation.core)
-                std::printf(" %s", task::to_string(c).c_str());
-            std::printf("\n");
+            std::printf("  core: %s\n", task::to_short_list(solution.explanation.core).c_str());
         }
         return;
     }

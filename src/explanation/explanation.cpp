@@ -8,6 +8,7 @@
 
 #include <modsynth/explanation/wall_changes.h>
 #include <modsynth/prove/conflict_text.h>
+#include <modsynth/prove/loop_proof.h>
 #include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/prove/provers.h>
 #include <modsynth/run/deadline.h>
@@ -41,13 +42,16 @@ using task::TaskPart;
 
 // Front stage verdict over every allowed joint count: true when some count
 // is satisfiable (the conflict is gone) and no obstacle proof holds, false
-// when all are unsat or undecided.
+// when all are unsat or undecided (2 joints count as unsat where a loop of
+// the path winds round an obstacle, loop_proof.h).
 bool conflict_free(const task::Task& task, double time_limit, const run::Deadline& deadline) {
     if (prove_obstacle_infeasible(task)) return false;
     BranchAndBoundOptions bnb;
     bnb.time_limit = std::min(bnb.time_limit, time_limit);
     if (prove_two_joint_infeasible(task, bnb, deadline)) return false;
+    const bool two_joint_loop = prove::prove_two_joint_loop(task).has_value();
     for (int dof : task.robot.dof) {
+        if (dof == 2 && two_joint_loop) continue;
         smt::FrontStageOptions o;
         o.time_limit = time_limit;
         o.deadline = deadline;

@@ -1,6 +1,7 @@
 #include <modsynth/prove/provers.h>
 
 #include <modsynth/prove/conflict_text.h>
+#include <modsynth/prove/loop_proof.h>
 #include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/prove/reach_proof.h>
 
@@ -19,6 +20,11 @@ std::vector<Prover> provers(const BranchAndBoundOptions& two_joint) {
          }},
         {"obstacles", [](const task::Task& task,
                          const run::Deadline&) { return prove_obstacle_infeasible(task); }},
+        {"loop",
+         [](const task::Task& task, const run::Deadline&) -> std::optional<Proof> {
+             if (task.robot.dof != std::vector<int>{2}) return std::nullopt;
+             return prove_two_joint_loop(task);
+         }},
         {"obstacles",
          [two_joint](const task::Task& task,
                      const run::Deadline& deadline) -> std::optional<Proof> {

@@ -23,6 +23,7 @@
 #include <modsynth/nlp/solver.h>
 #include <modsynth/nlp/warm_start.h>
 #include <modsynth/prove/conflict_text.h>
+#include <modsynth/prove/loop_proof.h>
 #include <modsynth/prove/provers.h>
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/smt/common_core.h>
@@ -139,10 +140,15 @@ private:
     struct FrontStageVerdicts {
         /// The cores of the joint counts proved infeasible.
         std::vector<std::vector<task::TaskPart>> cores;
+        /// In words, the proofs of joint counts that the front stage cannot
+        /// check (a loop round an obstacle, for 2 joints); their cores are
+        /// in `cores` too.
+        std::vector<std::string> own_proofs;
         std::vector<smt::Skeleton> searched;  ///< every skeleton tried, for the retries
         bool all_unsat = true;                ///< every joint count proved infeasible
     };
     std::optional<Proof> find_proof();
+    bool ruled_out(int dof, FrontStageVerdicts& verdicts);
     std::optional<Solution> search_skeletons(FrontStageVerdicts& verdicts);
     Solution infeasible(Proof proof) const;
     Solution unknown(const std::vector<std::vector<task::TaskPart>>& cores) const;
@@ -197,6 +203,12 @@ Solution Search::run() {
         proof.core = smt::common_core(
             task_, verdicts.cores, std::max(0.1, std::min(opt_.explanation_seconds, remaining())));
         proof.message = describe_conflict(task_, proof.core);
+        // A core the front stage checked for every joint count speaks for
+        // itself; otherwise each joint count's own proof is said first.
+        if (!verdicts.own_proofs.empty() &&
+            std::none_of(verdicts.cores.begin(), verdicts.cores.end(),
+                         [&](const auto& c) { return c == proof.core; }))
+            proof.message = join(verdicts.own_proofs, " ") + " With more joints, " + proof.message;
         stats_.front_seconds += t0.seconds();
         return infeasible(std::move(proof));
     }
@@ -237,6 +249,7 @@ std::optional<Solution> Search::search_skeletons(FrontStageVerdicts& verdicts) {
             verdicts.all_unsat = false;
             break;
         }
+        if (ruled_out(dof, verdicts)) continue;
         const run::Stopwatch t0;
         smt::FrontStageOptions fo = opt_.front;
         fo.time_limit = std::min(opt_.front.time_limit, std::max(0.1, remaining()));
@@ -291,6 +304,37 @@ std::optional<Solution> Search::search_skeletons(FrontStageVerdicts& verdicts) {
         if (exhausted) say(run::Stage::Search, std::to_string(dof) + " joints: search exhausted");
     }
     return std::nullopt;
+}
+
+// A loop of the path round an obstacle (loop_proof.h) rules 2 joints out
+// with a proof, in microseconds, where the front stage would offer skeletons
+// whose every refinement runs a link through the obstacle. With more joints a
+// loop that is one primitive rules out only modsynth's motions, which keep
+// the proximal links still along a primitive: that is said, and is no proof.
+bool Search::ruled_out(int dof, FrontStageVerdicts& verdicts) {
+    const run::Stopwatch t0;
+    if (dof == 2) {
+        const auto loop = prove::loop_around_obstacle(task_);
+        stats_.front_seconds += t0.seconds();
+        if (!loop) return false;
+        prove::Proof proof = prove::two_joint_loop_proof(task_, *loop);
+        say(run::Stage::Proofs, "2 joints: proved infeasible, " + proof.message);
+        // Not the core's names: a loop may be thousands of primitives.
+        tried_.push_back("2 joints proved infeasible (" + prove::describe_loop(task_, *loop) + ")");
+        verdicts.own_proofs.push_back("with 2 joints, " + proof.message);
+        verdicts.cores.push_back(std::move(proof.core));
+        return true;
+    }
+    const auto loop = prove::loop_around_obstacle(task_, 1);
+    stats_.front_seconds += t0.seconds();
+    if (!loop) return false;
+    const std::string why = prove::describe_loop(task_, *loop) +
+                            ", and modsynth's motions keep the first " + std::to_string(dof - 2) +
+                            (dof == 3 ? " link" : " links") + " still along a primitive";
+    say(run::Stage::Search, std::to_string(dof) + " joints: not searched: " + why);
+    tried_.push_back(std::to_string(dof) + " joints not searched (" + why + ")");
+    verdicts.all_unsat = false;
+    return true;
 }
 
 Solution Search::infeasible(Proof proof) const {

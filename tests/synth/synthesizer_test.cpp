@@ -277,3 +277,37 @@ TEST_CASE("a search that finds nothing goes on to its time limit and never repea
     }
     CHECK(count > 4);
 }
+
+TEST_CASE("a circle round a post rules out 2 joints at once, and 3 joints are not searched",
+          "[synth][loop_proof]") {
+    task::Task t;
+    t.name = "circle round a post";
+    t.trajectory.push_back(geometry::make_circle({0.9, 0.0}, {0.6, 0.0}, true));
+    t.obstacles.push_back({{0.6, 0.0}, 0.05});
+    t.base_regions.push_back({{-0.01, -0.01}, {0.01, 0.01}});
+    t.robot.dof = {2, 3};
+    std::vector<std::string> lines;
+    synth::SynthesisOptions options;
+    options.progress = [&](const run::ProgressEvent& e) { lines.push_back(e.message); };
+    const synth::Solution s = synth::synthesize(t, options);
+    // 3 joints could turn link 1 aside only at a transition, and a circle
+    // has none: modsynth's motions cannot do it, which is no proof.
+    CHECK(s.status == synth::Status::Unknown);
+    CHECK_THAT(s.explanation.message,
+               Catch::Contains("2 joints proved infeasible (trajectory[0] is a closed loop") &&
+                   Catch::Contains("3 joints not searched"));
+    auto said = [&](const std::string& what) {
+        return std::count_if(lines.begin(), lines.end(), [&](const std::string& l) {
+            return l.find(what) != std::string::npos;
+        });
+    };
+    CHECK(said("2 joints: proved infeasible") == 1);
+    CHECK(said("front stage") == 0);  // neither joint count reached it
+    // With 2 joints only, it is the answer, with the loop's core.
+    t.robot.dof = {2};
+    const synth::Solution two = synth::synthesize(t, {});
+    REQUIRE(two.status == synth::Status::Infeasible);
+    CHECK(two.explanation.core ==
+          std::vector<task::TaskPart>{task::TaskPart::trajectory(0), task::TaskPart::obstacle(0),
+                                      task::TaskPart::robot(task::RobotKey::Dof)});
+}

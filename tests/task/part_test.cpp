@@ -1,4 +1,5 @@
 #include <modsynth/task/part.h>
+#include <modsynth/task/part_list.h>
 
 #include <catch2/catch.hpp>
 
@@ -85,4 +86,21 @@ TEST_CASE("a spatial task names its primitives as the same parts", "[task]") {
     t.stroke_starts = {0, 2};
     CHECK(task::primitive_part(t, 2) == TaskPart::stroke_primitive(1, 0));
     CHECK(task::part_name(t, 1) == "strokes[0][1]");
+}
+
+TEST_CASE("a list of parts for a person says a run of primitives by its ends", "[task]") {
+    using task::RobotKey;
+    std::vector<TaskPart> core;
+    for (int j = 0; j < 512; ++j) core.push_back(TaskPart::trajectory(j));
+    core.push_back(TaskPart::obstacle(0));
+    core.push_back(TaskPart::robot(RobotKey::Dof));
+    CHECK(task::to_short_list(core) == "trajectory[0] to trajectory[511] obstacles[0] robot.dof");
+    // Two in a row, a gap, another stroke, a field: each said.
+    CHECK(task::to_short_list({TaskPart::trajectory(3), TaskPart::trajectory(4),
+                               TaskPart::trajectory(6), TaskPart::stroke_primitive(1, 0),
+                               TaskPart::stroke_primitive(1, 1), TaskPart::stroke_primitive(1, 2),
+                               TaskPart::trajectory(7).with_field("normal")}) ==
+          "trajectory[3] trajectory[4] trajectory[6] strokes[1][0] to strokes[1][2] "
+          "trajectory[7].normal");
+    CHECK(task::to_short_list({}).empty());
 }

@@ -21,8 +21,9 @@ struct Prover {
 
 /// A primitive out of reach of the longest arm (reach_proof.h); a closed
 /// wall or a detour longer than any arm (obstacle_proof.h); for tasks of 2
-/// joints only, the branch and bound with `two_joint`'s options (skipped
-/// when its time_limit is 0).
+/// joints only, a loop of the path round an obstacle (loop_proof.h), then
+/// the branch and bound with `two_joint`'s options (skipped when its
+/// time_limit is 0).
 std::vector<Prover> provers(const BranchAndBoundOptions& two_joint);
 
 }  // namespace modsynth::prove
