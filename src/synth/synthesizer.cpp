@@ -28,6 +28,7 @@
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/smt/common_core.h>
 #include <modsynth/smt/front_stage.h>
+#include <modsynth/synth/blockers.h>
 #include <modsynth/synth/design_choice.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/text/format.h>
@@ -187,6 +188,7 @@ private:
     double certified_seconds_ = 0.0;
     /// By base region (-1: anywhere): the least farthest reach of the path.
     std::map<int, double> least_reach_;
+    Blockers blocked_;  ///< what stopped the candidates, for an unknown answer
 };
 
 Solution Search::run() {
@@ -361,7 +363,9 @@ Solution Search::unknown(const std::vector<std::vector<task::TaskPart>>& cores) 
     out.explanation.message =
         "No certified robot found" + std::string(out_of_time ? " within the time limit" : "") +
         (tried_.empty() ? std::string(": the time ran out before any robot was tried.")
-                        : ": " + join(tried_, "; ") + ".");
+                        : ": " + join(tried_, "; ") + ".") +
+        (blocked_.empty() ? std::string()
+                          : " What stopped the candidates: " + blocked_.describe(task_) + ".");
     for (const auto& c : cores)
         for (const auto& part : c)
             if (std::find(out.explanation.core.begin(), out.explanation.core.end(), part) ==
@@ -623,6 +627,7 @@ std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
         stats_.refine_seconds += t0.seconds();
         ++stats_.nlp_solves;
         if (!res.usable()) {
+            blocked_.not_converged(skeleton.dof);
             say(run::Stage::Refinement,
                 std::string("    ") + name +
                     text::format(": refinement did not converge in %d iterations, %.3f s (",
@@ -680,12 +685,14 @@ Verdict Search::judge(const kinematics::Robot& robot) {
         return verdict;
     }
     if (!motion && failure.travel) {
+        blocked_.no_travel(robot.dof(), failure.primitive);
         // Nothing along the path to learn from: the next guess may do.
         say(run::Stage::Verification, "    no clear travel: " + failure.message);
         stats_.verify_seconds += t0.seconds();
         return verdict;
     }
     if (!motion) {
+        blocked_.out_of_reach(robot.dof(), failure.primitive, failure.transition);
         say(run::Stage::Verification, "    out of reach at " + failure.message);
         if (failure.transition) {
             verdict.deeper_transitions = 1;
@@ -717,6 +724,14 @@ Verdict Search::judge(const kinematics::Robot& robot) {
                 out.certificate.min_clearance, out.certificate.min_self_clearance,
                 out.certificate.max_deviation));
         return verdict;
+    }
+    // Each obstacle (and the tool against the links) once per candidate.
+    std::set<int> blamed;
+    for (const auto& v : cert.violations) {
+        if (v.kind == verify::Violation::Kind::Clearance && blamed.insert(v.obstacle).second)
+            blocked_.obstacle(robot.dof(), v.obstacle, v.link, v.primitive);
+        if (v.kind == verify::Violation::Kind::SelfCollision && blamed.insert(-1).second)
+            blocked_.self_collision(robot.dof(), v.primitive);
     }
     std::set<std::pair<int, long>> seen;
     for (const auto& v : cert.violations) {
