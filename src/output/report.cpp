@@ -11,6 +11,7 @@
 #include "plot.h"
 #include "report_assets.h"
 #include "report_comparison.h"
+#include "report_figures.h"
 #include "report_layers.h"
 #include "report_timing.h"
 
@@ -18,21 +19,14 @@ namespace modsynth::output {
 namespace {
 
 using plot::escape;
+using namespace figures;
 using plot::Frame;
 
 constexpr double kPlotWidth = 900.0;
 constexpr double kPlotHeight = 720.0;
 
-std::string mm(double metres, const char* format = "%.1f") {
-    return text::format(format, 1000.0 * metres) + " mm";
-}
-
 std::string point_text(const geometry::Vec2& p) {
     return "(" + text::format("%.4f", p.x()) + ", " + text::format("%.4f", p.y()) + ") m";
-}
-
-std::string row(const char* id, const std::string& name, const std::string& value) {
-    return std::string("<tr id=\"") + id + "\"><th>" + name + "</th><td>" + value + "</td></tr>\n";
 }
 
 // ------------------------------------------------------------------ figures
@@ -53,42 +47,6 @@ std::string links_text(const kinematics::Robot& robot) {
     return s + " (total " + mm(robot.total_length()) + ")";
 }
 
-std::string margin_text(double metres, const char* what) {
-    return std::isfinite(metres) ? mm(metres, "%.2f") + " " + what : "nothing to check";
-}
-
-std::string stage_text(const ReportFigures& f) {
-    if (!f.front_seconds && !f.refine_seconds && !f.verify_seconds) {
-        return "n/a (a saved solution does not record them)";
-    }
-    const auto t = [](const std::optional<double>& s) {
-        return s ? text::format("%.3f s", *s) : std::string("n/a");
-    };
-    return "front stage " + t(f.front_seconds) + ", refinement " + t(f.refine_seconds) +
-           ", verification " + t(f.verify_seconds);
-}
-
-std::string certificate_rows(const synth::Solution& s, const ReportFigures& figures) {
-    const auto& c = s.certificate;
-    // Without a certificate these are only what the check found, not bounds.
-    const std::string prefix = c.ok ? "Certified " : "Uncertified ";
-    std::string out;
-    out += row("fig-clearance", prefix + "min. clearance",
-               margin_text(c.min_clearance, "beyond obstacle radius + link radius"));
-    out += row("fig-self-clearance", prefix + "self-collision margin",
-               margin_text(c.min_self_clearance, "beyond one link diameter"));
-    out += row("fig-deviation", "Max. EE deviation", mm(c.max_deviation, "%.3f") + " (bound)");
-    out += row("fig-joint-step", "Max. joint step", text::format("%.4f rad", c.max_joint_step));
-    if (!c.ok) {
-        out += row("fig-certificate", "Certificate",
-                   "<strong>not certified</strong>: " + escape(uncertified_reason(c)));
-    }
-    if (!figures.certificate_note.empty()) {
-        out += row("fig-certificate-note", "Certificate source", escape(figures.certificate_note));
-    }
-    return out;
-}
-
 std::string solved_figures(const task::Task& task, const synth::Solution& s,
                            const ReportFigures& figures) {
     const auto& r = s.robot;
@@ -100,18 +58,10 @@ std::string solved_figures(const task::Task& task, const synth::Solution& s,
     out += row(
         "fig-elbow", "Elbow",
         r.elbow > 0 ? "+1 (last joint bent counter-clockwise)" : "-1 (last joint bent clockwise)");
-    out += certificate_rows(s, figures);
+    out += certificate_rows(s, figures, "beyond obstacle radius + link radius");
     out += row("fig-samples", "Control",
                std::to_string(s.samples.size()) + " samples over " +
                    text::format("%.2f s", s.samples.back().t - s.samples.front().t));
-    out += row("stage-times", "Time per stage", stage_text(figures));
-    return out + "</table>\n";
-}
-
-std::string failed_figures(const synth::Solution& s, const ReportFigures& figures) {
-    std::string out = "<table id=\"figures\">\n";
-    out += row("fig-status", "Status", synth::to_string(s.status));
-    out += row("fig-core", "Parts in conflict", std::to_string(s.explanation.core.size()));
     out += row("stage-times", "Time per stage", stage_text(figures));
     return out + "</table>\n";
 }
@@ -207,23 +157,9 @@ std::string proof_text(const synth::Solution& s) {
 }
 
 std::string explanation(const task::Task& task, const synth::Solution& s) {
-    std::string out = "<section id=\"explanation\">\n<h2>";
-    out += s.status == synth::Status::Infeasible ? "Why no robot can do this task"
-                                                 : "Why no robot was found";
-    out += "</h2>\n<p id=\"explanation-message\">" + escape(s.explanation.message) + "</p>\n";
-    if (!s.explanation.core.empty()) {
-        out +=
-            "<p>The task parts that together cannot be satisfied (outlined in red):</p>\n"
-            "<ul id=\"core\">\n";
-        for (const auto& part : s.explanation.core) {
-            const std::string what = describe_part(task, part);
-            const std::string name = task::to_string(part);
-            out += "<li class=\"core-part\" data-part=\"" + escape(name) + "\"><code>" +
-                   escape(name) + "</code>" + (what.empty() ? "" : ": " + escape(what)) + "</li>\n";
-        }
-        out += "</ul>\n";
-    }
-    return out + proof_text(s) + "</section>\n";
+    return figures::explanation(
+        s, "outlined in red", [&](const task::TaskPart& part) { return describe_part(task, part); },
+        proof_text(s));
 }
 
 // ------------------------------------------------------------------- legend

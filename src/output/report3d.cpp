@@ -17,6 +17,7 @@
 
 #include "plot.h"
 #include "report_assets.h"
+#include "report_figures.h"
 #include "report_timing.h"
 
 namespace modsynth::output {
@@ -31,19 +32,14 @@ namespace {
 
 using geometry::Vec3;
 using plot::escape;
+using namespace figures;
 
-std::string mm(double metres, const char* format = "%.1f") {
-    return text::format(format, 1000.0 * metres) + " mm";
-}
 std::string deg(double radians) {
     return text::format("%.1f", radians * 180.0 / geometry::kPi) + "&deg;";
 }
 std::string point_text(const Vec3& p) {
     return "(" + text::format("%.4f", p.x()) + ", " + text::format("%.4f", p.y()) + ", " +
            text::format("%.4f", p.z()) + ") m";
-}
-std::string row(const char* id, const std::string& name, const std::string& value) {
-    return std::string("<tr id=\"") + id + "\"><th>" + name + "</th><td>" + value + "</td></tr>\n";
 }
 
 // -------------------------------------------------------------- scene data
@@ -184,20 +180,6 @@ std::string scene_data(const task::SpatialTask& task, const synth::Solution& s) 
 
 // ------------------------------------------------------------------ figures
 
-std::string margin_text(double metres, const char* what) {
-    return std::isfinite(metres) ? mm(metres, "%.2f") + " " + what : "nothing to check";
-}
-
-std::string stage_text(const ReportFigures& f) {
-    if (!f.front_seconds && !f.refine_seconds && !f.verify_seconds)
-        return "n/a (a saved solution does not record them)";
-    const auto t = [](const std::optional<double>& s) {
-        return s ? text::format("%.3f s", *s) : std::string("n/a");
-    };
-    return "front stage " + t(f.front_seconds) + ", refinement " + t(f.refine_seconds) +
-           ", verification " + t(f.verify_seconds);
-}
-
 std::string base_text(const task::SpatialTask& task, const Vec3& base) {
     for (std::size_t i = 0; i < task.base_regions.size(); ++i)
         if (task.base_regions[i].contains(base, 1e-9))
@@ -219,9 +201,6 @@ std::string dh_text(const kinematics::DhChain& chain) {
 std::string solved_figures(const task::SpatialTask& task, const synth::Solution& s,
                            const ReportFigures& figures) {
     const kinematics::DhChain& chain = *s.dh_robot;
-    const auto& c = s.certificate;
-    // Without a certificate these are only what the check found, not bounds.
-    const std::string prefix = c.ok ? "Certified " : "Uncertified ";
     std::string out = "<table id=\"figures\">\n";
     out += row("fig-status", "Status", synth::to_string(s.status));
     out += row("fig-dof", "Joints (DOF)", std::to_string(chain.dof()));
@@ -229,17 +208,7 @@ std::string solved_figures(const task::SpatialTask& task, const synth::Solution&
     out += row("fig-base", "Base", base_text(task, chain.base));
     out += row("fig-length", "Chain length", mm(chain.total_length()) + " (sum of a and |d|)");
     if (task.robot.tool_length > 0.0) out += row("fig-tool", "Tool", mm(task.robot.tool_length));
-    out += row("fig-clearance", prefix + "min. clearance",
-               margin_text(c.min_clearance, "beyond obstacle + half the link diameter"));
-    out += row("fig-self-clearance", prefix + "self-collision margin",
-               margin_text(c.min_self_clearance, "beyond one link diameter"));
-    out += row("fig-deviation", "Max. EE deviation", mm(c.max_deviation, "%.3f") + " (bound)");
-    out += row("fig-joint-step", "Max. joint step", text::format("%.4f rad", c.max_joint_step));
-    if (!c.ok)
-        out += row("fig-certificate", "Certificate",
-                   "<strong>not certified</strong>: " + escape(uncertified_reason(c)));
-    if (!figures.certificate_note.empty())
-        out += row("fig-certificate-note", "Certificate source", escape(figures.certificate_note));
+    out += certificate_rows(s, figures, "beyond obstacle + half the link diameter");
     if (s.modules)
         out += row("fig-modules", "Modules",
                    (s.modules->checked && !s.modules->carried() ? "<strong>overloaded</strong>: "
@@ -252,31 +221,9 @@ std::string solved_figures(const task::SpatialTask& task, const synth::Solution&
     return out + "</table>\n";
 }
 
-std::string failed_figures(const synth::Solution& s, const ReportFigures& figures) {
-    std::string out = "<table id=\"figures\">\n";
-    out += row("fig-status", "Status", synth::to_string(s.status));
-    out += row("fig-core", "Parts in conflict", std::to_string(s.explanation.core.size()));
-    out += row("stage-times", "Time per stage", stage_text(figures));
-    return out + "</table>\n";
-}
-
 std::string explanation(const synth::Solution& s) {
-    std::string out = "<section id=\"explanation\">\n<h2>";
-    out += s.status == synth::Status::Infeasible ? "Why no robot can do this task"
-                                                 : "Why no robot was found";
-    out += "</h2>\n<p id=\"explanation-message\">" + escape(s.explanation.message) + "</p>\n";
-    if (!s.explanation.core.empty()) {
-        out +=
-            "<p>The task parts that together cannot be satisfied (red in the view):</p>\n"
-            "<ul id=\"core\">\n";
-        for (const auto& part : s.explanation.core) {
-            const std::string name = task::to_string(part);
-            out += "<li class=\"core-part\" data-part=\"" + escape(name) + "\"><code>" +
-                   escape(name) + "</code></li>\n";
-        }
-        out += "</ul>\n";
-    }
-    return out + "</section>\n";
+    return figures::explanation(
+        s, "red in the view", [](const task::TaskPart&) { return std::string(); }, "");
 }
 
 std::string legend(const task::SpatialTask& task) {
