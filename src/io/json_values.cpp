@@ -1,10 +1,13 @@
 #include "json_values.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <modsynth/task/limits.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
+
+#include "json_parts.h"
 
 namespace modsynth::io::values {
 
@@ -164,6 +167,42 @@ geometry::Vec3 direction3(const json& j, const std::string& part) {
     if (!(v.cwiseAbs().maxCoeff() > 0.0))
         throw InputError(part, "must be a non-zero vector, got [0, 0, 0]");
     return v;
+}
+
+namespace {
+
+/// Joint limits outside this range are typing mistakes rather than actuators,
+/// and would make the motion's times overflow or vanish.
+constexpr double kMinJointLimit = 1e-6;
+constexpr double kMaxJointLimit = 1e6;
+
+}  // namespace
+
+std::vector<double> joint_limit_values(const json& j, const std::string& part, const char* unit,
+                                       const std::vector<int>& dof) {
+    const auto value = [&](const json& v, const std::string& p) {
+        const double x = finite_number(v, p, (std::string("a limit in ") + unit).c_str());
+        if (x <= 0.0)
+            throw InputError(
+                p, "must be greater than 0 " + std::string(unit) + ", got " + text::compact(x));
+        if (x < kMinJointLimit || x > kMaxJointLimit)
+            throw InputError(p, text::compact(x) + " " + unit + " is outside the " +
+                                    text::compact(kMinJointLimit) + " to " +
+                                    text::compact(kMaxJointLimit) + " allowed");
+        return x;
+    };
+    if (!j.is_array()) return {value(j, part)};
+    if (std::find(dof.begin(), dof.end(), static_cast<int>(j.size())) == dof.end()) {
+        std::string allowed;
+        for (int n : dof) allowed += (allowed.empty() ? "" : " or ") + std::to_string(n);
+        throw InputError(part, "has " + std::to_string(j.size()) +
+                                   " values, but a list needs one per joint and the robot may "
+                                   "have " +
+                                   allowed + " joints (robot.dof)");
+    }
+    std::vector<double> out;
+    for (std::size_t i = 0; i < j.size(); ++i) out.push_back(value(j[i], element(part, i)));
+    return out;
 }
 
 }  // namespace modsynth::io::values

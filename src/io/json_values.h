@@ -1,10 +1,10 @@
 #pragma once
 // Reading the values of a task document with messages that name the part
 // and say what was expected instead of what was found ("a length in metres
-// (a number), got the text \"abc\""), for the spatial task reader. The same
-// rules, caps and wording as the planar reader (task_io.cpp).
+// (a number), got the text \"abc\""), for both task readers.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -35,6 +35,11 @@ double finite_number(const nlohmann::json& j, const std::string& part, const cha
 double positive_length(const nlohmann::json& j, const std::string& part);
 double non_negative_length(const nlohmann::json& j, const std::string& part);
 std::string text(const nlohmann::json& j, const std::string& part, const char* what);
+/// One joint limit (`unit`: "rad/s", ...): a positive number for every
+/// joint, or a list with one per joint whose length is an allowed joint
+/// count (`dof`).
+std::vector<double> joint_limit_values(const nlohmann::json& j, const std::string& part,
+                                       const char* unit, const std::vector<int>& dof);
 /// A whole number of joints from lo to hi.
 int whole_number(const nlohmann::json& j, const std::string& part, int lo, int hi,
                  const char* what);

@@ -358,38 +358,6 @@ std::vector<double> read_twists(const json& j, const std::string& part) {
     return out;
 }
 
-/// Joint limits outside this range are typing mistakes rather than actuators
-/// (the same range as the planar reader).
-constexpr double kMinJointLimit = 1e-6;
-constexpr double kMaxJointLimit = 1e6;
-
-std::vector<double> joint_limit_values(const json& j, const std::string& part, const char* unit,
-                                       const std::vector<int>& dof) {
-    const auto value = [&](const json& v, const std::string& p) {
-        const double x = finite_number(v, p, (std::string("a limit in ") + unit).c_str());
-        if (x <= 0.0)
-            throw InputError(
-                p, "must be greater than 0 " + std::string(unit) + ", got " + text::compact(x));
-        if (x < kMinJointLimit || x > kMaxJointLimit)
-            throw InputError(p, text::compact(x) + " " + unit + " is outside the " +
-                                    text::compact(kMinJointLimit) + " to " +
-                                    text::compact(kMaxJointLimit) + " allowed");
-        return x;
-    };
-    if (!j.is_array()) return {value(j, part)};
-    if (std::find(dof.begin(), dof.end(), static_cast<int>(j.size())) == dof.end()) {
-        std::string allowed;
-        for (int n : dof) allowed += (allowed.empty() ? "" : " or ") + std::to_string(n);
-        throw InputError(part, "has " + std::to_string(j.size()) +
-                                   " values, but a list needs one per joint and the robot may "
-                                   "have " +
-                                   allowed + " joints (robot.dof)");
-    }
-    std::vector<double> out;
-    for (std::size_t i = 0; i < j.size(); ++i) out.push_back(value(j[i], element(part, i)));
-    return out;
-}
-
 void read_joint_limits(const json& robot, const std::string& robot_part, SpatialRobotSpec& r) {
     const json* limits = optional(robot, "joint_limits");
     if (!limits) return;

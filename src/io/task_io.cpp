@@ -22,6 +22,7 @@
 #include <modsynth/text/printable.h>
 
 #include "json_parts.h"
+#include "json_values.h"
 
 namespace modsynth::io {
 
@@ -49,111 +50,20 @@ constexpr const char* kFormat = "modsynth-task/1";
 /// Below this a length is treated as zero: a degenerate primitive.
 constexpr double kDegenerate = 1e-9;
 
-// ---------------------------------------------------------------- messages
-
-std::string fixed(double value, int decimals) { return text::format("%.*f", decimals, value); }
-
-/// A length for a message: 3 decimals, or as many as needed to show a tiny
-/// but non-zero value, so that a rejected 2e-6 m gap does not read "0.000 m".
-std::string metres(double value) {
-    if (!std::isfinite(value) || std::fabs(value) >= 1e6) return text::compact(value);
-    int decimals = 3;
-    while (decimals < 12 && value != 0.0 && std::fabs(value) < 0.5 * std::pow(10.0, -decimals)) {
-        ++decimals;
-    }
-    return fixed(value, decimals);
-}
+// The values of the document: the same rules, caps and wording as the
+// spatial reader's (json_values.h); points here are planar.
+using values::describe;
+using values::finite_number;
+using values::metres;
+using values::non_negative_length;
+using values::positive_length;
+using values::require_array;
+using values::require_count_cap;
+using values::require_object;
+using values::required;
+using values::text;
 
 std::string point_text(const Vec2& p) { return "[" + metres(p.x()) + ", " + metres(p.y()) + "]"; }
-
-/// What the user wrote instead of what was expected, in plain words.
-std::string describe(const json& j) {
-    switch (j.type()) {
-        case json::value_t::null:
-            return "null";
-        case json::value_t::boolean:
-            return j.get<bool>() ? "true" : "false";
-        case json::value_t::string: {
-            return "the text \"" + text::printable(j.get<std::string>()) + "\"";
-        }
-        case json::value_t::array:
-            return "a list";
-        case json::value_t::object:
-            return "an object";
-        case json::value_t::number_float: {
-            const double v = j.get<double>();
-            if (std::isnan(v)) return "NaN";
-            return text::compact(v);
-        }
-        default:
-            return j.dump();
-    }
-}
-
-// ------------------------------------------------------------ basic values
-
-void require_object(const json& j, const std::string& part, const char* example) {
-    if (!j.is_object()) {
-        throw InputError(
-            part, std::string("expected an object like ") + example + ", got " + describe(j));
-    }
-}
-
-void require_array(const json& j, const std::string& part, const char* what) {
-    if (!j.is_array()) {
-        throw InputError(part, std::string("expected a list of ") + what + ", got " + describe(j));
-    }
-}
-
-/// The value of a key that must be present.
-const json& required(const json& obj, const std::string& part, const char* key, const char* why) {
-    const auto it = obj.find(key);
-    if (it == obj.end()) throw InputError(member(part, key), std::string("missing; ") + why);
-    return *it;
-}
-
-/// A finite number. `what` names the value in the message ("a length").
-double finite_number(const json& j, const std::string& part, const char* what) {
-    if (!j.is_number()) {
-        throw InputError(part, std::string("expected ") + what + " (a number), got " + describe(j));
-    }
-    const double v = j.get<double>();
-    if (!std::isfinite(v)) {
-        throw InputError(
-            part, std::string("expected ") + what + " (a finite number), got " + describe(j));
-    }
-    return v;
-}
-
-void require_size_cap(double v, const std::string& part) {
-    if (v > kMaxLength) {
-        throw InputError(part, metres(v) + " m is more than the " + text::compact(kMaxLength) +
-                                   " m allowed for a size");
-    }
-}
-
-double positive_length(const json& j, const std::string& part) {
-    const double v = finite_number(j, part, "a length in metres");
-    if (v <= 0.0) throw InputError(part, "must be greater than 0 m, got " + metres(v) + " m");
-    require_size_cap(v, part);
-    return v;
-}
-
-double non_negative_length(const json& j, const std::string& part) {
-    const double v = finite_number(j, part, "a length in metres");
-    if (v < 0.0) throw InputError(part, "must not be negative, got " + metres(v) + " m");
-    require_size_cap(v, part);
-    return v;
-}
-
-/// More than `cap` elements in a list is rejected before any is parsed.
-void require_count_cap(const json& list, const std::string& part, const char* what,
-                       std::size_t cap) {
-    if (list.size() > cap) {
-        throw InputError(part, std::to_string(list.size()) + " " + what + ", more than the " +
-                                   std::to_string(cap) + " allowed");
-    }
-}
 
 Vec2 point(const json& j, const std::string& part) {
     if (!j.is_array()) throw InputError(part, "expected a point [x, y], got " + describe(j));
@@ -178,15 +88,6 @@ Vec2 point(const json& j, const std::string& part) {
     }
     return p;
 }
-
-std::string text(const json& j, const std::string& part, const char* what) {
-    if (!j.is_string()) {
-        throw InputError(part, std::string("expected ") + what + ", got " + describe(j));
-    }
-    return j.get<std::string>();
-}
-
-// -------------------------------------------------------------- trajectory
 
 bool direction_ccw(const json& prim, const std::string& part, const char* why) {
     const std::string p = member(part, "direction");
@@ -479,41 +380,7 @@ void parse_loads(const json& robot, const std::string& part, RobotSpec& r) {
     }
 }
 
-/// Joint limits outside this range are typing mistakes rather than actuators,
-/// and would make the motion's times overflow or vanish.
-constexpr double kMinJointLimit = 1e-6;
-constexpr double kMaxJointLimit = 1e6;
-
-/// One limit: a positive number for every joint, or a list with one per
-/// joint whose length is an allowed joint count.
-std::vector<double> joint_limit_values(const json& j, const std::string& part, const char* unit,
-                                       const std::vector<int>& dof) {
-    const auto value = [&](const json& v, const std::string& p) {
-        const double x = finite_number(v, p, (std::string("a limit in ") + unit).c_str());
-        if (x <= 0.0) {
-            throw InputError(
-                p, "must be greater than 0 " + std::string(unit) + ", got " + text::compact(x));
-        }
-        if (x < kMinJointLimit || x > kMaxJointLimit) {
-            throw InputError(p, text::compact(x) + " " + unit + " is outside the " +
-                                    text::compact(kMinJointLimit) + " to " +
-                                    text::compact(kMaxJointLimit) + " allowed");
-        }
-        return x;
-    };
-    if (!j.is_array()) return {value(j, part)};
-    if (std::find(dof.begin(), dof.end(), static_cast<int>(j.size())) == dof.end()) {
-        std::string allowed;
-        for (int n : dof) allowed += (allowed.empty() ? "" : " or ") + std::to_string(n);
-        throw InputError(part, "has " + std::to_string(j.size()) +
-                                   " values, but a list needs one per joint and the robot may "
-                                   "have " +
-                                   allowed + " joints (robot.dof)");
-    }
-    std::vector<double> out;
-    for (std::size_t i = 0; i < j.size(); ++i) out.push_back(value(j[i], element(part, i)));
-    return out;
-}
+using values::joint_limit_values;
 
 /// `robot.joint_limits`. A list with one value per joint fixes the joint
 /// count: the search then considers only that count.
