@@ -58,6 +58,10 @@ struct SolveOptions {
 /// task names a module the catalog lacks, and std::invalid_argument naming
 /// the field when the options are not valid.
 Solution solve(const Task& task, const SolveOptions& options = {});
+/// The same for a spatial task: a certified DH chain (Solution::dh_robot)
+/// and its timed motion with its modules, a proof that none exists, or
+/// "unknown"; the same answer as `modsynth solve` on that task.
+Solution solve(const SpatialTask& task, const SolveOptions& options = {});
 
 /// Why a task cannot be done, within `time_limit` seconds in all;
 /// `solve_seconds` of synthesis go to each suggested change. The same flow
