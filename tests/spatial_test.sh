@@ -120,7 +120,15 @@ done
 # solve writes the outputs of a spatial solution beside it, modules chosen.
 expect_exit 0 "solve s3-0001 with outputs" "$bin" solve "$fixtures/s3-0001.task.json" \
     -o "$tmp/s3-out.json" --report "$tmp/s3-out.html" --urdf "$tmp/s3-out.urdf" \
-    --build-sheet "$tmp/s3-out.md" --time-limit 60
+    --build-sheet "$tmp/s3-out.md" --time-limit 60 --events "$tmp/s3-out.events"
+# Its progress as typed events, one JSON object a line, as in the plane.
+python3 - "$tmp/s3-out.events" <<'PY' || fail "solve --events of a spatial task: $(head -c 300 "$tmp/s3-out.events")"
+import json, sys
+events = [json.loads(l) for l in open(sys.argv[1])]
+stages = {e["stage"] for e in events}
+assert {"front stage", "search", "refinement", "verification", "timing"} <= stages, stages
+assert all(not e["message"].startswith("[") for e in events), events
+PY
 for ext in html urdf md; do
     [ -s "$tmp/s3-out.$ext" ] || fail "solve --$ext of a spatial task wrote nothing"
 done

@@ -40,6 +40,7 @@ Solution solve(const SpatialTask& task, const SolveOptions& options) {
     synth::SpatialSynthesisOptions o;
     o.time_limit = options.time_limit;
     o.seed = options.seed;
+    o.progress = options.progress;
     return synth::solve(task, o);
 }
 

@@ -127,10 +127,10 @@ int run_solve(const SolveArgs& a) {
     const run::Stopwatch clock;
     io::TaskDocument doc = io::load_task_document(a.task);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
-        return run_spatial_solve(
-            *spatial,
-            {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed, a.quiet, a.exports},
-            clock.started());
+        return run_spatial_solve(*spatial,
+                                 {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed,
+                                  a.quiet, a.events, a.exports},
+                                 clock.started());
     const task::Task task = std::get<task::Task>(std::move(doc));
     const auto elapsed = [&] { return clock.seconds(); };
     // The same files as any other answer: a report that says "unknown" and
@@ -147,16 +147,8 @@ int run_solve(const SolveArgs& a) {
     options.shorten_gap = a.shorten_gap;
     options.retime.ee_speed = a.ee_speed;
     options.retime.joint_speed = a.joint_speed;
-    std::ofstream events;
-    if (!a.events.empty()) {
-        events.open(a.events, std::ios::trunc);
-        if (!events) throw task::InputError(a.events, "cannot be written");
-    }
-    options.progress = [&](const run::ProgressEvent& e) {
-        guard.set_stage(e.message);
-        if (!a.quiet) std::cerr << run::console_line(e) << std::endl;
-        if (events.is_open()) events << io::progress_json_line(e) << std::endl;
-    };
+    SolveProgress progress(a.events, a.quiet);
+    options.progress = progress.sink(guard);
     synth::SynthesisStats stats;
     const synth::Solution solution = synth::solve(task, options, &stats);
     const double seconds = elapsed();

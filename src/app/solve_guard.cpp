@@ -1,6 +1,10 @@
 #include "solve_guard.h"
 
+#include <iostream>
 #include <utility>
+
+#include <modsynth/io/progress_json.h>
+#include <modsynth/task/input_error.h>
 
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
@@ -32,6 +36,20 @@ SolveGuard::SolveGuard(std::string task_name, double time_limit, double elapsed,
           answer_(unknown);
           return int{kUnknown};
       }) {}
+
+SolveProgress::SolveProgress(const std::string& events_path, bool quiet) : quiet_(quiet) {
+    if (events_path.empty()) return;
+    events_.open(events_path, std::ios::trunc);
+    if (!events_) throw task::InputError(events_path, "cannot be written");
+}
+
+run::ProgressSink SolveProgress::sink(SolveGuard& guard) {
+    return [this, &guard](const run::ProgressEvent& e) {
+        guard.set_stage(e.message);
+        if (!quiet_) std::cerr << run::console_line(e) << std::endl;
+        if (events_.is_open()) events_ << io::progress_json_line(e) << std::endl;
+    };
+}
 
 int exit_code(const synth::Status& status) {
     switch (status) {

@@ -3,11 +3,13 @@
 // writes when its time limit passes inside a library call (the watchdog),
 // and the exit code an answer ends the command with (README, "Exit codes").
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <string>
 
 #include <modsynth/io/solution_io.h>
 #include <modsynth/output/exports.h>
+#include <modsynth/run/progress.h>
 #include <modsynth/synth/solution.h>
 
 #include "watchdog.h"
@@ -32,6 +34,20 @@ private:
     double time_limit_;
     std::function<void(const synth::Solution&)> answer_;
     Watchdog watchdog_;  // last: its thread may use the members above
+};
+
+/// Where a solve's progress events go: the guard's stage, the console
+/// unless quiet, and the events file (JSON lines, io/progress_json.h) when
+/// one is asked for.
+class SolveProgress {
+public:
+    /// Throws task::InputError naming `events_path` when it cannot be written.
+    SolveProgress(const std::string& events_path, bool quiet);
+    run::ProgressSink sink(SolveGuard& guard);
+
+private:
+    std::ofstream events_;
+    bool quiet_;
 };
 
 /// The solution file and the files asked for beside it, each export's note

@@ -73,10 +73,8 @@ int run_spatial_solve(const task::SpatialTask& task, const SpatialSolveRequest& 
     options.seed = a.seed;
     options.retime.ee_speed = a.ee_speed;
     options.retime.joint_speed = a.joint_speed;
-    options.progress = [&](const std::string& line) {
-        guard.set_stage(line.size() > 11 ? line.substr(11) : line);  // without the clock
-        if (!a.quiet) std::cerr << line << std::endl;
-    };
+    SolveProgress progress(a.events, a.quiet);
+    options.progress = progress.sink(guard);
     synth::SynthesisStats stats;
     const synth::Solution solution = synth::solve(task, options, &stats);
     const double seconds = elapsed();
