@@ -3,7 +3,7 @@
 # `validate` reads them (exit 0) and refuses bad ones naming the part
 # (exit 2); `certify` certifies the planted solutions of the shared
 # planter and refuses their mutations exactly where the shared grader does;
-# `solve` and `batch` design robots for them (planted tasks solved and graded,
+# `solve` and `batch` design robots for them, `explain` says why not (planted tasks solved and graded,
 # the unreachable one proved infeasible with its core); export writes every
 # output of a spatial solution; every command that does not take spatial
 # tasks yet refuses them by name.
@@ -227,10 +227,29 @@ expect_exit 2 "export a URDF of an infeasible spatial solution" "$bin" export "$
     "$tmp/infeasible.json" --report "$tmp/inf.html" --urdf "$tmp/inf.urdf"
 [ -s "$tmp/inf.html" ] && [ ! -e "$tmp/inf.urdf" ] || fail "export of an infeasible solution: report and no URDF expected"
 
+# explain: the planted unreachable task proved with its planted parts and
+# changes that remove the conflict (--json as in the plane); a feasible one
+# solved instead (exit 0).
+expect_exit 3 "explain sir-0001" "$bin" explain "$fixtures/sir-0001.task.json" --solve-seconds 1
+grep -q "^Proved infeasible: trajectory\[0\] is out of reach" "$tmp/out" ||
+    fail "explain sir-0001: $(head -c 300 "$tmp/out")"
+grep -q "  - robot.max_link_length >= " "$tmp/out" || fail "explain sir-0001 suggests no longer links: $(cat "$tmp/out")"
+expect_exit 3 "explain --json sir-0001" "$bin" explain "$fixtures/sir-0001.task.json" --solve-seconds 1 --json
+python3 - "$fixtures/sir-0001.expect.json" "$tmp/out" <<'PY' || fail "explain --json sir-0001: $(head -c 400 "$tmp/out")"
+import json, sys
+expect, got = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert got["status"] == "infeasible", got
+core = set(got["core"])
+assert {p for p in expect["core_should_include"] if not p.startswith("trajectory")} <= core, core
+assert core & set(expect["core_should_include_one_of"]), core
+assert {s["part"] for s in got["suggestions"]} == {"robot.max_link_length", "base_regions"}, got
+PY
+expect_exit 0 "explain a feasible spatial task" "$bin" explain "$fixtures/s3-0001.task.json"
+grep -q "No conflict: a 3-joint robot" "$tmp/out" || fail "explain s3-0001: $(cat "$tmp/out")"
+
 # Every other command refuses a spatial task by name, before any work.
 task=$fixtures/s3-0001.task.json
-for cmd in "explain $task" \
-           "baseline $task" "compare $task" "export-svg $task -o $tmp/x.svg"; do
+for cmd in "baseline $task" "compare $task" "export-svg $task -o $tmp/x.svg"; do
     name=${cmd%% *}
     # shellcheck disable=SC2086
     expect_exit 2 "$name on a spatial task" "$bin" $cmd

@@ -67,6 +67,10 @@ Solution solve(const SpatialTask& task, const SolveOptions& options = {});
 /// `solve_seconds` of synthesis go to each suggested change. The same flow
 /// as `modsynth explain`.
 Explanation explain(const Task& task, double time_limit = 60.0, double solve_seconds = 10.0);
+/// The same for a spatial task: the spatial reach proof or the front
+/// stage's core as task parts, else the spatial synthesis, else the
+/// changes (links, joints, twists, base regions) that remove the conflict.
+Explanation explain(const SpatialTask& task, double time_limit = 60.0, double solve_seconds = 10.0);
 
 /// Checks a solution's motion against the task over the whole continuum,
 /// independently of how it was made (docs/verification.md). A solution

@@ -51,6 +51,13 @@ Explanation explain(const Task& task, double time_limit, double solve_seconds) {
     return explanation::explain(task, o);
 }
 
+Explanation explain(const SpatialTask& task, double time_limit, double solve_seconds) {
+    explanation::ExplainOptions o;
+    o.time_limit = time_limit;
+    o.solve_seconds = solve_seconds;
+    return explanation::explain(task, o);
+}
+
 Certificate certify(const Task& task, const Solution& solution) {
     if (solution.status != Status::Solved) return {};
     // The same re-verification export gives a solution read from a file.
