@@ -3,7 +3,8 @@
 # `validate` reads them (exit 0) and refuses bad ones naming the part
 # (exit 2); `certify` certifies the planted solutions of the shared
 # planter and refuses their mutations exactly where the shared grader does;
-# `solve` and `batch` design robots for them, `explain` says why not (planted tasks solved and graded,
+# `solve` and `batch` design robots for them, `explain` says why not,
+# `regress` judges them against recorded figures (planted tasks solved and graded,
 # the unreachable one proved infeasible with its core); export writes every
 # output of a spatial solution; every command that does not take spatial
 # tasks yet refuses them by name.
@@ -256,10 +257,27 @@ for cmd in "baseline $task" "compare $task" "export-svg $task -o $tmp/x.svg"; do
     grep -qF "space: spatial tasks are not supported by $name yet" "$tmp/err" ||
         fail "$name does not refuse the spatial task by name: $(cat "$tmp/err")"
 done
-mkdir -p "$tmp/regress/tasks" "$tmp/regress/encodings"
-cp "$task" "$tmp/regress/tasks/"
-"$bin" regress encodings --tasks "$tmp/regress/tasks" --dir "$tmp/regress/encodings" >"$tmp/out" 2>&1
-grep -qF "spatial task skipped (regress judges planar tasks only)" "$tmp/out" ||
-    fail "regress does not say it skips the spatial task: $(head -c 400 "$tmp/out")"
+# regress judges spatial tasks as planar ones: recorded, then unchanged;
+# another front-stage core or a longer chain than recorded is a regression.
+mkdir -p "$tmp/regress/tasks"
+cp "$task" "$fixtures/sir-0001.task.json" "$tmp/regress/tasks/"
+expect_exit 0 "regress --regenerate of spatial tasks" "$bin" regress encodings \
+    --tasks "$tmp/regress/tasks" --dir "$tmp/regress/encodings" --regenerate
+[ -s "$tmp/regress/encodings/s3-0001.dof3.smt2" ] || fail "regress wrote no spatial encoding"
+expect_exit 0 "regress of spatial tasks" "$bin" regress encodings \
+    --tasks "$tmp/regress/tasks" --dir "$tmp/regress/encodings"
+python3 - "$tmp/regress/encodings" <<'PY'
+import json, sys
+for name, edit in [("sir-0001", lambda d: d["front_stage"][0].update(core=["robot.twists"])),
+                   ("s3-0001", lambda d: d["solve"].update(total_link_length=d["solve"]["total_link_length"] * 0.5))]:
+    path = "%s/%s.expect.json" % (sys.argv[1], name)
+    doc = json.load(open(path))
+    edit(doc)
+    json.dump(doc, open(path, "w"), indent=1)
+PY
+expect_exit 1 "regress of tampered spatial expectations" "$bin" regress encodings \
+    --tasks "$tmp/regress/tasks" --dir "$tmp/regress/encodings"
+grep -q "^REGRESSED sir-0001" "$tmp/out" || fail "regress misses another spatial core: $(head -c 600 "$tmp/out")"
+grep -q "^REGRESSED s3-0001" "$tmp/out" || fail "regress misses a longer spatial chain: $(head -c 600 "$tmp/out")"
 
 finish spatial
