@@ -257,6 +257,28 @@ for cmd in "baseline $task" "compare $task" "export-svg $task -o $tmp/x.svg"; do
     grep -qF "space: spatial tasks are not supported by $name yet" "$tmp/err" ||
         fail "$name does not refuse the spatial task by name: $(cat "$tmp/err")"
 done
+# A 100-primitive spatial task (lines chained round a climbing circle):
+# solved and certified with time to spare, and under a tiny time limit
+# answered "unknown" (exit 4, as in the plane) with a valid solution file.
+python3 - "$tmp/chain100.json" <<'PY'
+import json, math, sys
+n = 100
+pts = [[0.3 + 0.08 * math.cos(3 * math.pi * i / n), 0.08 * math.sin(3 * math.pi * i / n),
+        0.25 + 0.1 * i / n] for i in range(n + 1)]
+json.dump({"format": "modsynth-task/1", "name": "chain100", "space": "3d",
+           "trajectory": [{"type": "line", "start": pts[i], "end": pts[i + 1]} for i in range(n)],
+           "base_regions": [{"min": [-0.05, -0.05, 0.0], "max": [0.05, 0.05, 0.05]}],
+           "robot": {"dof": [3, 4]}}, open(sys.argv[1], "w"))
+PY
+expect_exit 0 "solve a 100-primitive spatial task" "$bin" solve "$tmp/chain100.json" -o "$tmp/chain100.sol.json"
+grade "$tmp/chain100.json" "$tmp/chain100.sol.json" || fail "the grader fails chain100: $(tail -1 "$tmp/grade")"
+expect_exit 4 "solve a 100-primitive spatial task in 0.01 s" "$bin" solve "$tmp/chain100.json" \
+    -o "$tmp/chain100.unknown.json" --time-limit 0.01
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); assert d["status"] == "unknown" and "time limit" in d["explanation"]["message"], d' \
+    "$tmp/chain100.unknown.json" || fail "chain100 in 0.01 s: $(head -c 300 "$tmp/chain100.unknown.json")"
+"$bin" certify "$tmp/chain100.json" "$tmp/chain100.unknown.json" >"$tmp/out" 2>&1
+[ $? -ne 2 ] || fail "the unknown answer of chain100 is not a valid solution file: $(cat "$tmp/out")"
+
 # regress judges spatial tasks as planar ones: recorded, then unchanged;
 # another front-stage core or a longer chain than recorded is a regression.
 mkdir -p "$tmp/regress/tasks"
