@@ -3,12 +3,14 @@
 # the embed example, built on the public headers alone) and `modsynth
 # solve` write byte-identical solution files for every bundled task,
 # modules included (the infeasible ones are explained too, which takes
-# long: one stands for them).
+# long: one stands for them); the spatial examples too.
 set -u
 source "$(dirname "$0")/shell_test_lib.sh"
 example=$3
 
-for t in "$root"/tasks/*.json "$root"/tasks/infeasible/out-of-reach.task.json; do
+for t in "$root"/tasks/*.json "$root"/tasks/infeasible/out-of-reach.task.json \
+    "$root"/tasks/spatial/*.json "$root"/tests/fixtures/spatial/s3-0001.task.json \
+    "$root"/tests/fixtures/spatial/sir-0001.task.json; do
     name=$(basename "$t" .json)
     "$example" "$t" "$tmp/$name.library.json" >"$tmp/$name.library.out" 2>&1
     "$bin" solve "$t" -o "$tmp/$name.cli.json" --quiet --time-limit 30 >/dev/null 2>&1
@@ -21,4 +23,7 @@ done
 # The solved answers carry their modules, and the example says so.
 grep -q '"modules"' "$tmp/rose.library.json" || fail "rose: no modules in the library's answer"
 grep -q 'modules X' "$tmp/rose.library.out" || fail "rose: the example does not print the modules"
+grep -q '"dh"' "$tmp/helix-pipe.library.json" || fail "helix-pipe: no DH chain in the library's answer"
+grep -q 're-certified: yes' "$tmp/helix-pipe.library.out" ||
+    fail "helix-pipe: the library's spatial answer is not re-certified"
 finish embed_same_answer

@@ -22,6 +22,7 @@ ROSE = os.path.join(ROOT, "tasks", "rose.json")
 OUT_OF_REACH = os.path.join(ROOT, "tasks", "infeasible", "out-of-reach.task.json")
 DISCONNECTED = os.path.join(ROOT, "tests", "fixtures", "invalid", "disconnected.json")
 SPATIAL = os.path.join(ROOT, "tests", "fixtures", "spatial", "s3-0001.task.json")
+SPATIAL_OUT_OF_REACH = os.path.join(ROOT, "tests", "fixtures", "spatial", "sir-0001.task.json")
 # Runs to its time limit: for checks that act on a solve still running.
 SLOW = os.path.join(ROOT, "tests", "fixtures", "serve", "slow.task.json")
 JSON_TYPE = {"Content-Type": "application/json"}
@@ -210,14 +211,16 @@ def test_malformed_and_invalid():
         check(status == 422 and body.get("part") == "trajectory[1]", "an invalid task to solve: 422 with its part")
         status, _, body = s.json("POST", "/api/validate", read(ROSE), JSON_TYPE)
         check(status == 200 and body.get("valid") is True and body.get("primitives") == 7, "rose is valid")
-        # A spatial task is validated, and refused by name for solving.
+        # A spatial task is validated; an invalid one is refused naming its part.
         spatial = read(SPATIAL)
         status, _, body = s.json("POST", "/api/validate", spatial, JSON_TYPE)
         check(status == 200 and body.get("valid") is True and body.get("primitives") == 1,
               "a spatial task is valid: %s" % body)
-        status, _, body = s.json("POST", "/api/solve", spatial, JSON_TYPE)
-        check(status == 422 and body.get("part") == "space" and "not supported by serve yet" in
-              body.get("error", ""), "a spatial task to solve: 422 naming space: %s" % body)
+        bad = json.loads(spatial)
+        bad["obstacles"][0]["max"][2] = bad["obstacles"][0]["min"][2] - 0.1
+        status, _, body = s.json("POST", "/api/solve", json.dumps(bad).encode(), JSON_TYPE)
+        check(status == 422 and body.get("part") == "obstacles[0].max",
+              "an invalid spatial task to solve: 422 with its part: %s" % body)
         status, _, body = s.json("POST", "/api/validate", b"{}", {"Content-Type": "text/plain"})
         check(status == 415, "a body that is not application/json: 415 (%s)" % status)
         status, _, body = s.json("GET", "/api/info", headers={"Host": "attacker.example"})
@@ -255,6 +258,38 @@ def test_solve_and_files():
         check("attachment" in headers.get("Content-Disposition", ""), "?download=1 sends an attachment")
         status, _, _ = s.request("GET", "/api/jobs/%s/files/..%%2F..%%2Fetc%%2Fpasswd" % job["id"])
         check(status == 404, "only the job's own files are served")
+
+
+def test_spatial_solve_and_files():
+    with Server() as s:
+        status, _, job = s.solve(SPATIAL)
+        check(status == 202 and job.get("id"), "POST /api/solve of a spatial task: 202 with the job")
+        job = s.wait(job["id"], done, 60)
+        check(job.get("status") == "solved", "s3-0001 solved through the API: %s" % job.get("status"))
+        result = job.get("result") or {}
+        check(result.get("name") == "s3-0001" and result.get("dof") == 3 and
+              result.get("total_link_length", 0) > 0, "spatial result figures: %s" % result)
+        check(any("joints: front stage" in line for line in job.get("log", [])),
+              "the spatial progress was followed")
+        # The files `modsynth solve` writes for a spatial solution.
+        for name, marker in [("solution.json", b'"dh"'), ("report.html", b'id="scene-data"'),
+                             ("robot.urdf", b"<robot"), ("trajectory.csv", b"t,q1,q2,q3"),
+                             ("joint-trajectory.yaml", b"joint_names:"),
+                             ("build-sheet.md", b"A spatial arm")]:
+            url = job.get("files", {}).get(name)
+            status, headers, body = s.request("GET", url or "/missing")
+            check(status == 200 and marker in body, "download the spatial %s" % name)
+        # Out of reach: the planted core, then explain's changes.
+        job = s.solve(SPATIAL_OUT_OF_REACH)[2]
+        job = s.wait(job["id"], done, 90)
+        result = job.get("result") or {}
+        check(result.get("status") == "infeasible" and
+              {"robot.max_link_length", "base_regions", "trajectory[0]"} <= set(result.get("core", [])),
+              "sir-0001 infeasible with its planted core: %s" % result)
+        explanation = job.get("explanation") or {}
+        parts = {x.get("part") for x in explanation.get("suggestions", [])}
+        check(job.get("status") == "infeasible" and "robot.max_link_length" in parts,
+              "spatial suggested changes: %s %s" % (explanation, job.get("explanation_note")))
 
 
 def test_infeasible_explained():
@@ -737,7 +772,7 @@ def test_slow_body_keeps_alive():
 
 def main():
     tests = [test_page_and_info, test_body_limit, test_malformed_and_invalid, test_solve_and_files,
-             test_infeasible_explained, test_concurrency_limit_and_cancel, test_time_limit,
+             test_spatial_solve_and_files, test_infeasible_explained, test_concurrency_limit_and_cancel, test_time_limit,
              test_client_that_leaves, test_long_poll, test_garbage_does_not_kill, test_invalid_utf8,
              test_chunked_body_limit, test_host_rule, test_port_in_use, test_media_type,
              test_whole_replies, test_slow_clients, test_solves_hold_no_sockets,

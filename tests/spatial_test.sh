@@ -3,7 +3,8 @@
 # `validate` reads them (exit 0) and refuses bad ones naming the part
 # (exit 2); `certify` certifies the planted solutions of the shared
 # planter and refuses their mutations exactly where the shared grader does;
-# `solve` and `batch` design robots for them (planted tasks solved and graded,
+# `solve` and `batch` design robots for them, `explain` says why not,
+# `regress` judges them against recorded figures (planted tasks solved and graded,
 # the unreachable one proved infeasible with its core); export writes every
 # output of a spatial solution; every command that does not take spatial
 # tasks yet refuses them by name.
@@ -120,7 +121,15 @@ done
 # solve writes the outputs of a spatial solution beside it, modules chosen.
 expect_exit 0 "solve s3-0001 with outputs" "$bin" solve "$fixtures/s3-0001.task.json" \
     -o "$tmp/s3-out.json" --report "$tmp/s3-out.html" --urdf "$tmp/s3-out.urdf" \
-    --build-sheet "$tmp/s3-out.md" --time-limit 60
+    --build-sheet "$tmp/s3-out.md" --time-limit 60 --events "$tmp/s3-out.events"
+# Its progress as typed events, one JSON object a line, as in the plane.
+python3 - "$tmp/s3-out.events" <<'PY' || fail "solve --events of a spatial task: $(head -c 300 "$tmp/s3-out.events")"
+import json, sys
+events = [json.loads(l) for l in open(sys.argv[1])]
+stages = {e["stage"] for e in events}
+assert {"front stage", "search", "refinement", "verification", "timing"} <= stages, stages
+assert all(not e["message"].startswith("[") for e in events), events
+PY
 for ext in html urdf md; do
     [ -s "$tmp/s3-out.$ext" ] || fail "solve --$ext of a spatial task wrote nothing"
 done
@@ -219,20 +228,78 @@ expect_exit 2 "export a URDF of an infeasible spatial solution" "$bin" export "$
     "$tmp/infeasible.json" --report "$tmp/inf.html" --urdf "$tmp/inf.urdf"
 [ -s "$tmp/inf.html" ] && [ ! -e "$tmp/inf.urdf" ] || fail "export of an infeasible solution: report and no URDF expected"
 
+# explain: the planted unreachable task proved with its planted parts and
+# changes that remove the conflict (--json as in the plane); a feasible one
+# solved instead (exit 0).
+expect_exit 3 "explain sir-0001" "$bin" explain "$fixtures/sir-0001.task.json" --solve-seconds 1
+grep -q "^Proved infeasible: trajectory\[0\] is out of reach" "$tmp/out" ||
+    fail "explain sir-0001: $(head -c 300 "$tmp/out")"
+grep -q "  - robot.max_link_length >= " "$tmp/out" || fail "explain sir-0001 suggests no longer links: $(cat "$tmp/out")"
+expect_exit 3 "explain --json sir-0001" "$bin" explain "$fixtures/sir-0001.task.json" --solve-seconds 1 --json
+python3 - "$fixtures/sir-0001.expect.json" "$tmp/out" <<'PY' || fail "explain --json sir-0001: $(head -c 400 "$tmp/out")"
+import json, sys
+expect, got = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert got["status"] == "infeasible", got
+core = set(got["core"])
+assert {p for p in expect["core_should_include"] if not p.startswith("trajectory")} <= core, core
+assert core & set(expect["core_should_include_one_of"]), core
+assert {s["part"] for s in got["suggestions"]} == {"robot.max_link_length", "base_regions"}, got
+PY
+expect_exit 0 "explain a feasible spatial task" "$bin" explain "$fixtures/s3-0001.task.json"
+grep -q "No conflict: a 3-joint robot" "$tmp/out" || fail "explain s3-0001: $(cat "$tmp/out")"
+
 # Every other command refuses a spatial task by name, before any work.
 task=$fixtures/s3-0001.task.json
-for cmd in "explain $task" \
-           "baseline $task" "compare $task" "export-svg $task -o $tmp/x.svg"; do
+for cmd in "baseline $task" "compare $task" "export-svg $task -o $tmp/x.svg"; do
     name=${cmd%% *}
     # shellcheck disable=SC2086
     expect_exit 2 "$name on a spatial task" "$bin" $cmd
     grep -qF "space: spatial tasks are not supported by $name yet" "$tmp/err" ||
         fail "$name does not refuse the spatial task by name: $(cat "$tmp/err")"
 done
-mkdir -p "$tmp/regress/tasks" "$tmp/regress/encodings"
-cp "$task" "$tmp/regress/tasks/"
-"$bin" regress encodings --tasks "$tmp/regress/tasks" --dir "$tmp/regress/encodings" >"$tmp/out" 2>&1
-grep -qF "spatial task skipped (regress judges planar tasks only)" "$tmp/out" ||
-    fail "regress does not say it skips the spatial task: $(head -c 400 "$tmp/out")"
+# A 100-primitive spatial task (lines chained round a climbing circle):
+# solved and certified with time to spare, and under a tiny time limit
+# answered "unknown" (exit 4, as in the plane) with a valid solution file.
+python3 - "$tmp/chain100.json" <<'PY'
+import json, math, sys
+n = 100
+pts = [[0.3 + 0.08 * math.cos(3 * math.pi * i / n), 0.08 * math.sin(3 * math.pi * i / n),
+        0.25 + 0.1 * i / n] for i in range(n + 1)]
+json.dump({"format": "modsynth-task/1", "name": "chain100", "space": "3d",
+           "trajectory": [{"type": "line", "start": pts[i], "end": pts[i + 1]} for i in range(n)],
+           "base_regions": [{"min": [-0.05, -0.05, 0.0], "max": [0.05, 0.05, 0.05]}],
+           "robot": {"dof": [3, 4]}}, open(sys.argv[1], "w"))
+PY
+expect_exit 0 "solve a 100-primitive spatial task" "$bin" solve "$tmp/chain100.json" -o "$tmp/chain100.sol.json"
+grade "$tmp/chain100.json" "$tmp/chain100.sol.json" || fail "the grader fails chain100: $(tail -1 "$tmp/grade")"
+expect_exit 4 "solve a 100-primitive spatial task in 0.01 s" "$bin" solve "$tmp/chain100.json" \
+    -o "$tmp/chain100.unknown.json" --time-limit 0.01
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); assert d["status"] == "unknown" and "time limit" in d["explanation"]["message"], d' \
+    "$tmp/chain100.unknown.json" || fail "chain100 in 0.01 s: $(head -c 300 "$tmp/chain100.unknown.json")"
+"$bin" certify "$tmp/chain100.json" "$tmp/chain100.unknown.json" >"$tmp/out" 2>&1
+[ $? -ne 2 ] || fail "the unknown answer of chain100 is not a valid solution file: $(cat "$tmp/out")"
+
+# regress judges spatial tasks as planar ones: recorded, then unchanged;
+# another front-stage core or a longer chain than recorded is a regression.
+mkdir -p "$tmp/regress/tasks"
+cp "$task" "$fixtures/sir-0001.task.json" "$tmp/regress/tasks/"
+expect_exit 0 "regress --regenerate of spatial tasks" "$bin" regress encodings \
+    --tasks "$tmp/regress/tasks" --dir "$tmp/regress/encodings" --regenerate
+[ -s "$tmp/regress/encodings/s3-0001.dof3.smt2" ] || fail "regress wrote no spatial encoding"
+expect_exit 0 "regress of spatial tasks" "$bin" regress encodings \
+    --tasks "$tmp/regress/tasks" --dir "$tmp/regress/encodings"
+python3 - "$tmp/regress/encodings" <<'PY'
+import json, sys
+for name, edit in [("sir-0001", lambda d: d["front_stage"][0].update(core=["robot.twists"])),
+                   ("s3-0001", lambda d: d["solve"].update(total_link_length=d["solve"]["total_link_length"] * 0.5))]:
+    path = "%s/%s.expect.json" % (sys.argv[1], name)
+    doc = json.load(open(path))
+    edit(doc)
+    json.dump(doc, open(path, "w"), indent=1)
+PY
+expect_exit 1 "regress of tampered spatial expectations" "$bin" regress encodings \
+    --tasks "$tmp/regress/tasks" --dir "$tmp/regress/encodings"
+grep -q "^REGRESSED sir-0001" "$tmp/out" || fail "regress misses another spatial core: $(head -c 600 "$tmp/out")"
+grep -q "^REGRESSED s3-0001" "$tmp/out" || fail "regress misses a longer spatial chain: $(head -c 600 "$tmp/out")"
 
 finish spatial

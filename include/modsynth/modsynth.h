@@ -58,11 +58,19 @@ struct SolveOptions {
 /// task names a module the catalog lacks, and std::invalid_argument naming
 /// the field when the options are not valid.
 Solution solve(const Task& task, const SolveOptions& options = {});
+/// The same for a spatial task: a certified DH chain (Solution::dh_robot)
+/// and its timed motion with its modules, a proof that none exists, or
+/// "unknown"; the same answer as `modsynth solve` on that task.
+Solution solve(const SpatialTask& task, const SolveOptions& options = {});
 
 /// Why a task cannot be done, within `time_limit` seconds in all;
 /// `solve_seconds` of synthesis go to each suggested change. The same flow
 /// as `modsynth explain`.
 Explanation explain(const Task& task, double time_limit = 60.0, double solve_seconds = 10.0);
+/// The same for a spatial task: the spatial reach proof or the front
+/// stage's core as task parts, else the spatial synthesis, else the
+/// changes (links, joints, twists, base regions) that remove the conflict.
+Explanation explain(const SpatialTask& task, double time_limit = 60.0, double solve_seconds = 10.0);
 
 /// Checks a solution's motion against the task over the whole continuum,
 /// independently of how it was made (docs/verification.md). A solution

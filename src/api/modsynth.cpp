@@ -36,7 +36,22 @@ Solution solve(const Task& task, const SolveOptions& options) {
     return synth::solve(task, o);
 }
 
+Solution solve(const SpatialTask& task, const SolveOptions& options) {
+    synth::SpatialSynthesisOptions o;
+    o.time_limit = options.time_limit;
+    o.seed = options.seed;
+    o.progress = options.progress;
+    return synth::solve(task, o);
+}
+
 Explanation explain(const Task& task, double time_limit, double solve_seconds) {
+    explanation::ExplainOptions o;
+    o.time_limit = time_limit;
+    o.solve_seconds = solve_seconds;
+    return explanation::explain(task, o);
+}
+
+Explanation explain(const SpatialTask& task, double time_limit, double solve_seconds) {
     explanation::ExplainOptions o;
     o.time_limit = time_limit;
     o.solve_seconds = solve_seconds;

@@ -3,18 +3,20 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 
 #include <modsynth/explanation/explain.h>
 #include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/prove/conflict_text.h>
 #include <modsynth/run/stopwatch.h>
+#include <modsynth/text/format.h>
 
 #include "command.h"
 #include "number_checks.h"
-#include "planar_task.h"
 #include "watchdog.h"
 
 namespace modsynth::app {
@@ -34,15 +36,56 @@ nlohmann::json suggestion_json(const explanation::Relaxation& r) {
     return {{"part", task::to_string(r.part)}, {"change", r.change}, {"outcome", r.outcome}};
 }
 
+std::string describe(const task::Task& task, const task::TaskPart& part) {
+    return prove::describe_part(task, part);
+}
+
+// A spatial core's parts with the values they stand for.
+std::string describe(const task::SpatialTask& task, const task::TaskPart& part) {
+    const std::string name = task::to_string(part);
+    const auto& r = task.robot;
+    switch (part.kind()) {
+        case task::TaskPart::Kind::Primitive:
+            return name + " (a primitive of the path)";
+        case task::TaskPart::Kind::Obstacle:
+            return name + " (an obstacle)";
+        case task::TaskPart::Kind::BaseRegions:
+            return name + text::format(" (where the base may stand: %zu box(es))",
+                                       task.base_regions.size());
+        case task::TaskPart::Kind::BaseRegion:
+            return name + " (a box the base may stand in)";
+        case task::TaskPart::Kind::Robot:
+            break;
+    }
+    if (part.is_robot(task::RobotKey::MaxLinkLength))
+        return name +
+               text::format(" = %.3f m (the longest |a| + |d| of a link)", r.max_link_length);
+    if (part.is_robot(task::RobotKey::MinLinkLength))
+        return name + text::format(" = %.3f m", r.min_link_length);
+    if (part.is_robot(task::RobotKey::Dof)) {
+        std::string counts;
+        for (int d : r.dof) counts += (counts.empty() ? "" : ", ") + std::to_string(d);
+        return name + " = " + counts + " joints";
+    }
+    if (part.is_robot(task::RobotKey::Twists)) {
+        std::string twists;
+        for (double t : r.twists) twists += text::format(twists.empty() ? "%.4f" : ", %.4f", t);
+        return name + " = " + twists + " rad (every joint axis vertical: the EE keeps one height)";
+    }
+    if (part.is_robot(task::RobotKey::ToolLength))
+        return name + text::format(" = %.3f m", r.tool_length);
+    return name;
+}
+
 // --time-limit bounds the whole command: the proof, or the full run when
-// there is none, and then the suggestions (explanation/explain.h).
-int run_explain(const ExplainArgs& a) {
-    const run::Stopwatch clock;
-    const task::Task task = load_planar_task(a.task, "explain");
+// there is none, and then the suggestions (explanation/explain.h). Planar
+// and spatial tasks take the same flow and print the same way.
+template <class TaskT>
+int run_explain(const ExplainArgs& a, const TaskT& task, const run::Stopwatch& clock) {
     std::mutex mutex;  // `out` is shared with the watchdog
     nlohmann::json out;
     // What the JSON says so far: unknown until a proof or a full run answers.
-    synth::Status status = synth::Status::Unknown;
+    synth::Status status = synth::Status::Kind::Unknown;
     out["task"] = task.name;
     out["status"] = synth::to_string(status);
     const auto fill = [&](const explanation::Explanation& e) {
@@ -60,9 +103,10 @@ int run_explain(const ExplainArgs& a) {
             std::printf("%s\n",
                         out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
         } else {
-            std::printf("%s%s\n", status == synth::Status::Infeasible ? "  " : "", note.c_str());
+            std::printf("%s%s\n", status == synth::Status::Kind::Infeasible ? "  " : "",
+                        note.c_str());
         }
-        return status == synth::Status::Infeasible ? int{kInfeasible} : int{kUnknown};
+        return status == synth::Status::Kind::Infeasible ? int{kInfeasible} : int{kUnknown};
     });
     explanation::ExplainOptions options;
     options.time_limit = time_limit;
@@ -77,8 +121,7 @@ int run_explain(const ExplainArgs& a) {
         out["suggestions"] = nlohmann::json::array();
         if (!a.json) {
             std::printf("%s\n\nThe conflicting parts:\n", e.message.c_str());
-            for (const auto& part : e.core)
-                std::printf("  - %s\n", prove::describe_part(task, part).c_str());
+            for (const auto& part : e.core) std::printf("  - %s\n", describe(task, part).c_str());
             std::printf("\nSmallest changes that remove the conflict (each re-checked):\n");
             std::fflush(stdout);
         }
@@ -94,9 +137,9 @@ int run_explain(const ExplainArgs& a) {
         } else {
             std::printf("%s\n", e.message.c_str());
         }
-        return e.status == synth::Status::Solved       ? kOk
-               : e.status == synth::Status::Infeasible ? kInfeasible
-                                                       : kUnknown;
+        return e.status == synth::Status::Kind::Solved       ? kOk
+               : e.status == synth::Status::Kind::Infeasible ? kInfeasible
+                                                             : kUnknown;
     }
     for (const auto& r : e.suggestions) {
         out["suggestions"].push_back(suggestion_json(r));
@@ -113,13 +156,21 @@ int run_explain(const ExplainArgs& a) {
     return kInfeasible;
 }
 
+int run_explain(const ExplainArgs& a) {
+    const run::Stopwatch clock;
+    io::TaskDocument doc = io::load_task_document(a.task);
+    if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
+        return run_explain(a, *spatial, clock);
+    return run_explain(a, std::get<task::Task>(doc), clock);
+}
+
 }  // namespace
 
 Command add_explain(CLI::App& parent) {
     auto a = std::make_shared<ExplainArgs>();
     CLI::App* sub = parent.add_subcommand(
         "explain", "Say why a task cannot be done, and the smallest changes that would fix it");
-    sub->add_option("TASK", a->task, "modsynth-task/1 JSON file")->required();
+    sub->add_option("TASK", a->task, "modsynth-task/1 JSON file (planar or spatial)")->required();
     sub->add_option("--time-limit", a->time_limit,
                     "seconds for the whole command: the proof or the full run, then the "
                     "suggestions (default 60)")

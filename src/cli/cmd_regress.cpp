@@ -1,5 +1,6 @@
 // `modsynth regress encodings`: the committed front-stage encodings and
-// solve figures of every task in tasks/, re-run and compared. A change for
+// solve figures of every task in tasks/, planar and spatial, re-run and
+// compared. A change for
 // the worse (a status lost, a claim of infeasibility appearing or vanishing,
 // another core, a longer robot) exits 1; a change for the better is reported
 // and passes, since the figures are expected to improve with the solver.
@@ -9,6 +10,7 @@
 #include <modsynth/io/task_io.h>
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/smt/front_stage.h>
+#include <modsynth/smt/spatial_front_stage.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
@@ -162,6 +164,30 @@ FrontFigures run_front(const task::Task& task, int dof) {
     return f;
 }
 
+// The spatial front stage's relaxation, as the suite records the plane's:
+// its encoding, its answer and, when unsat, its minimal core.
+FrontFigures run_front(const task::SpatialTask& task, int dof) {
+    const run::Stopwatch t0;
+    smt::SpatialFrontStage front(task, dof);
+    FrontFigures f;
+    f.dof = dof;
+    f.encoding = front.smtlib();
+    switch (front.check()) {
+        case smt::SpatialFrontStage::Result::Sat:
+            f.result = smt::FrontStage::Result::Sat;
+            break;
+        case smt::SpatialFrontStage::Result::Unsat:
+            f.result = smt::FrontStage::Result::Unsat;
+            f.core = task::to_strings(front.minimal_core());
+            break;
+        case smt::SpatialFrontStage::Result::Unknown:
+            f.result = smt::FrontStage::Result::Unknown;
+            break;
+    }
+    f.seconds = t0.seconds();
+    return f;
+}
+
 std::vector<Entry> discover(const RegressArgs& a) {
     std::vector<Entry> out;
     for (const auto& path : find_task_files(a.tasks)) {
@@ -169,16 +195,14 @@ std::vector<Entry> discover(const RegressArgs& a) {
         e.task_path = path;
         e.key = key_of(path, a.tasks);
         try {
-            io::TaskDocument doc = io::load_task_document(path);
-            // Spatial tasks have no committed encodings yet: said, not judged.
-            if (std::holds_alternative<task::SpatialTask>(doc)) {
-                std::printf("%s: spatial task skipped (regress judges planar tasks only)\n",
-                            e.key.c_str());
-                continue;
-            }
-            const task::Task t = std::get<task::Task>(std::move(doc));
-            e.now.name = t.name;
-            for (int dof : t.robot.dof) e.now.front.push_back(run_front(t, dof));
+            // Either kind: its own front stage per joint count, the same
+            // figures, and the same `modsynth solve` in a child process.
+            std::visit(
+                [&](const auto& t) {
+                    e.now.name = t.name;
+                    for (int dof : t.robot.dof) e.now.front.push_back(run_front(t, dof));
+                },
+                io::load_task_document(path));
         } catch (const task::InputError& err) {
             e.error = err.what();
         }

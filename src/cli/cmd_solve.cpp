@@ -24,8 +24,8 @@
 
 #include "command.h"
 #include "number_checks.h"
+#include "solve_guard.h"
 #include "spatial_solve.h"
-#include "watchdog.h"
 
 namespace modsynth::app {
 namespace {
@@ -111,9 +111,6 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
     if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
 }
 
-// Past the time limit by this much, the watchdog answers for the run.
-constexpr double kWatchdogMargin = 0.6;
-
 /// The part of the time limit kept for what follows the search: module
 /// choice and writing the solution and the exports take about 0.3 ms per
 /// primitive (zigzag of 3,000 primitives, 127,036 samples: 1.0 s), and a
@@ -128,28 +125,17 @@ int run_solve(const SolveArgs& a) {
     const run::Stopwatch clock;
     io::TaskDocument doc = io::load_task_document(a.task);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
-        return run_spatial_solve(
-            *spatial,
-            {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed, a.quiet, a.exports},
-            clock.started());
+        return run_spatial_solve(*spatial,
+                                 {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed,
+                                  a.quiet, a.events, a.exports},
+                                 clock.started());
     const task::Task task = std::get<task::Task>(std::move(doc));
     const auto elapsed = [&] { return clock.seconds(); };
-    Watchdog watchdog(a.time_limit + kWatchdogMargin - elapsed(), [&] {
-        synth::Solution unknown;
-        unknown.task_name = task.name;
-        unknown.status =
-            synth::Status(synth::Status::Unknown, text::printable(watchdog.stage(), 200),
-                          text::format("time limit (%.3g s)", a.time_limit));
-        unknown.explanation.message = "No certified robot found within the " +
-                                      unknown.status.reason +
-                                      "; the last stage reached: " + unknown.status.stage + ".";
-        io::write_solution(unknown, a.output);
-        // The same files as any other answer: a report that says "unknown"
-        // and why, and a note for each export an unknown answer cannot give.
-        for (const auto& note : output::write_exports(task, unknown, a.exports, {}))
-            std::fprintf(stderr, "note: %s\n", note.c_str());
+    // The same files as any other answer: a report that says "unknown" and
+    // why, and a note for each export an unknown answer cannot give.
+    SolveGuard guard(task.name, a.time_limit, elapsed(), [&](const synth::Solution& unknown) {
+        write_answer(task, unknown, a.output, a.exports);
         print_summary(task, unknown, elapsed(), {}, a.output);
-        return int{kUnknown};
     });
     synth::SynthesisOptions options;
     options.time_limit =
@@ -159,39 +145,19 @@ int run_solve(const SolveArgs& a) {
     options.shorten_gap = a.shorten_gap;
     options.retime.ee_speed = a.ee_speed;
     options.retime.joint_speed = a.joint_speed;
-    std::ofstream events;
-    if (!a.events.empty()) {
-        events.open(a.events, std::ios::trunc);
-        if (!events) throw task::InputError(a.events, "cannot be written");
-    }
-    options.progress = [&](const run::ProgressEvent& e) {
-        watchdog.set_stage(e.message);
-        if (!a.quiet) std::cerr << run::console_line(e) << std::endl;
-        if (events.is_open()) events << io::progress_json_line(e) << std::endl;
-    };
+    SolveProgress progress(a.events, a.quiet);
+    options.progress = progress.sink(guard);
     synth::SynthesisStats stats;
     const synth::Solution solution = synth::solve(task, options, &stats);
     const double seconds = elapsed();
-    watchdog.claim();
+    guard.claim();
     for (const auto& note : stats.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
     const std::string overload = synth::overload_warning(solution);
     if (!overload.empty()) std::fprintf(stderr, "warning: %s\n", overload.c_str());
-    io::write_solution(solution, a.output);
-    for (const auto& note : output::write_exports(
-             task, solution, a.exports,
-             {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}})) {
-        std::fprintf(stderr, "note: %s\n", note.c_str());
-    }
+    write_answer(task, solution, a.output, a.exports,
+                 {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}});
     print_summary(task, solution, seconds, stats, a.output, a.ee_speed);
-    switch (solution.status) {
-        case synth::Status::Solved:
-            return kOk;
-        case synth::Status::Infeasible:
-            return kInfeasible;
-        case synth::Status::Unknown:
-            return kUnknown;
-    }
-    return kInternal;
+    return exit_code(solution.status);
 }
 
 }  // namespace

@@ -5,22 +5,16 @@
 #include <cstdio>
 #include <iostream>
 
-#include <modsynth/hardware/select_dh_modules.h>
-#include <modsynth/io/solution_io.h>
-#include <modsynth/synth/spatial_module_choice.h>
-#include <modsynth/synth/spatial_synthesizer.h>
+#include <modsynth/synth/module_choice.h>
+#include <modsynth/synth/solve.h>
 #include <modsynth/task/part.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
-#include "command.h"
-#include "watchdog.h"
+#include "solve_guard.h"
 
 namespace modsynth::app {
 namespace {
-
-// Past the time limit by this much, the watchdog answers for the run.
-constexpr double kWatchdogMargin = 0.6;
 
 std::string chain_summary(const kinematics::DhChain& c) {
     std::string rows;
@@ -70,57 +64,28 @@ int run_spatial_solve(const task::SpatialTask& task, const SpatialSolveRequest& 
     const auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
-    Watchdog watchdog(a.time_limit + kWatchdogMargin - elapsed(), [&] {
-        synth::Solution unknown;
-        unknown.task_name = task.name;
-        unknown.status =
-            synth::Status(synth::Status::Unknown, text::printable(watchdog.stage(), 200),
-                          text::format("time limit (%.3g s)", a.time_limit));
-        unknown.explanation.message = "No certified robot found within the " +
-                                      unknown.status.reason +
-                                      "; the last stage reached: " + unknown.status.stage + ".";
-        io::write_solution(unknown, a.output);
-        for (const auto& note : output::write_exports(task, unknown, a.exports, {}))
-            std::fprintf(stderr, "note: %s\n", note.c_str());
+    SolveGuard guard(task.name, a.time_limit, elapsed(), [&](const synth::Solution& unknown) {
+        write_answer(task, unknown, a.output, a.exports);
         print_summary(task, unknown, elapsed(), {}, a.output);
-        return int{kUnknown};
     });
-    std::string catalog_note;
-    const std::optional<hardware::Catalog> catalog = hardware::spatial_catalog(task, &catalog_note);
-    if (!catalog_note.empty() && !a.quiet) std::fprintf(stderr, "note: %s\n", catalog_note.c_str());
     synth::SpatialSynthesisOptions options;
     options.time_limit = std::max(0.0, a.time_limit - elapsed());
     options.seed = a.seed;
     options.retime.ee_speed = a.ee_speed;
-    options.retime.joint_speed = std::min(a.joint_speed, hardware::module_speed_cap(task, catalog));
-    options.progress = [&](const std::string& line) {
-        watchdog.set_stage(line.size() > 11 ? line.substr(11) : line);  // without the clock
-        if (!a.quiet) std::cerr << line << std::endl;
-    };
+    options.retime.joint_speed = a.joint_speed;
+    SolveProgress progress(a.events, a.quiet);
+    options.progress = progress.sink(guard);
     synth::SynthesisStats stats;
-    synth::Solution solution = synth::synthesize(task, options, &stats);
+    const synth::Solution solution = synth::solve(task, options, &stats);
     const double seconds = elapsed();
-    watchdog.claim();
-    synth::choose_modules(task, catalog, solution);
-    if (solution.modules && solution.modules->checked && !solution.modules->carried())
-        std::fprintf(stderr, "warning: the certified robot overloads its modules: %s\n",
-                     solution.modules->message.c_str());
-    io::write_solution(solution, a.output);
-    for (const auto& note : output::write_exports(
-             task, solution, a.exports,
-             {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}})) {
-        std::fprintf(stderr, "note: %s\n", note.c_str());
-    }
+    guard.claim();
+    for (const auto& note : stats.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+    const std::string overload = synth::overload_warning(solution);
+    if (!overload.empty()) std::fprintf(stderr, "warning: %s\n", overload.c_str());
+    write_answer(task, solution, a.output, a.exports,
+                 {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}});
     print_summary(task, solution, seconds, stats, a.output);
-    switch (solution.status) {
-        case synth::Status::Solved:
-            return kOk;
-        case synth::Status::Infeasible:
-            return kInfeasible;
-        case synth::Status::Unknown:
-            return kUnknown;
-    }
-    return kInternal;
+    return exit_code(solution.status);
 }
 
 }  // namespace modsynth::app

@@ -19,6 +19,7 @@ struct SpatialSolveRequest {
     double ee_speed = std::numeric_limits<double>::infinity();
     double joint_speed = std::numeric_limits<double>::infinity();
     bool quiet = false;
+    std::string events;  ///< where progress events go as JSON lines, if anywhere
     /// The files asked for beside the solution (--report, --urdf, ...).
     output::ExportPaths exports;
 };

@@ -80,7 +80,7 @@ public:
         double u = from, du = first_step;
         while (to - u > 1e-12) {
             if (out_.size() >= opt_.max_samples ||
-                (out_.size() % 1024 == 0 && std::chrono::steady_clock::now() >= opt_.deadline)) {
+                (out_.size() % 1024 == 0 && opt_.deadline.expired())) {
                 *gave_up = true;
                 *failed_at = u;
                 return false;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include <modsynth/explanation/spatial_explanation.h>
 #include <modsynth/run/stopwatch.h>
+#include <modsynth/synth/spatial_synthesizer.h>
 #include <modsynth/synth/synthesizer.h>
 #include <modsynth/text/option_check.h>
 
@@ -16,7 +18,17 @@ bool ExplainOptions::IsValid(std::string* error) const {
         .ok();
 }
 
-Explanation explain(const task::Task& task, const ExplainOptions& options) {
+namespace {
+
+std::string unproved_message(const task::Task&, const InfeasibilityProof& proof,
+                             const synth::Solution& s) {
+    return unproved_message(proof, s);
+}
+
+// Prove, else solve, else suggest: one flow for both kinds of task; the
+// provers, the synthesis and the relaxers are the kind's own.
+template <class TaskT, class Solve>
+Explanation explain_flow(const TaskT& task, const ExplainOptions& options, Solve solve) {
     text::require_valid(options);
     const run::Stopwatch clock;
     const run::Deadline deadline = run::Deadline::in(options.time_limit);
@@ -31,18 +43,16 @@ Explanation explain(const task::Task& task, const ExplainOptions& options) {
     if (!proof.proved) {
         // Not proved infeasible: say what a full run finds.
         say(run::Stage::Search, "solving the task");
-        synth::SynthesisOptions o;
-        o.time_limit = left();
-        const synth::Solution s = synth::synthesize(task, o);
+        const synth::Solution s = solve(left());
         out.status = s.status;
-        out.message = unproved_message(proof, s);
+        out.message = unproved_message(task, proof, s);
         out.core = s.explanation.core;
         out.separation = s.explanation.separation;
         out.geodesic = s.explanation.geodesic;
         return out;
     }
     out.proved = true;
-    out.status = synth::Status::Infeasible;
+    out.status = synth::Status(synth::Status::Kind::Infeasible);
     out.message = proved_message(proof);
     out.core = proof.core;
     out.separation = proof.separation;
@@ -51,6 +61,24 @@ Explanation explain(const task::Task& task, const ExplainOptions& options) {
     say(run::Stage::Explanation, "looking for the smallest changes");
     out.suggestions = suggest_relaxations(task, proof.core, options.solve_seconds, left());
     return out;
+}
+
+}  // namespace
+
+Explanation explain(const task::Task& task, const ExplainOptions& options) {
+    return explain_flow(task, options, [&](double seconds) {
+        synth::SynthesisOptions o;
+        o.time_limit = seconds;
+        return synth::synthesize(task, o);
+    });
+}
+
+Explanation explain(const task::SpatialTask& task, const ExplainOptions& options) {
+    return explain_flow(task, options, [&](double seconds) {
+        synth::SpatialSynthesisOptions o;
+        o.time_limit = seconds;
+        return synth::synthesize(task, o);
+    });
 }
 
 }  // namespace modsynth::explanation

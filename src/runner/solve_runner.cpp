@@ -5,8 +5,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <variant>
 
 #include <modsynth/io/solution_io.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/text/format.h>
 
@@ -111,7 +113,7 @@ void read_solution(const std::string& path, SolveOutcome& o) {
 /// The task's name, or the file's stem when the task cannot be read.
 std::string task_name(const std::string& task_path) {
     try {
-        return io::load_task(task_path).name;
+        return std::visit([](const auto& t) { return t.name; }, io::load_task_document(task_path));
     } catch (const task::InputError&) {
         return task_stem(task_path);
     }

@@ -21,7 +21,6 @@
 
 #include "import_runner.h"
 #include "loopback.h"
-#include "planar_task.h"
 #include "solve_jobs.h"
 #include "stream_slots.h"
 #include "web_assets.h"
@@ -501,7 +500,8 @@ private:
         if (!doc) return;
         double time_limit = 0.0;
         try {
-            parse_planar_task(*doc, "serve");
+            // Either kind: the child `modsynth solve` (and `explain`) take both.
+            io::parse_task_document(*doc);
             time_limit = query_number(req, "time_limit").value_or(0.0);
         } catch (const task::InputError& e) {
             send_error(res, e.part() == "time_limit" ? 400 : 422, e.what(), e.part());

@@ -8,6 +8,7 @@
 
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/geometry/vec.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -16,6 +17,11 @@ namespace modsynth::smt {
 namespace {
 
 using geometry::Vec3;
+using task::RobotKey;
+using task::TaskPart;
+
+const TaskPart kMinLink = TaskPart::robot(RobotKey::MinLinkLength);
+const TaskPart kMaxLink = TaskPart::robot(RobotKey::MaxLinkLength);
 
 std::string decimal(double v) { return text::format("%.12f", v); }
 
@@ -54,8 +60,8 @@ struct SpatialFrontStage::Impl {
     // are proofs); `pattern` those of the yaw column and pitch links.
     z3::solver relaxation;
     z3::solver pattern;
-    std::vector<std::string> names;  // assumption literals, in creation order
-    std::map<std::string, z3::expr> literal_of;
+    std::vector<task::TaskPart> names;  // parts with an assumption literal, in creation order
+    std::map<task::TaskPart, z3::expr> literal_of;
     std::vector<z3::expr> regions;          // the relaxation's region choices
     std::vector<z3::expr> pattern_regions;  // the pattern's
     z3::expr up, down, none;                // the pattern's column sign
@@ -102,12 +108,8 @@ struct SpatialFrontStage::Impl {
         if (column_twist != 0) encode_pattern();
     }
 
-    double seconds_left() const {
-        if (options.deadline == std::chrono::steady_clock::time_point::max()) return 1e9;
-        return std::chrono::duration<double>(options.deadline - std::chrono::steady_clock::now())
-            .count();
-    }
-    bool expired() const { return seconds_left() <= 0.0; }
+    double seconds_left() const { return options.deadline.remaining(); }
+    bool expired() const { return options.deadline.expired(); }
 
     void set_timeout(z3::solver& s, double seconds) {
         z3::params p(ctx);
@@ -119,16 +121,18 @@ struct SpatialFrontStage::Impl {
 
     z3::expr num(double v) { return ctx.real_val(decimal(v).c_str()); }
 
-    z3::expr literal(const std::string& name) {
-        auto it = literal_of.find(name);
+    // The literal's name is the part's, so that SMT-LIB scripts read as the
+    // task does; the part itself travels beside it.
+    z3::expr literal(const task::TaskPart& part) {
+        auto it = literal_of.find(part);
         if (it != literal_of.end()) return it->second;
-        z3::expr l = ctx.bool_const(name.c_str());
-        literal_of.emplace(name, l);
-        names.push_back(name);
+        z3::expr l = ctx.bool_const(task::to_string(part).c_str());
+        literal_of.emplace(part, l);
+        names.push_back(part);
         return l;
     }
 
-    void require(z3::solver& s, std::initializer_list<std::string> parts, const z3::expr& e) {
+    void require(z3::solver& s, std::initializer_list<task::TaskPart> parts, const z3::expr& e) {
         z3::expr_vector guards(ctx);
         for (const auto& part : parts) guards.push_back(literal(part));
         s.add(z3::implies(z3::mk_and(guards), e));
@@ -155,7 +159,7 @@ struct SpatialFrontStage::Impl {
             out.push_back(in);
             any.push_back(in);
         }
-        require(s, {"base_regions"}, z3::mk_or(any));
+        require(s, {TaskPart::base_regions()}, z3::mk_or(any));
         return out;
     }
 
@@ -170,9 +174,11 @@ struct SpatialFrontStage::Impl {
         // |a_k| + |d_k|.
         const double reach = dof * 2.0 * task.robot.max_link_length + options.slack;
         for (std::size_t j = 0; j < points.size(); ++j) {
-            const std::string part = task::part_name(task, static_cast<int>(j));
+            const TaskPart part = task::primitive_part(task, static_cast<int>(j));
             for (const Vec3& p : points[j])
-                require(relaxation, {part, "robot.max_link_length", "robot.dof"},
+                require(relaxation,
+                        {part, TaskPart::robot(RobotKey::MaxLinkLength),
+                         TaskPart::robot(RobotKey::Dof)},
                         dist2(p, bz) <= num(reach * reach));
         }
         // With every twist 0 or pi, every joint axis is vertical: the EE
@@ -183,9 +189,9 @@ struct SpatialFrontStage::Impl {
             const z3::expr h = ctx.real_const("ee_height");
             const double tol = options.height_tolerance + options.slack;
             for (std::size_t j = 0; j < points.size(); ++j) {
-                const std::string part = task::part_name(task, static_cast<int>(j));
+                const TaskPart part = task::primitive_part(task, static_cast<int>(j));
                 for (const Vec3& p : points[j])
-                    require(relaxation, {part, "robot.twists"},
+                    require(relaxation, {part, TaskPart::robot(RobotKey::Twists)},
                             h - num(p.z()) <= num(tol) && num(p.z()) - h <= num(tol));
             }
         }
@@ -197,7 +203,7 @@ struct SpatialFrontStage::Impl {
         const double e = options.slack;
         const double lo = spec.min_link_length - e, hi = spec.max_link_length + e;
         // Exactly one column sign is assumed per skeleton.
-        require(pattern, {"robot.min_link_length", "robot.max_link_length"},
+        require(pattern, {kMinLink, kMaxLink},
                 z3::implies(up, column >= num(lo) && column <= num(hi)) &&
                     z3::implies(down, column <= num(-lo) && column >= num(-hi)));
         pattern.add(z3::implies(none, column == 0));
@@ -205,19 +211,19 @@ struct SpatialFrontStage::Impl {
         for (int k = 0; k < 2; ++k) {
             links.push_back(ctx.real_const(("a" + std::to_string(k + 2)).c_str()));
             pattern.add(links.back() > 0);
-            require(pattern, {"robot.min_link_length"}, links.back() >= num(lo));
-            require(pattern, {"robot.max_link_length"}, links.back() <= num(hi));
+            require(pattern, {kMinLink}, links.back() >= num(lo));
+            require(pattern, {kMaxLink}, links.back() <= num(hi));
         }
         z3::expr hand = num(0.0);
         if (hands > 0) {
             hand = ctx.real_const("hand");
-            require(pattern, {"robot.min_link_length"}, hand >= num(hands * lo));
-            require(pattern, {"robot.max_link_length"}, hand <= num(hands * hi));
+            require(pattern, {kMinLink}, hand >= num(hands * lo));
+            require(pattern, {kMaxLink}, hand <= num(hands * hi));
             links.push_back(hand);
         }
         // The tool is part of the last link.
         if (spec.tool_length > 0.0)
-            require(pattern, {"robot.tool_length"},
+            require(pattern, {TaskPart::robot(RobotKey::ToolLength)},
                     hands > 0 ? hand >= num(spec.tool_length + (hands - 1) * lo)
                               : links[1] >= num(spec.tool_length - e));
         const z3::expr sz = bz + column;
@@ -226,7 +232,7 @@ struct SpatialFrontStage::Impl {
         const z3::expr inner_b = links[1] - links[0] - hand;
         const double axis = std::max(0.0, options.axis_margin - e);
         for (std::size_t j = 0; j < points.size(); ++j) {
-            const std::string part = task::part_name(task, static_cast<int>(j));
+            const TaskPart part = task::primitive_part(task, static_cast<int>(j));
             for (const Vec3& p : points[j]) {
                 const z3::expr d2 = dist2(p, sz);
                 require(pattern, {part}, d2 <= outer * outer + num(e));
@@ -266,7 +272,7 @@ SpatialFrontStage::Result SpatialFrontStage::check() { return impl_->check(); }
 
 bool SpatialFrontStage::pattern_allowed() const { return impl_->column_twist != 0; }
 
-std::vector<std::string> SpatialFrontStage::minimal_core() {
+std::vector<task::TaskPart> SpatialFrontStage::minimal_core() {
     Impl& m = *impl_;
     z3::solver& s = m.relaxation;
     if (m.expired()) return {};
@@ -303,7 +309,7 @@ std::vector<std::string> SpatialFrontStage::minimal_core() {
         }
     }
     // In the order the literals were made (the task's order), not Z3's.
-    std::vector<std::string> out;
+    std::vector<task::TaskPart> out;
     for (const auto& n : m.names)
         if (std::any_of(kept.begin(), kept.end(),
                         [&](const z3::expr& e) { return z3::eq(e, m.literal_of.at(n)); }))
@@ -311,7 +317,7 @@ std::vector<std::string> SpatialFrontStage::minimal_core() {
     return out;
 }
 
-bool SpatialFrontStage::conflicts(const std::vector<std::string>& parts) {
+bool SpatialFrontStage::conflicts(const std::vector<task::TaskPart>& parts) {
     Impl& m = *impl_;
     if (m.expired()) return false;
     z3::expr_vector a(m.ctx);
@@ -367,7 +373,7 @@ std::string SpatialFrontStage::smtlib() const {
         if (pos != std::string::npos) text.erase(pos);
         text += "(check-sat-assuming (";
         for (std::size_t i = 0; i < impl_->names.size(); ++i)
-            text += (i ? " |" : "|") + impl_->names[i] + "|";
+            text += (i ? " |" : "|") + task::to_string(impl_->names[i]) + "|";
         return text + "))\n";
     };
     return "; relaxation (any chain)\n" + script(impl_->relaxation) +

@@ -206,7 +206,7 @@ double design_margin(const task::SpatialTask& task, const kinematics::YawPitchDe
 std::vector<ScoredDesign> spatial_initial_guesses(const task::SpatialTask& task,
                                                   const smt::SpatialSkeleton& skeleton, int count,
                                                   unsigned seed, const nlp::SpatialMargins& margins,
-                                                  std::chrono::steady_clock::time_point deadline,
+                                                  const run::Deadline& deadline,
                                                   const SpatialGuessOptions& options) {
     text::require_valid(options);
     const auto& spec = task.robot;
@@ -288,7 +288,7 @@ std::vector<ScoredDesign> spatial_initial_guesses(const task::SpatialTask& task,
     const Scorer scorer(task, margins, skeleton.column);
     std::vector<ScoredDesign> clear, unclear;
     for (std::size_t i = 0; i < drawn.size(); ++i) {
-        if (i % 16 == 0 && std::chrono::steady_clock::now() >= deadline) break;
+        if (i % 16 == 0 && deadline.expired()) break;
         auto& d = drawn[i];
         if (std::any_of(clear.begin(), clear.end(), [&](const ScoredDesign& s) {
                 return near(s.design, d, options.distinct_distance);

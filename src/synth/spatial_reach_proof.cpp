@@ -26,7 +26,8 @@ double longest_chain(int dof, double max_link_length) { return dof * 2.0 * max_l
 
 }  // namespace
 
-std::optional<std::vector<std::string>> spatial_out_of_reach_core(const task::SpatialTask& task) {
+std::optional<std::vector<task::TaskPart>> spatial_out_of_reach_core(
+    const task::SpatialTask& task) {
     if (task.base_regions.empty() || task.robot.dof.empty()) return std::nullopt;
     const double reach = task.robot.longest_chain();
     // Of the primitives out of reach, the one farthest out: the part a user
@@ -38,19 +39,20 @@ std::optional<std::vector<std::string>> spatial_out_of_reach_core(const task::Sp
         if (d > most) most = d, farthest_out = j;
     }
     if (farthest_out < 0) return std::nullopt;
-    std::vector<std::string> core{"robot.max_link_length", "base_regions",
-                                  task::part_name(task, farthest_out)};
+    std::vector<task::TaskPart> core{task::TaskPart::robot(task::RobotKey::MaxLinkLength),
+                                     task::TaskPart::base_regions(),
+                                     task::primitive_part(task, farthest_out)};
     // robot.dof belongs when more joints than it allows would reach.
     if (!(most > longest_chain(task::kMaxSpatialDof, task.robot.max_link_length) + 1e-9))
-        core.push_back("robot.dof");
+        core.push_back(task::TaskPart::robot(task::RobotKey::Dof));
     return core;
 }
 
 std::string describe_spatial_reach(const task::SpatialTask& task,
-                                   const std::vector<std::string>& core) {
+                                   const std::vector<task::TaskPart>& core) {
     int j = -1;
     for (int k = 0; k < static_cast<int>(task.trajectory.size()); ++k)
-        if (std::find(core.begin(), core.end(), task::part_name(task, k)) != core.end()) j = k;
+        if (std::find(core.begin(), core.end(), task::primitive_part(task, k)) != core.end()) j = k;
     if (j < 0) return "a primitive is out of reach from every base region";
     const int dof = *std::max_element(task.robot.dof.begin(), task.robot.dof.end());
     return text::format(

@@ -12,6 +12,7 @@
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/nlp/solver.h>
 #include <modsynth/run/deadline.h>
+#include <modsynth/run/stopwatch.h>
 #include <modsynth/synth/design_choice.h>
 #include <modsynth/synth/spatial_reach_proof.h>
 #include <modsynth/task/part.h>
@@ -23,23 +24,18 @@
 namespace modsynth::synth {
 namespace {
 
-// The spatial front stage and reach proof name their assumptions as the
-// document does; a core holds them as parts.
-std::vector<task::TaskPart> parts_of(const std::vector<std::string>& names) {
-    std::vector<task::TaskPart> parts;
-    for (const auto& name : names) {
-        const std::optional<task::TaskPart> part = task::parse_task_part(name);
-        if (!part) throw std::logic_error("a spatial core names no task part: " + name);
-        parts.push_back(*part);
-    }
-    return parts;
-}
-
 using Clock = std::chrono::steady_clock;
 using geometry::Vec3;
+using run::Stage;
 
 double seconds_since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string join(const std::vector<task::TaskPart>& parts, const char* sep) {
+    std::string s;
+    for (std::size_t i = 0; i < parts.size(); ++i) s += (i ? sep : "") + task::to_string(parts[i]);
+    return s;
 }
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
@@ -89,9 +85,10 @@ class Search {
 public:
     Search(const task::SpatialTask& task, const SpatialSynthesisOptions& options,
            SynthesisStats& stats)
-        : task_(task), opt_(options), stats_(stats), start_(Clock::now()) {
-        deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(
-                                 std::chrono::duration<double>(std::max(0.0, opt_.time_limit)));
+        : task_(task),
+          opt_(options),
+          stats_(stats),
+          deadline_(run::Deadline::in(std::max(0.0, options.time_limit))) {
         motion_ = opt_.motion;
         motion_.deadline = deadline_;
         verify_ = verify_options_for(task, opt_);
@@ -106,10 +103,10 @@ private:
         std::size_t next = 0;  ///< the next guess to refine
     };
 
-    double remaining() const { return opt_.time_limit - seconds_since(start_); }
-    void say(const std::string& line) {
-        stage_ = line;
-        if (opt_.progress) opt_.progress(text::format("[%7.3fs] ", seconds_since(start_)) + line);
+    double remaining() const { return deadline_.remaining(); }
+    void say(Stage stage, const std::string& message) {
+        stage_ = message;
+        if (opt_.progress) opt_.progress({stage, message, clock_.seconds()});
     }
     std::optional<Solution> refine(const smt::SpatialSkeleton& skeleton, const ScoredDesign& start);
     Verdict judge(const kinematics::YawPitchDesign& design);
@@ -120,7 +117,8 @@ private:
     const task::SpatialTask& task_;
     const SpatialSynthesisOptions& opt_;
     SynthesisStats& stats_;
-    Clock::time_point start_, deadline_;
+    const run::Stopwatch clock_;
+    const run::Deadline deadline_;
     control::SpatialMotionOptions motion_;
     verify::VerifyOptions verify_;
     std::vector<std::string> tried_;
@@ -135,14 +133,14 @@ Solution Search::run() {
         stats_.front_seconds += seconds_since(t_reach);
         out.status = Status::Infeasible;
         out.explanation.message = "Proved infeasible: " + describe_spatial_reach(task_, *core);
-        out.explanation.core = parts_of(*core);
-        say("reach: " + out.explanation.message);
+        out.explanation.core = *core;
+        say(Stage::Proofs, "reach: " + out.explanation.message);
         return out;
     }
     stats_.front_seconds += seconds_since(t_reach);
     std::vector<int> dofs = task_.robot.dof;
     std::sort(dofs.begin(), dofs.end());
-    std::vector<std::vector<std::string>> cores;
+    std::vector<std::vector<task::TaskPart>> cores;
     bool all_unsat = true;
     std::vector<Entry> all;  // every skeleton searched, for the later passes
     for (int dof : dofs) {
@@ -155,7 +153,7 @@ Solution Search::run() {
         fo.time_limit = std::min(fo.time_limit, std::max(0.05, remaining()));
         fo.deadline = deadline_;
         fo.axis_margin = opt_.margins.axis;
-        say(std::to_string(dof) + " joints: front stage");
+        say(Stage::FrontStage, std::to_string(dof) + " joints: front stage");
         smt::SpatialFrontStage front(task_, dof, fo);
         const auto result = front.check();
         if (result == smt::SpatialFrontStage::Result::Unsat) {
@@ -163,8 +161,9 @@ Solution Search::run() {
                                             [&](const auto& c) { return front.conflicts(c); });
             cores.push_back(known != cores.end() ? *known : front.minimal_core());
             stats_.front_seconds += seconds_since(t0);
-            say(std::to_string(dof) + " joints: proved infeasible, conflict between " +
-                join(cores.back(), ", "));
+            say(Stage::FrontStage, std::to_string(dof) +
+                                       " joints: proved infeasible, conflict between " +
+                                       join(cores.back(), ", "));
             tried_.push_back(std::to_string(dof) + " joints proved infeasible (" +
                              join(cores.back(), ", ") + ")");
             continue;
@@ -172,15 +171,16 @@ Solution Search::run() {
         all_unsat = false;
         if (result == smt::SpatialFrontStage::Result::Unknown) {
             stats_.front_seconds += seconds_since(t0);
-            say(std::to_string(dof) + " joints: front stage gave up (" + front.reason_unknown() +
-                ")");
+            say(Stage::FrontStage, std::to_string(dof) + " joints: front stage gave up (" +
+                                       front.reason_unknown() + ")");
             tried_.push_back(std::to_string(dof) + " joints: front stage undecided");
             continue;
         }
         if (!front.pattern_allowed()) {
             stats_.front_seconds += seconds_since(t0);
-            say(std::to_string(dof) +
-                " joints: robot.twists has no 0 and +-pi/2 for a yaw column with pitch links");
+            say(Stage::FrontStage,
+                std::to_string(dof) +
+                    " joints: robot.twists has no 0 and +-pi/2 for a yaw column with pitch links");
             tried_.push_back(std::to_string(dof) +
                              " joints: the only chain pattern modsynth designs, a yaw column "
                              "(twist +-pi/2) with pitch links (twist 0), is not allowed by "
@@ -190,7 +190,8 @@ Solution Search::run() {
         const double relaxed = seconds_since(t0);
         std::vector<smt::SpatialSkeleton> skeletons = front.skeletons();
         stats_.front_seconds += seconds_since(t0);
-        say(text::format("%d joints: relaxation satisfiable (%.3f s), %zu skeleton(s) (%.3f s)",
+        say(Stage::FrontStage,
+            text::format("%d joints: relaxation satisfiable (%.3f s), %zu skeleton(s) (%.3f s)",
                          dof, relaxed, skeletons.size(), seconds_since(t0) - relaxed));
         if (skeletons.empty()) {
             tried_.push_back(std::to_string(dof) +
@@ -219,8 +220,9 @@ Solution Search::run() {
             Entry& e = entries[i];
             ++stats_.skeletons;
             const ScoredDesign& g = e.guesses[e.next++];
-            say(describe(e.skeleton) +
-                text::format(": start %s, margin %.4f m", describe(g.design).c_str(), g.margin));
+            say(Stage::Search,
+                describe(e.skeleton) + text::format(": start %s, margin %.4f m",
+                                                    describe(g.design).c_str(), g.margin));
             if (auto found = refine(e.skeleton, g))
                 return timed(shorten(entries, i, std::move(*found)));
         }
@@ -243,7 +245,8 @@ Solution Search::run() {
                 if (e.guesses.empty()) continue;
             }
             const ScoredDesign& g = e.guesses[e.next++];
-            say(describe(e.skeleton) + text::format(" (pass %u): start %s, margin %.4f m", pass,
+            say(Stage::Search,
+                describe(e.skeleton) + text::format(" (pass %u): start %s, margin %.4f m", pass,
                                                     describe(g.design).c_str(), g.margin));
             if (auto found = refine(e.skeleton, g)) {
                 tried_.push_back(text::format("more initial guesses in %u pass(es)", pass));
@@ -254,11 +257,11 @@ Solution Search::run() {
     if (all_unsat && !cores.empty()) {
         out.status = Status::Infeasible;
         // A core shared by every joint count (or the union of theirs).
-        std::vector<std::string> core;
+        std::vector<task::TaskPart> core;
         for (const auto& c : cores)
             for (const auto& part : c)
                 if (std::find(core.begin(), core.end(), part) == core.end()) core.push_back(part);
-        out.explanation.core = parts_of(core);
+        out.explanation.core = core;
         out.explanation.message =
             "Proved infeasible: no chain of " +
             std::string(dofs.size() > 1 ? "any allowed joint count" : "the allowed joint count") +
@@ -311,7 +314,7 @@ std::optional<Solution> Search::refine(const smt::SpatialSkeleton& skeleton,
         const nlp::SpatialFormulation f(problem);
         nlp::SolverOptions so;
         so.time_limit = std::min(opt_.solve_seconds, std::max(0.05, remaining()));
-        so.deadline = run::Deadline::in(std::max(0.05, remaining()));
+        so.deadline = deadline_.at_least(0.05);
         so.max_iterations = opt_.solve_iterations;
         const nlp::SolverResult res = nlp::minimize(f, so);
         stats_.refine_seconds += seconds_since(t0);
@@ -319,15 +322,16 @@ std::optional<Solution> Search::refine(const smt::SpatialSkeleton& skeleton,
         kinematics::YawPitchDesign design = problem.start;
         if (res.usable()) {
             design = f.design(res.x);
-            say(
+            say(Stage::Refinement,
                 text::format("    refined: %s with %zu points, %d constraints, in %d iterations, "
                              "%.3f s",
                              describe(design).c_str(), problem.points.size(), f.num_constraints(),
                              res.iterations, seconds_since(t0)));
         } else {
-            say(text::format("    refinement did not converge in %d iterations, %.3f s (",
+            say(Stage::Refinement,
+                text::format("    refinement did not converge in %d iterations, %.3f s (",
                              res.iterations, seconds_since(t0)) +
-                res.message + ")");
+                    res.message + ")");
             // A clear start may still be certified as it is.
             if (round > 0 || start.margin < 0.0) return std::nullopt;
         }
@@ -351,11 +355,11 @@ Verdict Search::judge(const kinematics::YawPitchDesign& design) {
     if (!samples) {
         stats_.verify_seconds += seconds_since(t0);
         if (failure.gave_up) {
-            say("    motion: gave up (" + failure.message + ")");
+            say(Stage::Verification, "    motion: gave up (" + failure.message + ")");
             verdict.gave_up = true;
             return verdict;
         }
-        say("    motion: out of reach at " + failure.message);
+        say(Stage::Verification, "    motion: out of reach at " + failure.message);
         if (failure.travel) {
             verdict.gave_up = true;  // nothing a path point could fix
             return verdict;
@@ -374,10 +378,11 @@ Verdict Search::judge(const kinematics::YawPitchDesign& design) {
         verify::Certificate cert = verify::certify(task_, chain, *samples, verify_);
         if (cert.ok) {
             stats_.verify_seconds += seconds_since(t0);
-            say(text::format(
-                "    certified: %zu samples, clearance margin %.4f m, self-collision "
-                "margin %.4f m, EE deviation <= %.2e m",
-                samples->size(), cert.min_clearance, cert.min_self_clearance, cert.max_deviation));
+            say(Stage::Verification,
+                text::format("    certified: %zu samples, clearance margin %.4f m, self-collision "
+                             "margin %.4f m, EE deviation <= %.2e m",
+                             samples->size(), cert.min_clearance, cert.min_self_clearance,
+                             cert.max_deviation));
             Solution s;
             s.task_name = task_.name;
             s.status = Status::Solved;
@@ -388,9 +393,9 @@ Verdict Search::judge(const kinematics::YawPitchDesign& design) {
             return verdict;
         }
         if (!cert.violations.empty()) {
-            say(text::format("    verification: %zu violation(s), first: ",
-                             cert.violations.size()) +
-                cert.violations.front().message);
+            say(Stage::Verification, text::format("    verification: %zu violation(s), first: ",
+                                                  cert.violations.size()) +
+                                         cert.violations.front().message);
             int added = 0;
             for (const auto& v : cert.violations) {
                 if (v.primitive < 0 || v.travel) continue;
@@ -408,7 +413,7 @@ Verdict Search::judge(const kinematics::YawPitchDesign& design) {
         if (!control::refine_spatial_motion(task_, design, *samples, cert.coarse_pairs)) break;
     }
     stats_.verify_seconds += seconds_since(t0);
-    say("    verification: pairs still too coarse after splitting");
+    say(Stage::Verification, "    verification: pairs still too coarse after splitting");
     verdict.gave_up = true;
     return verdict;
 }
@@ -420,7 +425,8 @@ Solution Search::timed(Solution solution) {
         task_, std::move(solution.samples),
         control::joint_limits_for(task_, solution.dh_robot->dof()), opt_.retime, &timing);
     stats_.timing = timing;
-    say(text::format("timed: %.3f s of motion, %d rests, %d passes, in %.1f ms", timing.duration,
+    say(Stage::Timing,
+        text::format("timed: %.3f s of motion, %d rests, %d passes, in %.1f ms", timing.duration,
                      timing.rests, timing.passes, 1e3 * seconds_since(t0)));
     return solution;
 }
@@ -433,19 +439,20 @@ Solution Search::timed(Solution solution) {
 Solution Search::shorten(std::vector<Entry>& entries, std::size_t found, Solution first) {
     std::vector<Solution> certified;
     certified.push_back(std::move(first));
-    const double took = seconds_since(start_);
+    const double took = clock_.seconds();
     int variants = 0;
     for (std::size_t i = 0; i < entries.size() && variants < opt_.shortening_variants; ++i) {
         if (i == found) continue;
         if (remaining() < 2.0 * took) {
-            say("no time left to look for a shorter design");
+            say(Stage::Shortening, "no time left to look for a shorter design");
             break;
         }
         Entry& e = entries[i];
         if (e.next >= e.guesses.size()) continue;
         ++variants;
         const ScoredDesign& g = e.guesses[e.next++];
-        say(describe(e.skeleton) + ": a shorter design? start " + describe(g.design));
+        say(Stage::Shortening,
+            describe(e.skeleton) + ": a shorter design? start " + describe(g.design));
         if (auto s = refine(e.skeleton, g)) certified.push_back(std::move(*s));
     }
     std::vector<DesignMerit> merits;

@@ -80,3 +80,20 @@ TEST_CASE("the public API reads and certifies spatial tasks", "[api]") {
     edited.dh_robot->rows[1].a += 0.01;
     CHECK_FALSE(modsynth::certify(task, edited).ok);
 }
+
+TEST_CASE("the public API solves spatial tasks, modules included", "[api]") {
+    const std::string dir = modsynth::testing::source_path("tests/fixtures/spatial/");
+    const modsynth::SpatialTask task = modsynth::load_spatial_task(dir + "s3-0001.task.json");
+    const modsynth::Solution s = modsynth::solve(task);
+    REQUIRE(s.status == modsynth::Status::Solved);
+    REQUIRE(s.dh_robot);
+    CHECK(s.dh_robot->dof() == 3);
+    CHECK(s.modules);
+    CHECK(modsynth::certify(task, s).ok);
+    // Proved infeasible with the planted core, as `modsynth solve` says.
+    const modsynth::Solution none =
+        modsynth::solve(modsynth::load_spatial_task(dir + "sir-0001.task.json"));
+    CHECK(none.status == modsynth::Status::Infeasible);
+    CHECK(modsynth::task::to_strings(none.explanation.core) ==
+          std::vector<std::string>{"robot.max_link_length", "base_regions", "trajectory[0]"});
+}

@@ -15,8 +15,45 @@
 #include <cstdio>
 #include <exception>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include <modsynth/modsynth.h>
+
+namespace {
+
+bool write(const char* path, const modsynth::Solution& solution) {
+    std::ofstream out(path, std::ios::binary);
+    out << modsynth::write_solution_json(solution);
+    if (!out) std::fprintf(stderr, "error: %s cannot be written\n", path);
+    return static_cast<bool>(out);
+}
+
+// A spatial task: its DH chain, re-certified from the document, or why
+// there is none.
+int answer_spatial(const char* path, const char* solution_path) {
+    const modsynth::SpatialTask task = modsynth::load_spatial_task(path);
+    modsynth::SolveOptions options;
+    options.time_limit = 30.0;
+    const modsynth::Solution solution = modsynth::solve(task, options);
+    if (solution_path && !write(solution_path, solution)) return 3;
+    if (solution.status == modsynth::Status::Solved) {
+        const modsynth::Solution read =
+            modsynth::read_solution(modsynth::write_solution_json(solution));
+        const modsynth::Certificate again = modsynth::certify(task, read);
+        std::printf("%s: solved with %d joints, chain %.4f m; re-certified: %s\n",
+                    task.name.c_str(), read.dh_robot->dof(), read.dh_robot->total_length(),
+                    again.ok ? "yes" : "no");
+        if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
+        return again.ok ? 0 : 3;
+    }
+    std::printf("%s: %s\n", task.name.c_str(), solution.explanation.message.c_str());
+    for (const auto& part : solution.explanation.core)
+        std::printf("  conflicting: %s\n", to_string(part).c_str());
+    return solution.status == modsynth::Status::Infeasible ? 1 : 3;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     if (argc != 2 && argc != 3) {
@@ -24,18 +61,15 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
+        std::ifstream in(argv[1], std::ios::binary);
+        const std::string text((std::istreambuf_iterator<char>(in)), {});
+        if (in && modsynth::is_spatial_task(text))
+            return answer_spatial(argv[1], argc == 3 ? argv[2] : nullptr);
         const modsynth::Task task = modsynth::load_task(argv[1]);
         modsynth::SolveOptions options;
         options.time_limit = 30.0;
         const modsynth::Solution solution = modsynth::solve(task, options);
-        if (argc == 3) {
-            std::ofstream out(argv[2], std::ios::binary);
-            out << modsynth::write_solution_json(solution);
-            if (!out) {
-                std::fprintf(stderr, "error: %s cannot be written\n", argv[2]);
-                return 3;
-            }
-        }
+        if (argc == 3 && !write(argv[2], solution)) return 3;
 
         if (solution.status == modsynth::Status::Solved) {
             // The document round trip loses nothing the certificate rests on.

@@ -50,9 +50,9 @@ TEST_CASE("relaxations are the smallest change of one part, and they are re-chec
     REQUIRE(longer != suggestions.end());
     // The farthest point, (2.7, 0.3), is 2.61 m from the plate's nearest
     // corner: two links need at least 1.30 m each.
-    CHECK(longer->relaxed.robot.max_link_length >= 1.30);
-    CHECK(longer->relaxed.robot.max_link_length <= 1.32);
-    CHECK_FALSE(explanation::prove_infeasible(longer->relaxed, 10.0).proved);
+    CHECK(std::get<task::Task>(longer->relaxed).robot.max_link_length >= 1.30);
+    CHECK(std::get<task::Task>(longer->relaxed).robot.max_link_length <= 1.32);
+    CHECK_FALSE(explanation::prove_infeasible(std::get<task::Task>(longer->relaxed), 10.0).proved);
     CHECK(longer->status == synth::Status::Solved);
     CHECK(longer->outcome.rfind("solved", 0) == 0);
     const auto moved = std::find_if(
@@ -60,7 +60,7 @@ TEST_CASE("relaxations are the smallest change of one part, and they are re-chec
         [](const explanation::Relaxation& r) { return r.part == task::TaskPart::base_regions(); });
     REQUIRE(moved != suggestions.end());
     CHECK(moved->change.find("extend base_regions[0]") != std::string::npos);
-    CHECK_FALSE(explanation::prove_infeasible(moved->relaxed, 10.0).proved);
+    CHECK_FALSE(explanation::prove_infeasible(std::get<task::Task>(moved->relaxed), 10.0).proved);
 }
 
 TEST_CASE("task parts are described in words and numbers", "[explain]") {

@@ -138,8 +138,9 @@ TEST_CASE("explain suggests removing an obstacle, widening a gap and moving the 
             INFO(kind);
             const auto it = with(kind);
             REQUIRE(it != suggestions.end());
-            CHECK_FALSE(prove::prove_obstacle_infeasible(it->relaxed));
-            CHECK_FALSE(explanation::prove_infeasible(it->relaxed, 10.0).proved);
+            CHECK_FALSE(prove::prove_obstacle_infeasible(std::get<task::Task>(it->relaxed)));
+            CHECK_FALSE(
+                explanation::prove_infeasible(std::get<task::Task>(it->relaxed), 10.0).proved);
         }
     }
 }

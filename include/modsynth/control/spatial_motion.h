@@ -15,6 +15,7 @@
 
 #include <modsynth/control/motion.h>
 #include <modsynth/kinematics/yaw_pitch_design.h>
+#include <modsynth/run/deadline.h>
 #include <modsynth/task/spatial_task.h>
 
 namespace modsynth::control {
@@ -38,7 +39,7 @@ struct SpatialMotionOptions {
     /// Tries to find a step short enough before a point counts as out of
     /// reach, as in the plane (MotionOptions::step_attempts).
     int step_attempts = 60;
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    run::Deadline deadline;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;

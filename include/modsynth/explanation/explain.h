@@ -13,6 +13,7 @@
 #include <modsynth/run/progress.h>
 #include <modsynth/synth/status.h>
 #include <modsynth/task/part.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::explanation {
@@ -60,5 +61,10 @@ struct ExplainOptions {
 
 /// Throws std::invalid_argument when the options are not valid.
 Explanation explain(const task::Task& task, const ExplainOptions& options = {});
+/// The same flow for a spatial task: the spatial reach proof and the front
+/// stage's core as task parts, else the spatial synthesis, else the
+/// changes of robot.max_link_length, robot.dof, robot.twists and the base
+/// regions that remove the conflict (spatial_explanation.h).
+Explanation explain(const task::SpatialTask& task, const ExplainOptions& options = {});
 
 }  // namespace modsynth::explanation

@@ -4,11 +4,13 @@
 // changes that remove the conflict, each re-checked before it is offered.
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <modsynth/synth/solution.h>
 #include <modsynth/synth/status.h>
 #include <modsynth/task/part.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::explanation {
@@ -40,7 +42,8 @@ std::string unproved_message(const InfeasibilityProof& proof, const synth::Solut
 struct Relaxation {
     task::TaskPart part;  ///< the core part it changes
     std::string change;   ///< e.g. "robot.max_link_length >= 1.34 m"
-    task::Task relaxed;   ///< the task with the change applied
+    /// The task with the change applied (a spatial task for a spatial one).
+    std::variant<task::Task, task::SpatialTask> relaxed;
     /// The full pipeline on the relaxed task: what it concluded, and the
     /// same in a sentence ("solved: 2 joints, links ..." or why not).
     synth::Status status;

@@ -18,12 +18,13 @@
 // The relaxation does not tell the IK branches apart (the annulus is the
 // same for all four), so the branch of each stroke is left to the initial
 // guesses, which score them.
-#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <modsynth/run/deadline.h>
 #include <modsynth/smt/spatial_skeleton.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/spatial_task.h>
 
 namespace modsynth::smt {
@@ -53,7 +54,9 @@ struct SpatialFrontStageOptions {
     /// so that the decimal rounding of task numbers never makes the
     /// relaxation unsound.
     double slack = 1e-7;
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    /// Every check's timeout ends here, and core minimisation returns the
+    /// core it has.
+    run::Deadline deadline;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;
@@ -74,9 +77,9 @@ public:
     Result check();
     /// After Unsat: the conflicting task parts, shrunk by deletion (a
     /// conflict, if not a minimal one, when the time runs out).
-    std::vector<std::string> minimal_core();
+    std::vector<task::TaskPart> minimal_core();
     /// Whether these parts alone are proved to conflict.
-    bool conflicts(const std::vector<std::string>& parts);
+    bool conflicts(const std::vector<task::TaskPart>& parts);
     /// Whether robot.twists allows the pattern (a twist of 0 and one of
     /// +-pi/2); without it there are no skeletons.
     bool pattern_allowed() const;

@@ -13,6 +13,7 @@
 
 #include <modsynth/kinematics/yaw_pitch_design.h>
 #include <modsynth/nlp/spatial_formulation.h>
+#include <modsynth/run/deadline.h>
 #include <modsynth/smt/spatial_skeleton.h>
 #include <modsynth/task/spatial_task.h>
 
@@ -53,10 +54,10 @@ double design_margin(const task::SpatialTask& task, const kinematics::YawPitchDe
 /// Up to `count` distinct candidates, best first: clear ones by shorter
 /// chain, then the others by larger margin. Scoring stops at the deadline.
 /// Throws std::invalid_argument when the options are not valid.
-std::vector<ScoredDesign> spatial_initial_guesses(
-    const task::SpatialTask& task, const smt::SpatialSkeleton& skeleton, int count, unsigned seed,
-    const nlp::SpatialMargins& margins,
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max(),
-    const SpatialGuessOptions& options = {});
+std::vector<ScoredDesign> spatial_initial_guesses(const task::SpatialTask& task,
+                                                  const smt::SpatialSkeleton& skeleton, int count,
+                                                  unsigned seed, const nlp::SpatialMargins& margins,
+                                                  const run::Deadline& deadline = {},
+                                                  const SpatialGuessOptions& options = {});
 
 }  // namespace modsynth::synth

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/task/part.h>
 #include <modsynth/task/spatial_task.h>
 
 namespace modsynth::synth {
@@ -20,10 +21,10 @@ namespace modsynth::synth {
 /// when a chain of more joints than robot.dof allows (up to 6) could reach
 /// it, robot.dof. nullopt when every primitive is within reach of some box,
 /// and for tasks without base regions.
-std::optional<std::vector<std::string>> spatial_out_of_reach_core(const task::SpatialTask& task);
+std::optional<std::vector<task::TaskPart>> spatial_out_of_reach_core(const task::SpatialTask& task);
 
 /// The proof's sentence, naming the primitive, the distance and the reach.
 std::string describe_spatial_reach(const task::SpatialTask& task,
-                                   const std::vector<std::string>& core);
+                                   const std::vector<task::TaskPart>& core);
 
 }  // namespace modsynth::synth

@@ -5,12 +5,12 @@
 // the pattern allows), initial guesses by random search, the reduced
 // Ipopt refinement with counterexamples from the certified verifier, the
 // exact motion, and the timing for a controller.
-#include <functional>
 #include <string>
 
 #include <modsynth/control/retime.h>
 #include <modsynth/control/spatial_motion.h>
 #include <modsynth/nlp/spatial_formulation.h>
+#include <modsynth/run/progress.h>
 #include <modsynth/smt/spatial_front_stage.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/synth/spatial_initial_guess.h>
@@ -62,8 +62,8 @@ struct SpatialSynthesisOptions {
     /// this much longer than the shortest is returned when it passes
     /// farther from the obstacles by more than this.
     double length_tie = 5e-4;
-    /// Called with one line per stage event (may be empty).
-    std::function<void(const std::string&)> progress;
+    /// Told of every step (may be empty), as the plane's run tells it.
+    run::ProgressSink progress;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;

@@ -1,0 +1,66 @@
+#pragma once
+// What `solve` does the same for planar and spatial tasks: the answer it
+// writes when its time limit passes inside a library call (the watchdog),
+// and the exit code an answer ends the command with (README, "Exit codes").
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <string>
+
+#include <modsynth/io/solution_io.h>
+#include <modsynth/output/exports.h>
+#include <modsynth/run/progress.h>
+#include <modsynth/synth/solution.h>
+
+#include "watchdog.h"
+
+namespace modsynth::app {
+
+/// Past the time limit plus a margin, gives `answer` the solution "unknown:
+/// time limit" at the last stage reported, and ends the process with
+/// kUnknown; claim() stands it down once the run answers by itself.
+class SolveGuard {
+public:
+    /// `time_limit` counts from the command's start, `elapsed` seconds ago.
+    SolveGuard(std::string task_name, double time_limit, double elapsed,
+               std::function<void(const synth::Solution&)> answer);
+
+    void set_stage(const std::string& stage) { watchdog_.set_stage(stage); }
+    /// As Watchdog::claim.
+    void claim() { watchdog_.claim(); }
+
+private:
+    std::string task_name_;
+    double time_limit_;
+    std::function<void(const synth::Solution&)> answer_;
+    Watchdog watchdog_;  // last: its thread may use the members above
+};
+
+/// Where a solve's progress events go: the guard's stage, the console
+/// unless quiet, and the events file (JSON lines, io/progress_json.h) when
+/// one is asked for.
+class SolveProgress {
+public:
+    /// Throws task::InputError naming `events_path` when it cannot be written.
+    SolveProgress(const std::string& events_path, bool quiet);
+    run::ProgressSink sink(SolveGuard& guard);
+
+private:
+    std::ofstream events_;
+    bool quiet_;
+};
+
+/// The solution file and the files asked for beside it, each export's note
+/// on stderr: what every answer of `solve` writes, the watchdog's too.
+template <class TaskT>
+void write_answer(const TaskT& task, const synth::Solution& solution, const std::string& output,
+                  const output::ExportPaths& exports, const output::ReportFigures& figures = {}) {
+    io::write_solution(solution, output);
+    for (const auto& note : output::write_exports(task, solution, exports, figures))
+        std::fprintf(stderr, "note: %s\n", note.c_str());
+}
+
+/// kOk, kInfeasible or kUnknown.
+int exit_code(const synth::Status& status);
+
+}  // namespace modsynth::app

@@ -1,0 +1,277 @@
+#include <modsynth/explanation/spatial_explanation.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include <modsynth/geometry/vec.h>
+#include <modsynth/run/deadline.h>
+#include <modsynth/smt/spatial_front_stage.h>
+#include <modsynth/synth/spatial_reach_proof.h>
+#include <modsynth/synth/spatial_synthesizer.h>
+#include <modsynth/text/format.h>
+#include <modsynth/text/option_check.h>
+
+namespace modsynth::explanation {
+namespace {
+
+using synth::Solution;
+using synth::Status;
+using task::RobotKey;
+using task::TaskPart;
+
+std::string join(const std::vector<TaskPart>& parts) {
+    std::string s;
+    for (std::size_t i = 0; i < parts.size(); ++i) s += (i ? ", " : "") + task::to_string(parts[i]);
+    return s;
+}
+
+std::string joint_counts(const std::vector<int>& dof) {
+    std::string s;
+    for (std::size_t i = 0; i < dof.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == dof.size() ? " or " : ", ") + std::to_string(dof[i]);
+    return s;
+}
+
+// Neither proof holds: no primitive is out of reach, and some allowed joint
+// count's relaxation is satisfiable (undecided counts as conflicting, so
+// that a suggestion is never unproved).
+bool conflict_free(const task::SpatialTask& task, double check_seconds,
+                   const run::Deadline& deadline) {
+    if (synth::spatial_out_of_reach_core(task)) return false;
+    for (int dof : task.robot.dof) {
+        smt::SpatialFrontStageOptions o;
+        o.time_limit = check_seconds;
+        o.deadline = deadline;
+        smt::SpatialFrontStage fs(task, dof, o);
+        if (fs.check() == smt::SpatialFrontStage::Result::Sat) return true;
+    }
+    return false;
+}
+
+/// The spatial synthesis on a relaxed task: its status and a sentence.
+std::pair<Status, std::string> attempt(const task::SpatialTask& relaxed, double seconds) {
+    if (seconds <= 0.0) {
+        return {Status(Status::Unknown, "before solving", "time limit"),
+                "the conflict is gone; not solved: the time limit was reached"};
+    }
+    synth::SpatialSynthesisOptions options;
+    options.time_limit = seconds;
+    const Solution s = synth::synthesize(relaxed, options);
+    if (s.status == Status::Solved)
+        return {s.status, text::format("solved: %d joints, chain %.3f m", s.dh_robot->dof(),
+                                       s.dh_robot->total_length())};
+    if (s.status == Status::Infeasible)
+        return {s.status, "still infeasible: " + s.explanation.message};
+    return {s.status, "the conflict is gone, but no robot was found within " +
+                          text::format("%.0f s", seconds)};
+}
+
+class SpatialRelaxers {
+public:
+    SpatialRelaxers(const task::SpatialTask& task, const std::vector<TaskPart>& core,
+                    double solve_seconds, double time_limit, const RelaxationOptions& options)
+        : task_(task),
+          core_(core),
+          solve_seconds_(solve_seconds),
+          options_(options),
+          deadline_(run::Deadline::in(time_limit)) {}
+
+    std::vector<Relaxation> run();
+
+    void longer_links(const TaskPart& part);
+    void more_joints(const TaskPart& part);
+    void other_twists(const TaskPart& part);
+    void grown_region(const TaskPart& part);
+
+private:
+    bool free(const task::SpatialTask& t) const {
+        return conflict_free(t, options_.check_seconds, deadline_);
+    }
+
+    // As the plane's: the smallest value in [lo, hi] for which is_free holds.
+    template <typename Free>
+    std::optional<double> smallest(double lo, double hi, double tolerance, Free is_free) const {
+        if (!is_free(hi)) return std::nullopt;
+        while (hi - lo > tolerance) {
+            if (deadline_.expired()) return std::nullopt;
+            const double mid = 0.5 * (lo + hi);
+            (is_free(mid) ? hi : lo) = mid;
+        }
+        return hi;
+    }
+
+    bool offer(const TaskPart& part, const std::string& change, const task::SpatialTask& relaxed) {
+        if (!free(relaxed)) return false;
+        auto [status, outcome] = attempt(relaxed, std::min(solve_seconds_, deadline_.remaining()));
+        out_.push_back({part, change, relaxed, std::move(status), std::move(outcome)});
+        return true;
+    }
+
+    const task::SpatialTask& task_;
+    const std::vector<TaskPart>& core_;
+    const double solve_seconds_;
+    const RelaxationOptions& options_;
+    const run::Deadline deadline_;
+    std::vector<Relaxation> out_;
+};
+
+struct SpatialRelaxer {
+    TaskPart::Kind kind;
+    std::optional<RobotKey> key;  ///< for robot parts: which key
+    void (SpatialRelaxers::*relax)(const TaskPart&);
+};
+
+const SpatialRelaxer kSpatialRelaxers[] = {
+    {TaskPart::Kind::Robot, RobotKey::MaxLinkLength, &SpatialRelaxers::longer_links},
+    {TaskPart::Kind::Robot, RobotKey::Dof, &SpatialRelaxers::more_joints},
+    {TaskPart::Kind::Robot, RobotKey::Twists, &SpatialRelaxers::other_twists},
+    {TaskPart::Kind::BaseRegions, std::nullopt, &SpatialRelaxers::grown_region},
+    {TaskPart::Kind::BaseRegion, std::nullopt, &SpatialRelaxers::grown_region},
+};
+
+std::vector<Relaxation> SpatialRelaxers::run() {
+    for (const TaskPart& part : core_) {
+        if (deadline_.expired()) break;
+        for (const SpatialRelaxer& r : kSpatialRelaxers) {
+            if (r.kind != part.kind() || (r.key && !part.is_robot(*r.key)) || !part.field().empty())
+                continue;
+            (this->*r.relax)(part);
+            break;
+        }
+    }
+    return std::move(out_);
+}
+
+void SpatialRelaxers::longer_links(const TaskPart& part) {
+    task::SpatialTask t = task_;
+    const auto v = smallest(task_.robot.max_link_length, options_.longest_link,
+                            options_.length_tolerance, [&](double x) {
+                                t.robot.max_link_length = x;
+                                return free(t);
+                            });
+    if (!v) return;
+    t.robot.max_link_length = std::ceil(*v * 100.0) / 100.0;
+    offer(part, text::format("robot.max_link_length >= %.2f m", t.robot.max_link_length), t);
+}
+
+// The fewest joints more than the task allows that remove the conflict.
+void SpatialRelaxers::more_joints(const TaskPart& part) {
+    const int most = *std::max_element(task_.robot.dof.begin(), task_.robot.dof.end());
+    task::SpatialTask t = task_;
+    for (int k = most + 1; k <= task::kMaxSpatialDof; ++k) {
+        t.robot.dof.push_back(k);
+        if (free(t)) {
+            offer(part, "allow " + joint_counts(t.robot.dof) + " joints", t);
+            return;
+        }
+    }
+}
+
+// With only vertical joint axes the EE keeps one height; a twist of
+// +-pi/2 tilts an axis.
+void SpatialRelaxers::other_twists(const TaskPart& part) {
+    task::SpatialTask t = task_;
+    t.robot.twists.push_back(geometry::kPi / 2);
+    t.robot.twists.push_back(-geometry::kPi / 2);
+    offer(part, "allow the twists +-pi/2 in robot.twists (a joint axis that tilts)", t);
+}
+
+// The region that needs the least growth on every side; for the whole list,
+// each region is tried.
+void SpatialRelaxers::grown_region(const TaskPart& part) {
+    const int n = static_cast<int>(task_.base_regions.size());
+    std::optional<std::pair<int, double>> best;
+    for (int k = 0; k < n; ++k) {
+        if (part.kind() == TaskPart::Kind::BaseRegion && part.index() != k) continue;
+        if (deadline_.expired()) break;
+        task::SpatialTask g = task_;
+        const geometry::Box3 box = task_.base_regions[static_cast<std::size_t>(k)];
+        const auto grow = [&](double d) {
+            auto& b = g.base_regions[static_cast<std::size_t>(k)];
+            b.min = box.min - geometry::Vec3::Constant(d);
+            b.max = box.max + geometry::Vec3::Constant(d);
+            return free(g);
+        };
+        const double hi = best ? best->second : options_.farthest_move;
+        if (const auto v = smallest(0.0, hi, options_.length_tolerance, grow))
+            if (!best || *v < best->second) best = {k, *v};
+    }
+    if (!best) return;
+    task::SpatialTask g = task_;
+    const double d = std::ceil(best->second * 100.0) / 100.0;
+    auto& b = g.base_regions[static_cast<std::size_t>(best->first)];
+    b.min -= geometry::Vec3::Constant(d);
+    b.max += geometry::Vec3::Constant(d);
+    offer(part,
+          "grow " + task::to_string(TaskPart::base_region(best->first)) +
+              text::format(" by %.2f m on every side", d),
+          g);
+}
+
+}  // namespace
+
+InfeasibilityProof prove_infeasible(const task::SpatialTask& task, double time_limit) {
+    InfeasibilityProof proof;
+    const run::Deadline deadline = run::Deadline::in(time_limit);
+    if (auto core = synth::spatial_out_of_reach_core(task)) {
+        proof.proved = true;
+        proof.message = synth::describe_spatial_reach(task, *core);
+        proof.core = std::move(*core);
+        return proof;
+    }
+    // Every joint count's minimal core; the core is their union, as solve's.
+    std::vector<TaskPart> core;
+    std::string counts;
+    for (int dof : task.robot.dof) {
+        smt::SpatialFrontStageOptions o;
+        o.time_limit = std::max(0.05, std::min(o.time_limit, deadline.remaining()));
+        o.deadline = deadline;
+        smt::SpatialFrontStage fs(task, dof, o);
+        const auto r = fs.check();
+        if (r != smt::SpatialFrontStage::Result::Unsat) {
+            proof.open +=
+                (proof.open.empty() ? "" : "; ") + std::to_string(dof) + " joints " +
+                (r == smt::SpatialFrontStage::Result::Sat ? "not ruled out" : "undecided");
+            continue;
+        }
+        const std::vector<TaskPart> c = fs.minimal_core();
+        if (c.empty()) {
+            proof.open += (proof.open.empty() ? "" : "; ") + std::to_string(dof) +
+                          " joints: no core within the time limit";
+            continue;
+        }
+        counts += (counts.empty() ? "" : "; ") + std::to_string(dof) + " joints: " + join(c);
+        for (const TaskPart& p : c)
+            if (std::find(core.begin(), core.end(), p) == core.end()) core.push_back(p);
+    }
+    proof.proved = proof.open.empty() && !core.empty();
+    if (proof.proved) {
+        proof.core = std::move(core);
+        proof.message = "no chain of " + joint_counts(task.robot.dof) +
+                        " joints meets the conditions every chain must meet (reach of the "
+                        "sampled path points from a base in the base regions, and the EE's "
+                        "height when every joint axis is vertical); the conflicting parts, per "
+                        "joint count: " +
+                        counts + ".";
+    }
+    return proof;
+}
+
+std::string unproved_message(const task::SpatialTask&, const InfeasibilityProof& proof,
+                             const Solution& s) {
+    if (s.status == Status::Solved)
+        return "No conflict: a " + std::to_string(s.dh_robot->dof()) +
+               "-joint robot does this task (run solve).";
+    return "Not proved infeasible (" + proof.open + "); " + s.explanation.message;
+}
+
+std::vector<Relaxation> suggest_relaxations(const task::SpatialTask& task,
+                                            const std::vector<TaskPart>& core, double solve_seconds,
+                                            double time_limit, const RelaxationOptions& options) {
+    text::require_valid(options);
+    return SpatialRelaxers(task, core, solve_seconds, time_limit, options).run();
+}
+
+}  // namespace modsynth::explanation
