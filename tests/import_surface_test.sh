@@ -30,6 +30,7 @@ refused --cylinder "more than the cylinder's circumference" --width 0.2 --cylind
 refused --base "xmin,ymin,zmin,xmax,ymax,zmax" --plane 0.5,0,0.3,0,1,0,0,0,1 --base -0.1,-0.1,0.1,0.1
 refused --base "xmin,ymin,xmax,ymax" --base -0.1,-0.1,0,0.1,0.1,0
 refused --tool-length "only with --plane" --tool-length 0.05
+refused --dof "has 3 to 6" --dof 2,3 --plane 0.5,0,0.3,0,1,0,0,0,1
 
 check_spatial() {  # task.json surface: plane|cylinder
     python3 - "$1" "$2" <<'PY' || fail "$1: the task is not as expected"

@@ -21,6 +21,7 @@
 #include <modsynth/io/task_io.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/limits.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
@@ -323,7 +324,9 @@ Command add_import(CLI::App& parent) {
         ->check(within(-1e9, 1e9))
         ->excludes(at)
         ->excludes(plane);
-    sub->add_option("--rotate", a->rotate, "degrees, counter-clockwise about --at")
+    sub->add_option("--rotate", a->rotate,
+                    "degrees, counter-clockwise about --at (with --plane or --cylinder, "
+                    "about the drawing's centre in its own plane)")
         ->check(within(-3600.0, 3600.0));
     sub->add_option("--tolerance", a->tolerance,
                     "largest deviation from the drawing, metres (default 1e-4)")
@@ -379,6 +382,12 @@ Command add_import(CLI::App& parent) {
                 if (!a->plane.empty()) drawing::plane_surface(a->plane);
                 if (!a->cylinder.empty())
                     drawing::cylinder_surface(a->cylinder, geometry::Vec3::Zero());
+                for (int n : a->dof) {
+                    if (a->spatial() && !(n >= task::kMinSpatialDof && n <= task::kMaxSpatialDof))
+                        throw InputError("--dof", text::format("%d joints: a spatial chain "
+                                                               "(--plane, --cylinder) has 3 to 6",
+                                                               n));
+                }
                 if (a->tool_length >= 0.0 && !a->spatial())
                     throw InputError("--tool-length", "only with --plane or --cylinder");
                 return run_import(*a);
