@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The shipped drawings (the outline of tasks/drawings/bracket.dxf, all of
-# tasks/drawings/sketch.svg) and a text placed on a wall in front of a base
-# on the floor and wrapped round an upright cylinder: each import is solved
+# tasks/drawings/sketch.svg) and a text placed on a wall (and an easel) in
+# front of a base on the floor and wrapped round an upright cylinder: each import is solved
 # (exit 0) and, when the shared grader is beside the source, its solution
 # passes it.
 # Arguments: modsynth binary, source root, folder of the shared contract
@@ -36,6 +36,8 @@ wall=(--plane 0.4,0,0.25,0,-1,0,0,0,1)
 cylinder=(--cylinder 0.4,0,0.25,0,0,1,0.08)
 solve_and_grade bracket-wall "${bracket[@]}" "${wall[@]}"
 solve_and_grade bracket-cylinder "${bracket[@]}" "${cylinder[@]}"
+# An easel leaning back by 30 degrees (V typed to four digits: 0.866).
+solve_and_grade bracket-easel "${bracket[@]}" --plane 0.4,0,0.3,0,-1,0,0.5,0,0.866
 solve_and_grade sketch-wall "${sketch[@]}" "${wall[@]}"
 solve_and_grade sketch-cylinder "${sketch[@]}" "${cylinder[@]}"
 # A label round a bottle of radius 6 cm: lines round it and across it.
