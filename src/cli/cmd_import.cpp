@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,12 +13,15 @@
 
 #include <modsynth/drawing/hershey_text.h>
 #include <modsynth/drawing/import.h>
+#include <modsynth/drawing/surface.h>
 #include <modsynth/drawing/svg_writer.h>
 #include <modsynth/io/atomic_file.h>
 #include <modsynth/io/input.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/task/input_error.h>
+#include <modsynth/task/limits.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
@@ -49,6 +53,9 @@ struct ImportArgs {
     std::vector<int> dof;
     double link_diameter = -1.0;
     bool keep_order = false;
+    std::vector<double> plane, cylinder;
+    double tool_length = -1.0;
+    bool spatial() const { return !plane.empty() || !cylinder.empty(); }
 };
 
 /// What the task gets from the options: its name, base regions and robot.
@@ -59,6 +66,54 @@ task::Task base_task(const ImportArgs& a) {
     if (!a.dof.empty()) t.robot.dof = a.dof;
     if (a.link_diameter > 0.0) t.robot.link_diameter = a.link_diameter;
     return t;
+}
+
+/// The same for a drawing placed in space: base boxes, and the spatial
+/// robot's defaults (formats.md) unless given.
+task::SpatialTask spatial_base_task(const ImportArgs& a) {
+    task::SpatialTask t;
+    t.name = a.name;
+    for (const auto& b : a.bases)
+        t.base_regions.push_back(
+            {geometry::Vec3(b[0], b[1], b[2]), geometry::Vec3(b[3], b[4], b[5])});
+    if (!a.dof.empty()) t.robot.dof = a.dof;
+    if (a.link_diameter > 0.0) t.robot.link_diameter = a.link_diameter;
+    if (a.tool_length >= 0.0) t.robot.tool_length = a.tool_length;
+    return t;
+}
+
+/// The point the drawing on a cylinder faces: the first base box's centre,
+/// else the task's origin.
+geometry::Vec3 facing_point(const ImportArgs& a) {
+    if (a.bases.empty()) return geometry::Vec3::Zero();
+    const auto& b = a.bases.front();
+    return {(b[0] + b[3]) / 2.0, (b[1] + b[4]) / 2.0, (b[2] + b[5]) / 2.0};
+}
+
+/// The drawing, imported in its own plane, placed on --plane or wrapped
+/// round --cylinder: the spatial task, with the deviation of both steps.
+nlohmann::json spatial_task_json(const ImportArgs& a, drawing::ImportResult& r,
+                                 const drawing::ImportOptions& options, double wrap_tolerance) {
+    drawing::PlacedStrokes placed;
+    std::vector<geometry::Obstacle3> obstacles;
+    std::function<geometry::Vec3(const Vec2&)> to_space;
+    if (!a.plane.empty()) {
+        const drawing::PlaneSurface plane = drawing::plane_surface(a.plane);
+        placed = drawing::place_on_plane(r.strokes, plane);
+        to_space = [plane](const Vec2& p) { return drawing::surface_point(plane, p); };
+    } else {
+        const drawing::CylinderSurface cylinder =
+            drawing::cylinder_surface(a.cylinder, facing_point(a));
+        placed = drawing::place_on_cylinder(r.strokes, cylinder, wrap_tolerance,
+                                            task::kMaxPrimitives, options.deadline);
+        to_space = [cylinder](const Vec2& p) { return drawing::surface_point(cylinder, p); };
+    }
+    // A circle of the obstacle layer keeps the pen off that much of the
+    // surface: a sphere of its radius where its centre lands.
+    for (const geometry::Disc& d : r.obstacles)
+        obstacles.push_back(geometry::Sphere{to_space(d.center), d.radius});
+    r.deviation += placed.deviation;
+    return imported_spatial_task_json(placed, obstacles, spatial_base_task(a));
 }
 
 std::string file_stem(const std::string& path) {
@@ -119,8 +174,19 @@ int run_import(ImportArgs& a) {
     if (a.width > 0.0) options.placement.width = a.width;
     if (a.scale > 0.0) options.placement.scale = a.scale;
     if (!a.at.empty()) options.placement.at = Vec2(a.at[0], a.at[1]);
+    // On a surface, the drawing's centre goes to the surface's origin: it
+    // is placed about its own centre first.
+    if (a.spatial()) options.placement.at = Vec2::Zero();
     options.placement.rotate_degrees = a.rotate;
     options.tolerance = a.tolerance;
+    // Round a cylinder, half the tolerance for the drawing's own curves,
+    // half for the wrapped ones: the wrapping keeps lengths along the
+    // surface, so the two deviations add at most.
+    double wrap_tolerance = 0.0;
+    if (!a.cylinder.empty()) {
+        options.tolerance = a.tolerance / 2.0;
+        wrap_tolerance = a.tolerance / 2.0;
+    }
     options.keep_order = a.keep_order;
     options.deadline = start + limit;
     drawing::ImportResult r;
@@ -142,7 +208,10 @@ int run_import(ImportArgs& a) {
                 e.part().empty() ? e.what() : e.what() + e.part().size() + 2;
             throw InputError(a.input + ": " + e.part(), problem);
         }
-        if (a.reply.empty()) {
+        if (a.spatial()) {
+            doc = spatial_task_json(a, r, options, wrap_tolerance);
+            reply = {{"task", doc}, {"deviation", r.deviation}, {"tolerance", a.tolerance}};
+        } else if (a.reply.empty()) {
             doc = imported_task_json(r, base_task(a));
         } else {
             reply = import_reply_json(r, options, base_task(a));
@@ -167,9 +236,20 @@ int run_import(ImportArgs& a) {
         total += s.size();
         counts += (counts.empty() ? "" : " ") + std::to_string(s.size());
     }
-    std::printf("%s -> %s: %zu stroke%s, %zu primitives, %zu obstacles\n", a.input.c_str(),
-                a.output.c_str(), r.strokes.size(), r.strokes.size() == 1 ? "" : "s", total,
-                r.obstacles.size());
+    if (a.spatial()) {
+        total = 0;
+        counts.clear();
+        const nlohmann::json& doc_strokes =
+            doc.contains("strokes") ? doc["strokes"] : nlohmann::json::array({doc["trajectory"]});
+        for (const auto& s : doc_strokes) {
+            total += s.size();
+            counts += (counts.empty() ? "" : " ") + std::to_string(s.size());
+        }
+    }
+    std::printf("%s -> %s: %s%zu stroke%s, %zu primitives, %zu obstacles\n", a.input.c_str(),
+                a.output.c_str(),
+                a.plane.empty() ? (a.cylinder.empty() ? "" : "round a cylinder, ") : "on a plane, ",
+                r.strokes.size(), r.strokes.size() == 1 ? "" : "s", total, r.obstacles.size());
     std::printf("deviation: %.3g m (tolerance %.3g m)\n", r.deviation, a.tolerance);
     std::printf("primitives per stroke: %s\n", counts.c_str());
     std::printf("travel: %.6g m\n", r.travel);
@@ -221,11 +301,32 @@ Command add_import(CLI::App& parent) {
                     "metres per drawing unit (default: the file's units; SVG in mm)")
         ->check(positive())
         ->excludes(width);
-    sub->add_option("--at", a->at, "X,Y: where the drawing's centre goes (metres)")
+    auto* at = sub->add_option("--at", a->at, "X,Y: where the drawing's centre goes (metres)")
+                   ->delimiter(',')
+                   ->expected(2)
+                   ->check(within(-1e9, 1e9));
+    auto* plane =
+        sub->add_option("--plane", a->plane,
+                        "OX,OY,OZ,UX,UY,UZ,VX,VY,VZ: place the drawing in space on a plane, its "
+                        "centre at O, its x along U and its y along V (unit and perpendicular "
+                        "within 1e-3); writes a spatial task")
+            ->delimiter(',')
+            ->allow_extra_args(false)
+            ->check(within(-1e9, 1e9))
+            ->excludes(at);
+    sub->add_option("--cylinder", a->cylinder,
+                    "CX,CY,CZ,AX,AY,AZ,R: wrap the drawing round a cylinder of radius R whose "
+                    "axis runs along A through C, the point level with the drawing's centre; "
+                    "its x runs round the axis, its y along it, facing the first --base box "
+                    "(else the origin); writes a spatial task")
         ->delimiter(',')
-        ->expected(2)
-        ->check(within(-1e9, 1e9));
-    sub->add_option("--rotate", a->rotate, "degrees, counter-clockwise about --at")
+        ->allow_extra_args(false)
+        ->check(within(-1e9, 1e9))
+        ->excludes(at)
+        ->excludes(plane);
+    sub->add_option("--rotate", a->rotate,
+                    "degrees, counter-clockwise about --at (with --plane or --cylinder, "
+                    "about the drawing's centre in its own plane)")
         ->check(within(-3600.0, 3600.0));
     sub->add_option("--tolerance", a->tolerance,
                     "largest deviation from the drawing, metres (default 1e-4)")
@@ -233,9 +334,11 @@ Command add_import(CLI::App& parent) {
     sub->add_option("--time-limit", a->time_limit,
                     "seconds for the whole import (default 60); past it, exit 4")
         ->check(seconds());
-    sub->add_option("--base", a->bases, "xmin,ymin,xmax,ymax: a base region (repeatable)")
+    sub->add_option("--base", a->bases,
+                    "xmin,ymin,xmax,ymax: a base region (repeatable); with --plane or "
+                    "--cylinder a box xmin,ymin,zmin,xmax,ymax,zmax")
         ->delimiter(',')
-        ->expected(4)
+        ->expected(4, 6)
         ->allow_extra_args(false)
         ->check(within(-1e9, 1e9));
     sub->add_option(
@@ -246,9 +349,16 @@ Command add_import(CLI::App& parent) {
                   "refuse what cannot be traced (text without a font, hatches, dimensions, "
                   "points, images, 3D solids, degenerate pieces) instead of skipping it");
     sub->add_option("--name", a->name, "task name (default: the file name)");
-    sub->add_option("--dof", a->dof, "allowed joint counts, e.g. 2,3")->delimiter(',');
-    sub->add_option("--link-diameter", a->link_diameter, "tube diameter, metres")
+    sub->add_option("--dof", a->dof,
+                    "allowed joint counts, e.g. 2,3 (default 2,3; with --plane or --cylinder "
+                    "3,4, each 3 to 6)")
+        ->delimiter(',');
+    sub->add_option("--link-diameter", a->link_diameter, "tube diameter, metres (default 0.03175)")
         ->check(positive());
+    sub->add_option("--tool-length", a->tool_length,
+                    "with --plane or --cylinder: the tool at the chain's end, metres (default 0; "
+                    "links 0.05 to 1 m, twists 0 and +-90 degrees)")
+        ->check(within(0.0, 1e3));
     sub->add_flag("--keep-order", a->keep_order,
                   "draw the strokes in the file's order and direction");
     // What `serve` runs an import with: the reply of POST /api/import (or
@@ -258,10 +368,28 @@ Command add_import(CLI::App& parent) {
                 if (a->input.empty() && a->text.empty())
                     throw InputError("DRAWING", "give a drawing file or --text");
                 for (const auto& b : a->bases) {
-                    if (b.size() != 4 || !(b[0] <= b[2]) || !(b[1] <= b[3])) {
+                    if (a->spatial()) {
+                        if (b.size() != 6 || !(b[0] <= b[3]) || !(b[1] <= b[4]) || !(b[2] <= b[5]))
+                            throw InputError("--base",
+                                             "expected a box xmin,ymin,zmin,xmax,ymax,"
+                                             "zmax with min <= max (--plane, "
+                                             "--cylinder)");
+                    } else if (b.size() != 4 || !(b[0] <= b[2]) || !(b[1] <= b[3])) {
                         throw InputError("--base", "expected xmin,ymin,xmax,ymax with min <= max");
                     }
                 }
+                // Bad surfaces are refused before the drawing is read.
+                if (!a->plane.empty()) drawing::plane_surface(a->plane);
+                if (!a->cylinder.empty())
+                    drawing::cylinder_surface(a->cylinder, geometry::Vec3::Zero());
+                for (int n : a->dof) {
+                    if (a->spatial() && !(n >= task::kMinSpatialDof && n <= task::kMaxSpatialDof))
+                        throw InputError("--dof", text::format("%d joints: a spatial chain "
+                                                               "(--plane, --cylinder) has 3 to 6",
+                                                               n));
+                }
+                if (a->tool_length >= 0.0 && !a->spatial())
+                    throw InputError("--tool-length", "only with --plane or --cylinder");
                 return run_import(*a);
             }};
 }

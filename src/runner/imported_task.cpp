@@ -1,5 +1,6 @@
 #include "imported_task.h"
 
+#include <modsynth/io/spatial_task_io.h>
 #include <modsynth/io/task_io.h>
 
 namespace modsynth::app {
@@ -33,6 +34,23 @@ json imported_task_json(const drawing::ImportResult& r, const task::Task& base) 
     const json doc = io::to_json(t);
     // Checked as any task is, once: every stroke against every obstacle.
     io::parse_task(doc);
+    return doc;
+}
+
+json imported_spatial_task_json(const drawing::PlacedStrokes& placed,
+                                const std::vector<geometry::Obstacle3>& obstacles,
+                                const task::SpatialTask& base) {
+    task::SpatialTask t = base;
+    t.obstacles = obstacles;
+    t.trajectory.clear();
+    t.stroke_starts.clear();
+    for (const auto& stroke : placed.strokes) {
+        if (placed.strokes.size() > 1)
+            t.stroke_starts.push_back(static_cast<int>(t.trajectory.size()));
+        t.trajectory.insert(t.trajectory.end(), stroke.begin(), stroke.end());
+    }
+    const json doc = io::to_json(t);
+    io::parse_spatial_task(doc);
     return doc;
 }
 

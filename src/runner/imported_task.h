@@ -4,6 +4,8 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/drawing/import.h>
+#include <modsynth/drawing/surface.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::app {
@@ -14,6 +16,14 @@ namespace modsynth::app {
 /// throws task::InputError naming the part (`strokes[2][5]`, `obstacles`)
 /// otherwise.
 nlohmann::json imported_task_json(const drawing::ImportResult& r, const task::Task& base);
+
+/// The same for a drawing placed on a surface in space (`import --plane`,
+/// `--cylinder`): a spatial task with the placed strokes and obstacles;
+/// the name, base regions and robot come from `base`. Checked by the
+/// spatial task reader.
+nlohmann::json imported_spatial_task_json(const drawing::PlacedStrokes& placed,
+                                          const std::vector<geometry::Obstacle3>& obstacles,
+                                          const task::SpatialTask& base);
 
 /// What POST /api/import answers for an imported drawing (README, "serve"):
 /// the task, its counts, the deviation reached and the pen-up travel, the

@@ -1,7 +1,9 @@
 #pragma once
 // What the drawing import targets share: one file, imported as `modsynth
 // import` imports it (read, placed, every curve fitted, strokes ordered,
-// the task written and read back) under a time limit. Every input is a
+// the task written and read back, and placed on a plane and round a
+// cylinder in space as `import --plane` and `--cylinder` place it) under a
+// time limit. Every input is a
 // task, an InputError with a short printable message, or a stop at the
 // time limit; the import returns within the limit plus a margin, and what
 // it returns is within the tolerance.
@@ -12,8 +14,12 @@
 #include <string>
 #include <string_view>
 
+#include <algorithm>
+
 #include <modsynth/drawing/import.h>
+#include <modsynth/drawing/surface.h>
 #include <modsynth/task/input_error.h>
+#include <modsynth/task/limits.h>
 #include <modsynth/text/printable.h>
 
 #include "imported_task.h"
@@ -59,6 +65,23 @@ inline bool import_once(std::string_view text, drawing::DrawingFormat format,
         task::Task base;
         base.name = "fuzz";
         (void)app::imported_task_json(r, base);
+        // On a tilted plane, and round a cylinder a half again as round as
+        // the drawing is wide: the spatial reader accepts the tasks, or
+        // names the part.
+        task::SpatialTask space;
+        space.name = "fuzz";
+        const drawing::PlaneSurface plane = drawing::plane_surface({0, 0, 0, 0, 0.6, 0.8, 1, 0, 0});
+        (void)app::imported_spatial_task_json(drawing::place_on_plane(r.strokes, plane), {}, space);
+        const double radius =
+            std::max(1.5 * drawing::drawing_width(r.strokes) / (2 * geometry::kPi), 1e-3);
+        const drawing::CylinderSurface cylinder =
+            drawing::cylinder_surface({0, 0, 0, 0.6, 0, 0.8, radius}, geometry::Vec3::UnitX());
+        const drawing::PlacedStrokes wrapped = drawing::place_on_cylinder(
+            r.strokes, cylinder, options.tolerance, task::kMaxPrimitives, options.deadline);
+        check_time();
+        if (!(wrapped.deviation <= options.tolerance))
+            finding("a wrapping beyond the tolerance", std::to_string(wrapped.deviation));
+        (void)app::imported_spatial_task_json(wrapped, {}, space);
     } catch (const task::InputError& e) {
         check_time();
         check_message(e.what());
