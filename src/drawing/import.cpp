@@ -103,6 +103,7 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
     ImportResult result;
     result.warnings = drawing.warnings;
     result.layers = drawing.layers;
+    result.filled_outlines = drawing.filled_outlines;
     result.placement = map;
     result.page_size = drawing.page_size;
     result.page_to_task = map.after(drawing.page_to_units);
@@ -133,6 +134,8 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
     // fitting (a --scale far too small).
     std::vector<std::string> tiny;
     std::size_t tiny_count = 0;
+    std::vector<std::string> dots;
+    std::size_t dot_count = 0;
     std::vector<Chain> chains;
     std::size_t total = 0;
     for (Curve& placed : all_placed) {
@@ -153,6 +156,16 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
         }
         FittedCurve f =
             fit_curve(placed, options.tolerance, task::kMaxPrimitives - total, options.deadline);
+        if (f.dot) {
+            if (options.read.strict) {
+                throw InputError(c.source,
+                                 "a dot: it stays within the tolerance of a point "
+                                 "(--strict)");
+            }
+            if (dots.size() < 3) dots.push_back(c.source);
+            ++dot_count;
+            continue;
+        }
         // An arc so nearly straight that its centre lies beyond reach of
         // any task is its chord, when the chord strays from it (by its
         // sagitta) within what the tolerance leaves.
@@ -187,10 +200,25 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
         result.warnings.push_back("skipped pieces less than " + text::compact(kMinPiece) +
                                   " m across once placed: " + list);
     }
+    if (dot_count > 0) {
+        std::string list;
+        for (const std::string& t : dots) list += (list.empty() ? "" : ", ") + t;
+        if (dot_count > dots.size())
+            list += " and " + std::to_string(dot_count - dots.size()) + " more";
+        result.warnings.push_back(
+            "skipped dots (curves within the tolerance of a point, which a "
+            "stroke cannot draw): " +
+            list);
+    }
     for (const geometry::Disc& d : drawing.obstacles) {
         const geometry::Disc placed{map(d.center), d.radius * result.metres_per_unit};
         check(placed.center, "obstacle");
         result.obstacles.push_back(placed);
+    }
+    if (chains.empty()) {
+        throw InputError("(document)",
+                         "empty drawing: nothing to draw" +
+                             (result.warnings.empty() ? "" : " (" + result.warnings.back() + ")"));
     }
     StrokeOrder order = order_strokes(std::move(chains), options.keep_order);
     result.strokes = std::move(order.strokes);
