@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <Eigen/LU>
 
@@ -46,6 +47,47 @@ double size_across(const Curve& c) {
         for (int i = 0; i <= 32; ++i) b.add(point(s, i / 32.0));
     }
     return (b.max - b.min).maxCoeff();
+}
+
+/// Primitives the drawable curves need at `tolerance`; more than the cap
+/// when past it (counting stops there), none when some curve cannot be
+/// followed at it.
+std::optional<std::size_t> primitives_needed(const std::vector<Curve>& placed, double tolerance,
+                                             Clock::time_point deadline) {
+    std::size_t total = 0;
+    for (const Curve& c : placed) {
+        if (!(size_across(c) >= kMinPiece)) continue;
+        try {
+            total += fit_curve(c, tolerance, task::kMaxPrimitives, deadline).primitives.size();
+        } catch (const InputError&) {
+            return std::nullopt;
+        }
+        if (total > task::kMaxPrimitives) break;
+    }
+    return total;
+}
+
+/// The drawing needs `needed` primitives, more than a task may hold: says
+/// so, with the least tolerance (doubling from this one, up to 1 mm
+/// times 16) at which it fits, when one does within the time left.
+[[noreturn]] void too_many(const std::vector<Curve>& placed, std::size_t needed,
+                           const ImportOptions& options) {
+    std::string fits;
+    try {
+        for (double t = 2.0 * options.tolerance; t <= 0.016 && fits.empty(); t *= 2.0) {
+            const auto n = primitives_needed(placed, t, options.deadline);
+            if (n && *n <= task::kMaxPrimitives) {
+                fits = ": --tolerance " + text::compact(t) + " fits it (" + std::to_string(*n) +
+                       " primitives), or simplify the drawing";
+            }
+        }
+    } catch (const ImportTimeout&) {
+    }
+    if (fits.empty()) fits = ": simplify it (no --tolerance up to 0.016 m was found to fit)";
+    throw InputError("(document)",
+                     "the drawing needs " + std::to_string(needed) + " primitives at --tolerance " +
+                         text::compact(options.tolerance) + " m, more than the " +
+                         std::to_string(task::kMaxPrimitives) + " a task may hold" + fits);
 }
 
 }  // namespace
@@ -149,13 +191,10 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
             ++tiny_count;
             continue;
         }
-        if (total >= task::kMaxPrimitives) {
-            throw InputError(c.source, "the drawing needs more than " +
-                                           std::to_string(task::kMaxPrimitives) +
-                                           " primitives: raise --tolerance or simplify it");
-        }
+        // Past the cap the rest is still fitted, to say what the whole
+        // drawing needs.
         FittedCurve f =
-            fit_curve(placed, options.tolerance, task::kMaxPrimitives - total, options.deadline);
+            fit_curve(placed, options.tolerance, task::kMaxPrimitives, options.deadline);
         if (f.dot) {
             if (options.read.strict) {
                 throw InputError(c.source,
@@ -184,14 +223,11 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
         }
         f.deviation += straightened;
         total += f.primitives.size();
-        if (total > task::kMaxPrimitives) {
-            throw InputError(c.source, "the drawing needs more than " +
-                                           std::to_string(task::kMaxPrimitives) +
-                                           " primitives: raise --tolerance or simplify it");
-        }
+        if (total > task::kMaxPrimitives) continue;
         result.deviation = std::max(result.deviation, f.deviation);
         chains.push_back(std::move(f.primitives));
     }
+    if (total > task::kMaxPrimitives) too_many(all_placed, total, options);
     if (tiny_count > 0) {
         std::string list;
         for (const std::string& t : tiny) list += (list.empty() ? "" : ", ") + t;
