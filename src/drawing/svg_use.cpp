@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <map>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -100,21 +102,34 @@ public:
         if (doc.RootElement()) index_ids(doc.RootElement(), ids_);
     }
 
-    void walk(XMLElement* e, std::vector<std::string>& chain) {
+    /// `unrendered`: inside defs (or another element that draws nothing by
+    /// itself), where a use that cannot be resolved is left as it is: it is
+    /// drawn only through a use of what holds it, which resolves it then.
+    void walk(XMLElement* e, std::vector<std::string>& chain, bool unrendered = false) {
+        static const std::set<std::string, std::less<>> kUnrendered = {"defs", "symbol", "clipPath",
+                                                                       "mask", "marker", "pattern"};
         for (XMLElement* c = e->FirstChildElement(); c;) {
             XMLElement* next = c->NextSiblingElement();
-            if (svg_xml::is_svg_element(c) &&
-                std::strcmp(svg_xml::local_name(c->Name()), "use") == 0) {
-                replace(c, chain);
+            const bool svg = svg_xml::is_svg_element(c);
+            if (svg && std::strcmp(svg_xml::local_name(c->Name()), "use") == 0) {
+                if (!unrendered) {
+                    replace(c, chain, false);
+                } else {
+                    try {
+                        replace(c, chain, true);
+                    } catch (const InputError&) {
+                    }
+                }
             } else {
-                walk(c, chain);
+                walk(c, chain,
+                     unrendered || (svg && kUnrendered.count(svg_xml::local_name(c->Name()))));
             }
             c = next;
         }
     }
 
 private:
-    void replace(XMLElement* use, std::vector<std::string>& chain) {
+    void replace(XMLElement* use, std::vector<std::string>& chain, bool unrendered) {
         const char* h = href(use);
         if (!h || !*h) throw InputError(label(use), "refers to nothing (no href)");
         if (h[0] != '#') {
@@ -128,15 +143,18 @@ private:
                                              ", which the file does not hold");
         }
         if (std::find(chain.begin(), chain.end(), id) != chain.end()) {
-            // The uses that led here, outermost first, from the first that
-            // drew this id: the cycle as the file writes it.
+            // The uses that led here, outermost first: the cycle as the
+            // file writes it.
             std::vector<std::string> drawn;
             for (const tinyxml2::XMLNode* n = use->Parent(); n && n->ToElement(); n = n->Parent()) {
                 if (const char* of = n->ToElement()->Attribute(kUseOf))
                     drawn.insert(drawn.begin(), of);
             }
             std::string path;
-            for (auto i = std::find(drawn.begin(), drawn.end(), id); i != drawn.end(); ++i)
+            // The shortest cycle: from the innermost use of this id on.
+            const auto last = std::find(drawn.rbegin(), drawn.rend(), id);
+            for (auto i = last == drawn.rend() ? drawn.end() : std::prev(last.base());
+                 i != drawn.end(); ++i)
                 path += text::printable(*i, 40) + " -> ";
             throw InputError(label(use), "refers to #" + text::printable(id, 40) +
                                              ", which draws itself (" + path +
@@ -195,7 +213,7 @@ private:
         use->Parent()->DeleteChild(use);
 
         chain.push_back(id);
-        walk(g, chain);
+        walk(g, chain, unrendered);
         chain.pop_back();
     }
 

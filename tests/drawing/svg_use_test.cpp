@@ -85,7 +85,7 @@ TEST_CASE("SVG use: a reference to nothing, elsewhere or to itself is refused by
                       Catch::Contains("which draws itself (self -> self)"));
     CHECK_THROWS_WITH(
         read_svg(svg(R"svg(<defs><g id="a"><use href="#b"/></g><g id="b"><use href="#a"/></g></defs>
-<path d="M 0,0 L 1,1"/>)svg")),
+<use href="#a"/>)svg")),
         Catch::Contains("(a -> b -> a)") || Catch::Contains("(b -> a -> b)"));
     CHECK_THROWS_WITH(
         read_svg(svg(R"svg(<g id="outer"><path d="M 0,0 L 1,1"/><use href="#outer"/></g>)svg")),
@@ -102,4 +102,12 @@ TEST_CASE("SVG use: copies that multiply are capped, not followed", "[drawing][s
     }
     body += "</defs><use href=\"#l10\"/>";
     CHECK_THROWS_WITH(read_svg(svg(body)), Catch::Contains("too large for a drawing"));
+}
+
+TEST_CASE("SVG use: a broken use in defs is no error until something draws it", "[drawing][svg]") {
+    const std::string defs = R"svg(<defs><g id="kept"><use href="#gone"/></g></defs>
+<path d="M 0,0 L 10,0"/>)svg";
+    CHECK(read_svg(svg(defs)).curves.size() == 1);
+    CHECK_THROWS_WITH(read_svg(svg(defs + R"svg(<use href="#kept"/>)svg")),
+                      Catch::Contains("#gone, which the file does not hold"));
 }
