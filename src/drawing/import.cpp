@@ -73,8 +73,9 @@ std::optional<std::size_t> primitives_needed(const std::vector<Curve>& placed, d
 [[noreturn]] void too_many(const std::vector<Curve>& placed, std::size_t needed,
                            const ImportOptions& options) {
     std::string fits;
+    double t = 2.0 * options.tolerance;
     try {
-        for (double t = 2.0 * options.tolerance; t <= 0.016 && fits.empty(); t *= 2.0) {
+        for (; t <= 0.016 && fits.empty(); t *= 2.0) {
             const auto n = primitives_needed(placed, t, options.deadline);
             if (n && *n <= task::kMaxPrimitives) {
                 fits = ": --tolerance " + text::compact(t) + " fits it (" + std::to_string(*n) +
@@ -82,7 +83,10 @@ std::optional<std::size_t> primitives_needed(const std::vector<Curve>& placed, d
             }
         }
     } catch (const ImportTimeout&) {
+        fits = ": simplify it (the time limit ended the search for a tolerance that fits at " +
+               text::compact(t) + " m)";
     }
+    // Lines need as many primitives at any tolerance.
     if (fits.empty()) fits = ": simplify it (no --tolerance up to 0.016 m was found to fit)";
     throw InputError("(document)",
                      "the drawing needs " + std::to_string(needed) + " primitives at --tolerance " +
