@@ -11,6 +11,7 @@
 #include <modsynth/drawing/biarc_fit.h>
 #include <modsynth/drawing/dxf_reader.h>
 #include <modsynth/drawing/svg_reader.h>
+#include <modsynth/geometry/distance.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/limits.h>
 #include <modsynth/text/printable.h>
@@ -49,6 +50,41 @@ double size_across(const Curve& c) {
     return (b.max - b.min).maxCoeff();
 }
 
+/// A line shorter than the tolerance (a path optimiser's leftover of a few
+/// micrometres) is folded into the line next to it when every corner the
+/// longer line leaves out stays within what the tolerance leaves beside
+/// `deviation`: lines deviate by their corners only. Returns the deviation
+/// after folding. A chain of one primitive (a stroke that short) is kept.
+double fold_short_lines(std::vector<geometry::Primitive>& chain, double tolerance,
+                        double deviation) {
+    using geometry::PrimitiveKind;
+    if (chain.size() < 2) return deviation;
+    std::vector<geometry::Primitive> out;
+    std::vector<Vec2> corners;  // those the last line of `out` leaves out
+    double worst = deviation;
+    for (const geometry::Primitive& p : chain) {
+        if (!out.empty() && out.back().kind == PrimitiveKind::Line &&
+            p.kind == PrimitiveKind::Line &&
+            (geometry::length(out.back()) < tolerance || geometry::length(p) < tolerance) &&
+            (p.end - out.back().start).norm() >= tolerance) {
+            const geometry::Primitive joined = geometry::make_line(out.back().start, p.end);
+            double far = geometry::point_segment(p.start, joined.start, joined.end);
+            for (const Vec2& c : corners)
+                far = std::max(far, geometry::point_segment(c, joined.start, joined.end));
+            if (deviation + far <= tolerance) {
+                out.back() = joined;
+                corners.push_back(p.start);
+                worst = std::max(worst, deviation + far);
+                continue;
+            }
+        }
+        out.push_back(p);
+        corners.clear();
+    }
+    chain = std::move(out);
+    return worst;
+}
+
 /// Primitives the drawable curves need at `tolerance`; more than the cap
 /// when past it (counting stops there), none when some curve cannot be
 /// followed at it.
@@ -58,7 +94,9 @@ std::optional<std::size_t> primitives_needed(const std::vector<Curve>& placed, d
     for (const Curve& c : placed) {
         if (!(size_across(c) >= kMinPiece)) continue;
         try {
-            total += fit_curve(c, tolerance, task::kMaxPrimitives, deadline).primitives.size();
+            FittedCurve f = fit_curve(c, tolerance, task::kMaxPrimitives, deadline);
+            fold_short_lines(f.primitives, tolerance, f.deviation);
+            total += f.primitives.size();
         } catch (const InputError&) {
             return std::nullopt;
         }
@@ -226,6 +264,7 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
             check(p.center, c.source + " (an arc's center)");
         }
         f.deviation += straightened;
+        f.deviation = fold_short_lines(f.primitives, options.tolerance, f.deviation);
         total += f.primitives.size();
         if (total > task::kMaxPrimitives) continue;
         result.deviation = std::max(result.deviation, f.deviation);
