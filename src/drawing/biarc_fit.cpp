@@ -488,7 +488,17 @@ FittedCurve fit_curve(const Curve& curve, double tolerance, std::size_t max_prim
         }
     }
     result.primitives = without_slivers(merged(pieces));
-    if (result.primitives.empty()) throw InputError(curve.source, "zero-length curve");
+    if (result.primitives.empty()) {
+        const Vec2 start = start_point(curve.segments.front());
+        double reach = 0.0;
+        for (const Segment& s : curve.segments) {
+            for (int i = 0; i <= kSamples; ++i)
+                reach = std::max(reach, (point(s, double(i) / kSamples) - start).norm());
+        }
+        if (!(reach <= tolerance)) throw InputError(curve.source, "zero-length curve");
+        result.dot = true;
+        result.deviation = reach;
+    }
     return result;
 }
 

@@ -4,12 +4,14 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <Eigen/LU>
 
 #include <modsynth/drawing/biarc_fit.h>
 #include <modsynth/drawing/dxf_reader.h>
 #include <modsynth/drawing/svg_reader.h>
+#include <modsynth/geometry/distance.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/limits.h>
 #include <modsynth/text/printable.h>
@@ -46,6 +48,88 @@ double size_across(const Curve& c) {
         for (int i = 0; i <= 32; ++i) b.add(point(s, i / 32.0));
     }
     return (b.max - b.min).maxCoeff();
+}
+
+/// A line shorter than the tolerance (a path optimiser's leftover of a few
+/// micrometres) is folded into the line next to it when every corner the
+/// longer line leaves out stays within what the tolerance leaves beside
+/// `deviation`: lines deviate by their corners only. Returns the deviation
+/// after folding. A chain of one primitive (a stroke that short) is kept.
+double fold_short_lines(std::vector<geometry::Primitive>& chain, double tolerance,
+                        double deviation) {
+    using geometry::PrimitiveKind;
+    if (chain.size() < 2) return deviation;
+    std::vector<geometry::Primitive> out;
+    std::vector<Vec2> corners;  // those the last line of `out` leaves out
+    double worst = deviation;
+    for (const geometry::Primitive& p : chain) {
+        if (!out.empty() && out.back().kind == PrimitiveKind::Line &&
+            p.kind == PrimitiveKind::Line &&
+            (geometry::length(out.back()) < tolerance || geometry::length(p) < tolerance) &&
+            (p.end - out.back().start).norm() >= tolerance) {
+            const geometry::Primitive joined = geometry::make_line(out.back().start, p.end);
+            double far = geometry::point_segment(p.start, joined.start, joined.end);
+            for (const Vec2& c : corners)
+                far = std::max(far, geometry::point_segment(c, joined.start, joined.end));
+            if (deviation + far <= tolerance) {
+                out.back() = joined;
+                corners.push_back(p.start);
+                worst = std::max(worst, deviation + far);
+                continue;
+            }
+        }
+        out.push_back(p);
+        corners.clear();
+    }
+    chain = std::move(out);
+    return worst;
+}
+
+/// Primitives the drawable curves need at `tolerance`; more than the cap
+/// when past it (counting stops there), none when some curve cannot be
+/// followed at it.
+std::optional<std::size_t> primitives_needed(const std::vector<Curve>& placed, double tolerance,
+                                             Clock::time_point deadline) {
+    std::size_t total = 0;
+    for (const Curve& c : placed) {
+        if (!(size_across(c) >= kMinPiece)) continue;
+        try {
+            FittedCurve f = fit_curve(c, tolerance, task::kMaxPrimitives, deadline);
+            fold_short_lines(f.primitives, tolerance, f.deviation);
+            total += f.primitives.size();
+        } catch (const InputError&) {
+            return std::nullopt;
+        }
+        if (total > task::kMaxPrimitives) break;
+    }
+    return total;
+}
+
+/// The drawing needs `needed` primitives, more than a task may hold: says
+/// so, with the least tolerance (doubling from this one, up to 1 mm
+/// times 16) at which it fits, when one does within the time left.
+[[noreturn]] void too_many(const std::vector<Curve>& placed, std::size_t needed,
+                           const ImportOptions& options) {
+    std::string fits;
+    double t = 2.0 * options.tolerance;
+    try {
+        for (; t <= 0.016 && fits.empty(); t *= 2.0) {
+            const auto n = primitives_needed(placed, t, options.deadline);
+            if (n && *n <= task::kMaxPrimitives) {
+                fits = ": --tolerance " + text::compact(t) + " fits it (" + std::to_string(*n) +
+                       " primitives), or simplify the drawing";
+            }
+        }
+    } catch (const ImportTimeout&) {
+        fits = ": simplify it (the time limit ended the search for a tolerance that fits at " +
+               text::compact(t) + " m)";
+    }
+    // Lines need as many primitives at any tolerance.
+    if (fits.empty()) fits = ": simplify it (no --tolerance up to 0.016 m was found to fit)";
+    throw InputError("(document)",
+                     "the drawing needs " + std::to_string(needed) + " primitives at --tolerance " +
+                         text::compact(options.tolerance) + " m, more than the " +
+                         std::to_string(task::kMaxPrimitives) + " a task may hold" + fits);
 }
 
 }  // namespace
@@ -103,6 +187,7 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
     ImportResult result;
     result.warnings = drawing.warnings;
     result.layers = drawing.layers;
+    result.filled_outlines = drawing.filled_outlines;
     result.placement = map;
     result.page_size = drawing.page_size;
     result.page_to_task = map.after(drawing.page_to_units);
@@ -133,6 +218,8 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
     // fitting (a --scale far too small).
     std::vector<std::string> tiny;
     std::size_t tiny_count = 0;
+    std::vector<std::string> dots;
+    std::size_t dot_count = 0;
     std::vector<Chain> chains;
     std::size_t total = 0;
     for (Curve& placed : all_placed) {
@@ -146,13 +233,20 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
             ++tiny_count;
             continue;
         }
-        if (total >= task::kMaxPrimitives) {
-            throw InputError(c.source, "the drawing needs more than " +
-                                           std::to_string(task::kMaxPrimitives) +
-                                           " primitives: raise --tolerance or simplify it");
-        }
+        // Past the cap the rest is still fitted, to say what the whole
+        // drawing needs.
         FittedCurve f =
-            fit_curve(placed, options.tolerance, task::kMaxPrimitives - total, options.deadline);
+            fit_curve(placed, options.tolerance, task::kMaxPrimitives, options.deadline);
+        if (f.dot) {
+            if (options.read.strict) {
+                throw InputError(c.source,
+                                 "a dot: it stays within the tolerance of a point "
+                                 "(--strict)");
+            }
+            if (dots.size() < 3) dots.push_back(c.source);
+            ++dot_count;
+            continue;
+        }
         // An arc so nearly straight that its centre lies beyond reach of
         // any task is its chord, when the chord strays from it (by its
         // sagitta) within what the tolerance leaves.
@@ -170,15 +264,13 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
             check(p.center, c.source + " (an arc's center)");
         }
         f.deviation += straightened;
+        f.deviation = fold_short_lines(f.primitives, options.tolerance, f.deviation);
         total += f.primitives.size();
-        if (total > task::kMaxPrimitives) {
-            throw InputError(c.source, "the drawing needs more than " +
-                                           std::to_string(task::kMaxPrimitives) +
-                                           " primitives: raise --tolerance or simplify it");
-        }
+        if (total > task::kMaxPrimitives) continue;
         result.deviation = std::max(result.deviation, f.deviation);
         chains.push_back(std::move(f.primitives));
     }
+    if (total > task::kMaxPrimitives) too_many(all_placed, total, options);
     if (tiny_count > 0) {
         std::string list;
         for (const std::string& t : tiny) list += (list.empty() ? "" : ", ") + t;
@@ -187,10 +279,25 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
         result.warnings.push_back("skipped pieces less than " + text::compact(kMinPiece) +
                                   " m across once placed: " + list);
     }
+    if (dot_count > 0) {
+        std::string list;
+        for (const std::string& t : dots) list += (list.empty() ? "" : ", ") + t;
+        if (dot_count > dots.size())
+            list += " and " + std::to_string(dot_count - dots.size()) + " more";
+        result.warnings.push_back(
+            "skipped dots (curves within the tolerance of a point, which a "
+            "stroke cannot draw): " +
+            list);
+    }
     for (const geometry::Disc& d : drawing.obstacles) {
         const geometry::Disc placed{map(d.center), d.radius * result.metres_per_unit};
         check(placed.center, "obstacle");
         result.obstacles.push_back(placed);
+    }
+    if (chains.empty()) {
+        throw InputError("(document)",
+                         "empty drawing: nothing to draw" +
+                             (result.warnings.empty() ? "" : " (" + result.warnings.back() + ")"));
     }
     StrokeOrder order = order_strokes(std::move(chains), options.keep_order);
     result.strokes = std::move(order.strokes);

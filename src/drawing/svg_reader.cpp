@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <set>
 #include <string>
 #include <string_view>
@@ -20,6 +21,8 @@
 #include <modsynth/text/printable.h>
 
 #include "elliptic_arc.h"
+#include "svg_clip.h"
+#include "svg_use.h"
 #include "svg_xml_policy.h"
 
 namespace modsynth::drawing {
@@ -37,7 +40,7 @@ constexpr double kMmPerPx = 25.4 / kPxPerInch;
 std::string element_label(XmlElement e) {
     std::string label = text::printable(svg_xml::local_name(e->Name()), 40);
     if (const char* id = e->Attribute("id")) label += "#" + text::printable(id, 40);
-    return label + " (line " + std::to_string(e->GetLineNum()) + ")";
+    return label + " (line " + svg_use::line_of(e) + ")";
 }
 
 /// Elements that draw nothing by themselves: skipped with what they hold.
@@ -76,9 +79,12 @@ std::string lower(std::string_view v) {
 /// The value an element gives a presentation property, in lower case: its
 /// style attribute's declaration (which wins) or the attribute of that
 /// name; empty when it gives none. Style sheets are not read.
-std::string property(XmlElement e, std::string_view name) {
+std::string property(XmlElement e, std::string_view name, bool keep_case = false) {
+    const auto as_read = [keep_case](std::string_view v) {
+        return keep_case ? std::string(trimmed(v)) : lower(trimmed(v));
+    };
     std::string value;
-    if (const char* a = e->Attribute(std::string(name).c_str())) value = lower(trimmed(a));
+    if (const char* a = e->Attribute(std::string(name).c_str())) value = as_read(a);
     const char* style = e->Attribute("style");
     for (std::string_view rest = style ? style : ""; !rest.empty();) {
         const auto semi = rest.find(';');
@@ -87,8 +93,8 @@ std::string property(XmlElement e, std::string_view name) {
         const auto colon = declaration.find(':');
         if (colon == std::string_view::npos || lower(trimmed(declaration.substr(0, colon))) != name)
             continue;
-        value = lower(trimmed(declaration.substr(colon + 1)));
-        const auto important = value.find("!important");
+        value = as_read(declaration.substr(colon + 1));
+        const auto important = lower(value).find("!important");
         if (important != std::string::npos)
             value = std::string(trimmed(value.substr(0, important)));
     }
@@ -101,6 +107,15 @@ std::string property(XmlElement e, std::string_view name) {
 struct Rendering {
     bool displayed = true;
     bool visible = true;
+    /// Fill and stroke, inherited (SVG's initial values: filled, not
+    /// stroked). A shape whose fill is none and whose stroke is set to
+    /// none shows nothing (an icon's frame); one that leaves its stroke
+    /// unset is drawn, as drawings written by hand mean it to be. A shape
+    /// only filled is traced along its outline. Clip paths ignore paint.
+    bool filled = true;
+    bool stroked = false;
+    bool stroke_none = false;
+    bool paint_matters = true;
 
     Rendering of(XmlElement e) const {
         Rendering r = *this;
@@ -108,9 +123,18 @@ struct Rendering {
         const std::string v = property(e, "visibility");
         if (v == "hidden" || v == "collapse") r.visible = false;
         if (v == "visible") r.visible = true;
+        const std::string fill = property(e, "fill"), stroke = property(e, "stroke");
+        if (!fill.empty() && fill != "inherit") r.filled = fill != "none";
+        if (!stroke.empty() && stroke != "inherit") {
+            r.stroked = stroke != "none";
+            r.stroke_none = stroke == "none";
+        }
         return r;
     }
-    bool drawn() const { return displayed && visible; }
+    bool drawn() const {
+        return displayed && visible && (!paint_matters || filled || !stroke_none);
+    }
+    bool outline_only() const { return paint_matters && filled && !stroked; }
 };
 
 /// Walks what SVG++ will walk, before it does: every element must be one
@@ -121,7 +145,7 @@ struct Rendering {
 /// Sets `layer_seen` when the obstacle layer was seen.
 void check_elements(XmlElement e, const Rendering& rendering, const ReadOptions& options,
                     std::vector<std::string>& unsupported, std::set<XmlElement>& not_drawn,
-                    bool& layer_seen, std::size_t& count) {
+                    std::set<XmlElement>& outlines, bool& layer_seen, std::size_t& count) {
     for (XmlElement c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
         if (!svg_xml::is_svg_element(c)) continue;
         if (++count > kMaxCurves) {
@@ -133,6 +157,7 @@ void check_elements(XmlElement e, const Rendering& rendering, const ReadOptions&
         const Rendering own = rendering.of(c);
         if (kShapes.count(name)) {
             if (!own.drawn()) not_drawn.insert(c);
+            if (own.drawn() && own.outline_only()) outlines.insert(c);
             continue;
         }
         if (kContainers.count(name)) {
@@ -144,14 +169,13 @@ void check_elements(XmlElement e, const Rendering& rendering, const ReadOptions&
                     layer_seen = true;
                 }
             }
-            check_elements(c, own, options, unsupported, not_drawn, layer_seen, count);
+            check_elements(c, own, options, unsupported, not_drawn, outlines, layer_seen, count);
             continue;
         }
         if (!own.drawn()) continue;
         std::string why;
         if (name == "text") why = " (convert text to paths first)";
         if (name == "image") why = " (a bitmap has no strokes)";
-        if (name == "use") why = " (unlink clones first)";
         unsupported.push_back(element_label(c) + why);
     }
 }
@@ -161,7 +185,18 @@ struct SvgState {
     const ReadOptions* options = nullptr;
     /// Shapes that are not rendered (display none, visibility hidden).
     std::set<XmlElement> not_drawn;
+    /// Shapes filled and not stroked: their outlines are traced.
+    std::set<XmlElement> outlines;
+    std::size_t outlines_traced = 0;
     std::vector<Curve> curves;  ///< in the outer viewport's pixels, y down
+    /// For each curve, the element that drew it and the clip regions
+    /// (indices in `clips`) that apply to it.
+    std::vector<XmlElement> curve_elements;
+    std::vector<std::vector<std::size_t>> curve_clips;
+    /// The file's clipPath elements by id, and the regions they clip to
+    /// where they are used.
+    std::map<std::string, XmlElement, std::less<>> clip_paths;
+    std::vector<svg_clip::Region> clips;
     std::vector<geometry::Disc> obstacles;
     /// Subpaths of zero length (an icon's dots, drawn by round caps),
     /// skipped: a stroke of the tool cannot make a dot.
@@ -172,10 +207,45 @@ struct SvgState {
     bool have_page = false;
 };
 
+/// The region `clip_path` clips to, in the outer viewport's pixels, for an
+/// element whose user space maps there by `ctm`; `user` names that element.
+svg_clip::Region clip_region(XmlElement clip_path, const Affine& ctm, const std::string& user,
+                             const SvgState& state);
+
 class BaseContext {
 public:
     explicit BaseContext(SvgState& state) : state_(&state) {
         length_factory_.set_absolute_units_coefficient(kPxPerInch, svgpp::tag::length_units::in());
+    }
+
+    /// The element's clip-path, if any, applies to all it draws, in its
+    /// user space: resolved once that is known (its transform read).
+    void clip_by(XmlElement e) {
+        if (!property(e, "clip-path").empty() && property(e, "clip-path") != "none")
+            clip_element_ = e;
+    }
+    /// This context, its clip resolved: what a child starts from.
+    BaseContext& resolved() {
+        if (!clip_element_) return *this;
+        const XmlElement e = clip_element_;
+        clip_element_ = nullptr;
+        const std::string value = property(e, "clip-path", true);
+        std::string id;
+        if (value.size() > 6 && lower(value.substr(0, 4)) == "url(" && value.back() == ')') {
+            std::string_view ref = trimmed(std::string_view(value).substr(4, value.size() - 5));
+            if (ref.size() >= 2 && (ref.front() == '"' || ref.front() == '\'') &&
+                ref.back() == ref.front())
+                ref = ref.substr(1, ref.size() - 2);
+            if (!ref.empty() && ref.front() == '#') id = std::string(ref.substr(1));
+        }
+        const auto found = state_->clip_paths.find(id);
+        if (found == state_->clip_paths.end()) {
+            throw InputError(element_label(e), "clip-path '" + text::printable(value, 60) +
+                                                   "' does not name a clipPath of the file");
+        }
+        clips_.push_back(state_->clips.size());
+        state_->clips.push_back(clip_region(found->second, ctm_, element_label(e), *state_));
+        return *this;
     }
 
     void on_exit_element() {}
@@ -212,6 +282,10 @@ public:
 protected:
     SvgState* state_;
     Affine ctm_;
+    /// The clip regions (indices in SvgState::clips) of the element and
+    /// its ancestors; an element whose clip-path is not resolved yet.
+    std::vector<std::size_t> clips_;
+    XmlElement clip_element_ = nullptr;
     length_factory_type length_factory_;
     bool hidden_ = false;
 };
@@ -219,14 +293,17 @@ protected:
 class GroupContext : public BaseContext {
 public:
     template <class Parent>
-    GroupContext(Parent& parent, XmlElement) : BaseContext(parent) {}
+    GroupContext(Parent& parent, XmlElement e) : BaseContext(parent.resolved()) {
+        clip_by(e);
+    }
 };
 
 class ShapeContext : public BaseContext {
 public:
     template <class Parent>
     ShapeContext(Parent& parent, XmlElement element)
-        : BaseContext(parent), element_(element), label_(element_label(element)) {
+        : BaseContext(parent.resolved()), element_(element), label_(element_label(element)) {
+        clip_by(element);
         obstacle_ = !state_->options->obstacle_layer.empty() &&
                     in_layer(element, state_->options->obstacle_layer);
         if (state_->not_drawn.count(element)) hidden_ = true;
@@ -336,12 +413,20 @@ private:
             ++state_->dot_count;
             return;
         }
+        resolved();
+        if (!outline_counted_ && state_->outlines.count(element_)) {
+            outline_counted_ = true;
+            ++state_->outlines_traced;
+        }
         state_->curves.push_back(std::move(c));
+        state_->curve_elements.push_back(element_);
+        state_->curve_clips.push_back(clips_);
     }
 
     XmlElement element_;
     std::string label_;
     bool obstacle_ = false;
+    bool outline_counted_ = false;
     std::vector<Segment> pending_;
     Vec2 current_ = Vec2::Zero(), start_ = Vec2::Zero();
     int commands_ = 0;
@@ -492,6 +577,118 @@ void check_xml_size(std::string_view text) {
 
 std::string quoted(const std::string& value) { return "'" + text::printable(value, 60) + "'"; }
 
+/// What SVG++ throws, as an error naming the element it was reading.
+[[noreturn]] void rethrow_svgpp(const svgpp::exception_base& e) {
+    typedef boost::error_info<svgpp::tag::error_info::xml_element, XmlElement> ElementInfo;
+    const XmlElement* where = boost::get_error_info<ElementInfo>(e);
+    const std::string part = where ? element_label(*where) : "(document)";
+    if (const auto* bad = dynamic_cast<const svgpp::invalid_value_error<char>*>(&e)) {
+        if (bad->name() == "d")
+            throw InputError(part, "malformed path data " + quoted(bad->value()));
+        throw InputError(part, "malformed attribute " + text::printable(bad->name()) + "=" +
+                                   quoted(bad->value()));
+    }
+    throw InputError(part, text::printable(e.what(), 200));
+}
+
+/// A rect without a width or height is as large as auto, which is 0 for
+/// a rect: not rendered (SVG 2, 10.4), so taken out before the walk (which
+/// requires both).
+void drop_unsized_rects(tinyxml2::XMLElement* e) {
+    for (tinyxml2::XMLElement* c = e->FirstChildElement(); c;) {
+        tinyxml2::XMLElement* next = c->NextSiblingElement();
+        if (svg_xml::is_svg_element(c) &&
+            std::strcmp(svg_xml::local_name(c->Name()), "rect") == 0 &&
+            (!c->Attribute("width") || !c->Attribute("height"))) {
+            e->DeleteChild(c);
+        } else {
+            drop_unsized_rects(c);
+        }
+        c = next;
+    }
+}
+
+void index_clip_paths(XmlElement e, std::map<std::string, XmlElement, std::less<>>& out) {
+    for (XmlElement c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+        if (!svg_xml::is_svg_element(c)) continue;
+        const char* id = c->Attribute("id");
+        if (id && std::strcmp(svg_xml::local_name(c->Name()), "clipPath") == 0) out.emplace(id, c);
+        index_clip_paths(c, out);
+    }
+}
+
+svg_clip::Region clip_region(XmlElement clip_path, const Affine& ctm, const std::string& user,
+                             const SvgState& state) {
+    const std::string what = "its clip-path " + element_label(clip_path);
+    const char* units = clip_path->Attribute("clipPathUnits");
+    if (units && trimmed(units) == "objectBoundingBox") {
+        throw InputError(user, what + " is in objectBoundingBox units, which cannot be honoured");
+    }
+    if (!property(clip_path, "clip-path").empty() && property(clip_path, "clip-path") != "none")
+        throw InputError(user, what + " is clipped itself, which cannot be honoured");
+    // The clip path's shapes are read as a drawing of their own, in the
+    // user space of the element they clip.
+    tinyxml2::XMLDocument doc;
+    tinyxml2::XMLElement* root = doc.NewElement("svg");
+    doc.InsertEndChild(root);
+    tinyxml2::XMLElement* g = doc.NewElement("g");
+    root->InsertEndChild(g);
+    for (const char* inherited : {"transform", "clip-rule", "display", "visibility", "style"}) {
+        if (const char* v = clip_path->Attribute(inherited)) g->SetAttribute(inherited, v);
+    }
+    for (XmlElement c = clip_path->FirstChildElement(); c; c = c->NextSiblingElement())
+        g->InsertEndChild(svg_use::copy_of(c, doc));
+    const ReadOptions options;
+    SvgState sub;
+    sub.options = &options;
+    std::vector<std::string> unsupported;
+    bool layer_seen = false;
+    std::size_t count = 0;
+    Rendering any_paint;
+    any_paint.paint_matters = false;
+    check_elements(root, any_paint, options, unsupported, sub.not_drawn, sub.outlines, layer_seen,
+                   count);
+    if (!unsupported.empty()) {
+        throw InputError(
+            user, what + " holds " + unsupported.front() + ", which cannot be honoured as a clip");
+    }
+    BaseContext context(sub);
+    context.set_reference_size(state.page_width > 0.0 ? state.page_width : 1000.0,
+                               state.page_height > 0.0 ? state.page_height : 1000.0);
+    DocumentTraversal::load_document(static_cast<XmlElement>(root), context);
+
+    svg_clip::Region region;
+    std::map<XmlElement, std::size_t> shape_of;
+    double extent = 1.0;
+    for (std::size_t i = 0; i < sub.curves.size(); ++i) {
+        const XmlElement e = sub.curve_elements[i];
+        auto [at, added] = shape_of.emplace(e, region.shapes.size());
+        if (added) {
+            svg_clip::Shape shape;
+            // clip-rule is inherited: the nearest element that sets it.
+            for (const tinyxml2::XMLNode* n = e; n && n->ToElement(); n = n->Parent()) {
+                const std::string rule = property(n->ToElement(), "clip-rule");
+                if (rule.empty() || rule == "inherit") continue;
+                shape.even_odd = rule == "evenodd";
+                break;
+            }
+            region.shapes.push_back(std::move(shape));
+        }
+        std::vector<Vec2> ring;
+        const Curve& c = sub.curves[i];
+        if (c.segments.empty()) continue;
+        ring.push_back(start_point(c.segments.front()));
+        for (const Segment& s : c.segments) svg_clip::flatten(s, ring);
+        for (Vec2& p : ring) {
+            p = ctm(p);
+            extent = std::max(extent, p.cwiseAbs().maxCoeff());
+        }
+        region.shapes[at->second].rings.push_back(std::move(ring));
+    }
+    region.margin = 1e-9 * extent;
+    return region;
+}
+
 }  // namespace
 
 Drawing read_svg(std::string_view text, const ReadOptions& options) {
@@ -514,13 +711,15 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
                                            text::printable(root ? root->Name() : "") +
                                            ">, not <svg>");
     }
+    svg_use::expand(doc);
+    drop_unsized_rects(doc.RootElement());
     std::vector<std::string> unsupported;
     SvgState state;
     state.options = &options;
     bool layer_seen = false;
     std::size_t count = 0;
-    check_elements(root, Rendering{}.of(root), options, unsupported, state.not_drawn, layer_seen,
-                   count);
+    check_elements(root, Rendering{}.of(root), options, unsupported, state.not_drawn,
+                   state.outlines, layer_seen, count);
     if (!unsupported.empty()) {
         // The first few by name; a message is for reading, not a list of
         // thousands.
@@ -547,19 +746,33 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
     }
     const double ref_w = vb[2] > 0.0 ? vb[2] : 1000.0, ref_h = vb[3] > 0.0 ? vb[3] : 1000.0;
     context.set_reference_size(ref_w, ref_h);
+    index_clip_paths(root, state.clip_paths);
+    context.clip_by(root);
     try {
         DocumentTraversal::load_document(root, context);
     } catch (const svgpp::exception_base& e) {
-        typedef boost::error_info<svgpp::tag::error_info::xml_element, XmlElement> ElementInfo;
-        const XmlElement* where = boost::get_error_info<ElementInfo>(e);
-        const std::string part = where ? element_label(*where) : "(document)";
-        if (const auto* bad = dynamic_cast<const svgpp::invalid_value_error<char>*>(&e)) {
-            if (bad->name() == "d")
-                throw InputError(part, "malformed path data " + quoted(bad->value()));
-            throw InputError(part, "malformed attribute " + text::printable(bad->name()) + "=" +
-                                       quoted(bad->value()));
+        rethrow_svgpp(e);
+    }
+    // Clip paths cut the centrelines: what lies outside is not drawn.
+    if (!state.clips.empty()) {
+        std::vector<Curve> kept;
+        for (std::size_t i = 0; i < state.curves.size(); ++i) {
+            std::vector<Curve> pieces{std::move(state.curves[i])};
+            for (const std::size_t clip : state.curve_clips[i]) {
+                std::vector<Curve> inner;
+                for (const Curve& p : pieces) {
+                    for (Curve& q : svg_clip::clipped(p, state.clips[clip]))
+                        inner.push_back(std::move(q));
+                }
+                pieces = std::move(inner);
+            }
+            for (Curve& p : pieces) kept.push_back(std::move(p));
+            if (kept.size() > kMaxCurves) {
+                throw InputError("(document)", "more than " + std::to_string(kMaxCurves) +
+                                                   " curves once clipped: too large for a drawing");
+            }
         }
-        throw InputError(part, text::printable(e.what(), 200));
+        state.curves = std::move(kept);
     }
     std::vector<std::string> warnings;
     if (state.dot_count > 0) {
@@ -586,6 +799,7 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
     out.page_size = Vec2(state.page_width, state.page_height);
     out.page_to_units = to_mm;
     out.warnings = std::move(warnings);
+    out.filled_outlines = state.outlines_traced;
     for (Curve& c : state.curves) {
         for (Segment& s : c.segments) s = transformed(s, to_mm);
         out.curves.push_back(std::move(c));

@@ -2,6 +2,7 @@
 
 #include <modsynth/io/spatial_task_io.h>
 #include <modsynth/io/task_io.h>
+#include <modsynth/text/printable.h>
 
 namespace modsynth::app {
 namespace {
@@ -58,6 +59,10 @@ json import_reply_json(const drawing::ImportResult& r, const drawing::ImportOpti
                        const task::Task& base) {
     std::size_t primitives = 0;
     for (const auto& s : r.strokes) primitives += s.size();
+    // What the CLI prints beside the task: the layers found with their
+    // entity counts (DXF), and one line for each kind of thing skipped.
+    json layers = json::object();
+    for (const auto& [name, count] : r.layers) layers[text::printable(name, 200)] = count;
     json underlay = nullptr;
     if (r.page_size.x() > 0.0 && r.page_size.y() > 0.0) {
         underlay = {{"width", r.page_size.x()},
@@ -76,7 +81,10 @@ json import_reply_json(const drawing::ImportResult& r, const drawing::ImportOpti
              {{"metres_per_unit", r.metres_per_unit},
               {"rotate_degrees", options.placement.rotate_degrees},
               {"transform", svg_matrix(r.placement)}}},
-            {"underlay", underlay}};
+            {"underlay", underlay},
+            {"warnings", r.warnings},
+            {"filled_outlines", r.filled_outlines},
+            {"layers", layers}};
 }
 
 }  // namespace modsynth::app

@@ -27,7 +27,8 @@ nlohmann::json imported_spatial_task_json(const drawing::PlacedStrokes& placed,
 
 /// What POST /api/import answers for an imported drawing (README, "serve"):
 /// the task, its counts, the deviation reached and the pen-up travel, the
-/// placement, and the map that puts the file's page under the task.
+/// placement, the map that puts the file's page under the task, the
+/// warnings (what was skipped) and the layers with their entity counts.
 nlohmann::json import_reply_json(const drawing::ImportResult& r,
                                  const drawing::ImportOptions& options, const task::Task& base);
 

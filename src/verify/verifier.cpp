@@ -164,6 +164,14 @@ private:
                 if (step < 0.0 || step > opt_.max_ee_step + 1e-12)
                     violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
                               text::format("progress step %.6f m between samples", step));
+                // Progress along an arc is read as an angle unwrapped between
+                // samples: a step of half a turn or more reads as one back.
+                const geometry::Primitive& p = task_.trajectory[j];
+                if (p.kind != geometry::PrimitiveKind::Line && step >= p.radius * geometry::kPi)
+                    violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
+                              text::format("progress step %.6f m between samples, half a turn "
+                                           "or more of a circle of radius %.6f m",
+                                           step, p.radius));
             }
             const bool last = i + 1 == samples_.size() || samples_[i + 1].phase != a.phase ||
                               samples_[i + 1].primitive != a.primitive ||

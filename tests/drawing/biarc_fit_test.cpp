@@ -105,7 +105,24 @@ TEST_CASE("import: a drawing past the primitives a task may have says so", "[dra
     ImportOptions o;
     o.keep_order = true;
     const std::string m = message_of([&] { import_drawing(text, DrawingFormat::Svg, o); });
-    CHECK_THAT(m, Catch::Contains("the drawing needs more than 5000 primitives"));
+    // The whole drawing is counted, and no tolerance helps lines.
+    CHECK_THAT(m, Catch::Contains("(document): the drawing needs 5001 primitives at --tolerance "
+                                  "0.0001 m, more than the 5000 a task may hold: simplify it"));
+    // Curves need fewer at a larger tolerance: the least that fits is named.
+    std::string ellipses;
+    for (int i = 0; i < 120; ++i) {
+        ellipses +=
+            "<ellipse cx=\"50\" cy=\"50\" rx=\"40\" ry=\"" + std::to_string(5 + 0.5 * i) + "\"/>";
+    }
+    const std::string curved =
+        R"(<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100">)" +
+        ellipses + "</svg>";
+    o.tolerance = 2e-6;
+    CHECK_THAT(
+        message_of([&] { import_drawing(curved, DrawingFormat::Svg, o); }),
+        Catch::Matches(".*the drawing needs [0-9]+ primitives at --tolerance 2e-06 m, more "
+                       "than the 5000 a task may hold: --tolerance [0-9.e-]+ fits it \\([0-9]+ "
+                       "primitives\\), or simplify the drawing"));
     // A curve that alone needs more than are left is told how many were.
     CHECK_THAT(message_of([] {
                    fit_curve(

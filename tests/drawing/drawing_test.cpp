@@ -270,3 +270,30 @@ TEST_CASE("import: placement, stroke order, and the SVG round trip", "[drawing]"
         }
     }
 }
+
+TEST_CASE("import: a line shorter than the tolerance is folded into its neighbour",
+          "[drawing][import]") {
+    // A path optimiser's leftover: a 5 µm jog between two lines of 50 mm,
+    // and a stroke that is itself that short, kept.
+    const std::string text =
+        R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100">
+<path d="M 0,10 L 50,10 L 50.004,10.003 L 100,10"/><path d="M 0,50 L 0.005,50"/></svg>)svg";
+    ImportOptions options;
+    options.keep_order = true;
+    const ImportResult r = import_drawing(text, DrawingFormat::Svg, options);
+    REQUIRE(r.strokes.size() == 2);
+    CHECK(r.strokes[0].size() == 2);
+    for (const Primitive& p : r.strokes[0]) CHECK(modsynth::geometry::length(p) >= 1e-4);
+    CHECK(r.strokes[1].size() == 1);
+    CHECK(r.deviation <= 1e-4);
+    // Two in a row at a corner: the second is not folded where the first
+    // went (its corners would stray 0.16 mm), but into the line after it.
+    const std::string corner =
+        R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100">
+<path d="M 0,10 L 50,10 L 50.01,10.08 L 50,10.16 L 0,10.16"/></svg>)svg";
+    const ImportResult c = import_drawing(corner, DrawingFormat::Svg, options);
+    REQUIRE(c.strokes.size() == 1);
+    CHECK(c.strokes[0].size() == 2);
+    for (const Primitive& p : c.strokes[0]) CHECK(modsynth::geometry::length(p) >= 1e-4);
+    CHECK(c.deviation <= 1e-4);
+}

@@ -1,5 +1,6 @@
 // The SVG reader on what SVG does not draw and on arcs at the edges of
 // double precision: drawn as a browser draws them, or refused by name.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <functional>
 #include <string>
@@ -128,4 +129,67 @@ TEST_CASE("SVG: dots are skipped with a warning, or refused with strict", "[draw
     strict.strict = true;
     CHECK_THROWS_WITH(read_svg(svg, strict),
                       Catch::Contains("path#dot2 (line 4)") && Catch::Contains("zero-length"));
+}
+
+TEST_CASE("SVG: a shape neither filled nor stroked is not drawn; filled ones are counted",
+          "[drawing][svg]") {
+    // As tabler's icons hold it: an invisible frame beside the strokes.
+    const std::string icon =
+        R"svg(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 24 24" fill="none" stroke="currentColor">
+<path stroke="none" d="M0 0h24v24H0z" fill="none"/>
+<path d="M12 5l0 14"/><path d="M5 12l14 0"/></svg>)svg";
+    const Drawing d = read_svg(icon);
+    CHECK(d.curves.size() == 2);
+    CHECK(d.filled_outlines == 0);
+    // The frame once placed would set the width: the cross does now.
+    ImportOptions options;
+    options.placement.width = 0.14;
+    const ImportResult r = import_drawing(icon, DrawingFormat::Svg, options);
+    double lo = 1e9, hi = -1e9;
+    for (const auto& stroke : r.strokes) {
+        for (const auto& p : stroke) {
+            lo = std::min({lo, p.start.x(), p.end.x()});
+            hi = std::max({hi, p.start.x(), p.end.x()});
+        }
+    }
+    CHECK(hi - lo == Approx(0.14));
+    // Inherited: a group that sets stroke none hides its unfilled shapes.
+    CHECK(read_svg(svg(kShown +
+                       R"svg(<g stroke="none" style="fill:none"><path d="M 1,1 L 9,9"/></g>)svg"))
+              .curves.size() == 1);
+    // Fill-only shapes (what a browser shows as solid) are traced along
+    // their outlines and counted; stroked ones and unset strokes are not.
+    const Drawing filled = read_svg(svg(R"svg(<path d="M 10,10 h 10 v 10 z"/>
+<g fill="red"><rect x="30" y="30" width="5" height="5"/><circle stroke="black" cx="60" cy="60" r="3"/></g>
+<path style="fill:none" d="M 1,1 L 9,9"/>)svg"));
+    CHECK(filled.curves.size() == 4);
+    CHECK(filled.filled_outlines == 2);
+}
+
+TEST_CASE("SVG: a curve that goes out and back within the tolerance is a dot, skipped",
+          "[drawing][svg]") {
+    // As flag-icons' finer emblems hold them: "q0-.2 0 0", a curve of no
+    // area ending where it starts, 0.1 units out.
+    const std::string flag = svg(kShown + R"svg(<path id="speck" d="M50 50 q0-.2 0 0"/>)svg");
+    ImportOptions options;
+    options.placement.scale = 1e-4;  // 10 µm out
+    const ImportResult r = import_drawing(flag, DrawingFormat::Svg, options);
+    CHECK(r.strokes.size() == 1);
+    REQUIRE(!r.warnings.empty());
+    CHECK_THAT(r.warnings.back(),
+               Catch::Contains("skipped dots") && Catch::Contains("path#speck (line 1)"));
+    options.read.strict = true;
+    CHECK_THROWS_WITH(import_drawing(flag, DrawingFormat::Svg, options),
+                      Catch::Contains("path#speck") && Catch::Contains("a dot"));
+    // Larger than the tolerance it is a loop, and followed.
+    options.read.strict = false;
+    options.tolerance = 1e-6;
+    CHECK(import_drawing(flag, DrawingFormat::Svg, options).strokes.size() == 2);
+}
+
+TEST_CASE("SVG: a rect without a width or height is not rendered", "[drawing][svg]") {
+    // flag-icons' gb-nir.svg holds one (SVG 2: its size is auto, 0).
+    const Drawing d =
+        read_svg(svg(kShown + R"svg(<rect fill="#fff" rx="0" ry="0"/><rect height="5"/>)svg"));
+    CHECK(d.curves.size() == 1);
 }

@@ -21,13 +21,18 @@ struct FittedCurve {
     /// The largest distance found from a dense sampling of the curve to the
     /// primitives, and from the primitives back to the curve.
     double deviation = 0.0;
+    /// The curve goes out and back within the tolerance of its start (a
+    /// flag's zero-area filler, "q0-.2 0 0"): no primitive follows it, as
+    /// no stroke of the tool can draw a dot. `primitives` is empty.
+    bool dot = false;
 };
 
 /// Pieces shorter than this (metres) are folded into their neighbour, and a
 /// curve must be larger than this across to be fitted at all.
 constexpr double kMinPiece = 1e-8;
 
-/// Fits one curve (in task coordinates, metres). Throws task::InputError
+/// Fits one curve (in task coordinates, metres); a curve that is a dot at
+/// this tolerance comes back with `dot` set. Throws task::InputError
 /// naming curve.source when it cannot be followed within `tolerance` in at
 /// most `max_primitives` pieces, or is smaller than kMinPiece across, and
 /// ImportTimeout once `deadline` has passed. Its work is bounded whatever

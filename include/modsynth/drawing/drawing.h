@@ -28,6 +28,10 @@ struct Drawing {
     /// cannot be traced, degenerate pieces (ReadOptions::strict refuses
     /// them instead).
     std::vector<std::string> warnings;
+    /// Shapes only filled, not stroked (SVG), whose outlines were traced:
+    /// a fill has no centreline, so an icon set drawn with fills takes
+    /// several times the primitives of its stroked version.
+    std::size_t filled_outlines = 0;
     /// The drawing's layers (DXF) and how many entities each holds.
     std::map<std::string, std::size_t> layers;
 };

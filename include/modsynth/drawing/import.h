@@ -53,6 +53,8 @@ struct ImportResult {
     Affine page_to_task;
     /// What the reader skipped (Drawing::warnings), one line each.
     std::vector<std::string> warnings;
+    /// Filled shapes whose outlines were traced (Drawing::filled_outlines).
+    std::size_t filled_outlines = 0;
     /// The drawing's layers and their entity counts (DXF).
     std::map<std::string, std::size_t> layers;
 };

@@ -55,6 +55,8 @@ struct VerifyOptions {
     /// meet, not the step it is planned with: the planner walks finer
     /// (MotionOptions::max_ee_step, 2 mm) to keep the bounds tight, and a
     /// motion planned coarser is checked against its own step (options_for).
+    /// On arcs of a smaller radius a step of half a turn or more is refused
+    /// whatever this limit (the planner takes at most a quarter turn).
     double max_ee_step = 0.005;
 
     /// False (with `error` naming the field) when some value is out of range.
