@@ -18,6 +18,8 @@
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
+#include "relaxation_search.h"
+
 namespace modsynth::explanation {
 
 using prove::BranchAndBoundOptions;
@@ -77,24 +79,18 @@ std::pair<Status, std::string> attempt(const task::Task& relaxed, double seconds
         return {s.status,
                 "solved: " + std::to_string(s.robot.dof()) + " joints, links " + links + " m"};
     }
-    if (s.status == Status::Infeasible)
-        return {s.status, "still infeasible: " + s.explanation.message};
-    return {s.status, "the conflict is gone, but no robot was found within " +
-                          text::format("%.0f s", seconds)};
+    return unsolved_outcome(s, seconds);
 }
 
 // The search for the smallest change of each core part: one relaxer per
 // kind of part (the table below), each bisecting one number of the task
 // until the conflict is gone, and offering the change once re-checked.
-class Relaxers {
+class Relaxers : RelaxationSearch<task::Task> {
 public:
     Relaxers(const task::Task& task, const std::vector<TaskPart>& core, double solve_seconds,
              double time_limit, const RelaxationOptions& options)
-        : task_(task),
-          core_(core),
-          solve_seconds_(solve_seconds),
-          options_(options),
-          deadline_(run::Deadline::in(time_limit)) {
+        : RelaxationSearch(task, core, solve_seconds, time_limit, options, &conflict_free,
+                           &attempt) {
         for (const TaskPart& p : core)
             if (p.kind() == TaskPart::Kind::Primitive) paths_.push_back(task::to_string(p));
     }
@@ -110,39 +106,7 @@ public:
     void moved_path(const TaskPart& part);
 
 private:
-    bool free(const task::Task& t) const {
-        return conflict_free(t, options_.check_seconds, deadline_);
-    }
-
-    // Smallest value in [lo, hi] (by bisection to `tolerance`) for which
-    // `is_free(value)` holds, assuming monotonicity; nullopt if not even at
-    // hi, or when the deadline passes first.
-    template <typename Free>
-    std::optional<double> smallest(double lo, double hi, double tolerance, Free is_free) const {
-        if (!is_free(hi)) return std::nullopt;
-        while (hi - lo > tolerance) {
-            if (deadline_.expired()) return std::nullopt;
-            const double mid = 0.5 * (lo + hi);
-            (is_free(mid) ? hi : lo) = mid;
-        }
-        return hi;
-    }
-
-    // Re-checked here, whatever the search that found it assumed.
-    bool offer(const TaskPart& part, const std::string& change, const task::Task& relaxed) {
-        if (!free(relaxed)) return false;
-        auto [status, outcome] = attempt(relaxed, std::min(solve_seconds_, deadline_.remaining()));
-        out_.push_back({part, change, relaxed, std::move(status), std::move(outcome)});
-        return true;
-    }
-
-    const task::Task& task_;
-    const std::vector<TaskPart>& core_;
-    const double solve_seconds_;
-    const RelaxationOptions& options_;
-    const run::Deadline deadline_;
     std::vector<std::string> paths_;  ///< the core's primitives, by name
-    std::vector<Relaxation> out_;
 };
 
 struct Relaxer {

@@ -13,6 +13,8 @@
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
+#include "relaxation_search.h"
+
 namespace modsynth::explanation {
 namespace {
 
@@ -62,21 +64,15 @@ std::pair<Status, std::string> attempt(const task::SpatialTask& relaxed, double 
     if (s.status == Status::Solved)
         return {s.status, text::format("solved: %d joints, chain %.3f m", s.dh_robot->dof(),
                                        s.dh_robot->total_length())};
-    if (s.status == Status::Infeasible)
-        return {s.status, "still infeasible: " + s.explanation.message};
-    return {s.status, "the conflict is gone, but no robot was found within " +
-                          text::format("%.0f s", seconds)};
+    return unsolved_outcome(s, seconds);
 }
 
-class SpatialRelaxers {
+class SpatialRelaxers : RelaxationSearch<task::SpatialTask> {
 public:
     SpatialRelaxers(const task::SpatialTask& task, const std::vector<TaskPart>& core,
                     double solve_seconds, double time_limit, const RelaxationOptions& options)
-        : task_(task),
-          core_(core),
-          solve_seconds_(solve_seconds),
-          options_(options),
-          deadline_(run::Deadline::in(time_limit)) {}
+        : RelaxationSearch(task, core, solve_seconds, time_limit, options, &conflict_free,
+                           &attempt) {}
 
     std::vector<Relaxation> run();
 
@@ -84,37 +80,6 @@ public:
     void more_joints(const TaskPart& part);
     void other_twists(const TaskPart& part);
     void grown_region(const TaskPart& part);
-
-private:
-    bool free(const task::SpatialTask& t) const {
-        return conflict_free(t, options_.check_seconds, deadline_);
-    }
-
-    // As the plane's: the smallest value in [lo, hi] for which is_free holds.
-    template <typename Free>
-    std::optional<double> smallest(double lo, double hi, double tolerance, Free is_free) const {
-        if (!is_free(hi)) return std::nullopt;
-        while (hi - lo > tolerance) {
-            if (deadline_.expired()) return std::nullopt;
-            const double mid = 0.5 * (lo + hi);
-            (is_free(mid) ? hi : lo) = mid;
-        }
-        return hi;
-    }
-
-    bool offer(const TaskPart& part, const std::string& change, const task::SpatialTask& relaxed) {
-        if (!free(relaxed)) return false;
-        auto [status, outcome] = attempt(relaxed, std::min(solve_seconds_, deadline_.remaining()));
-        out_.push_back({part, change, relaxed, std::move(status), std::move(outcome)});
-        return true;
-    }
-
-    const task::SpatialTask& task_;
-    const std::vector<TaskPart>& core_;
-    const double solve_seconds_;
-    const RelaxationOptions& options_;
-    const run::Deadline deadline_;
-    std::vector<Relaxation> out_;
 };
 
 struct SpatialRelaxer {
