@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstring>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <optional>
@@ -169,22 +169,36 @@ constexpr double kCapPerEm = 21.0 / 32.0;
 /// The fonts hershey-fonts-data ships: a family naming one of them (or
 /// "Hershey NAME") asks for that font and nothing else.
 const std::set<std::string, std::less<>> kHersheyFonts = {
-    "astrology", "cursive",   "cyrilc_1",  "cyrillic", "futural",  "futuram",  "gothgbt",
-    "gothgrt",   "gothiceng", "gothicger", "gothicita", "gothitt", "greek",    "greekc",
-    "greeks",    "japanese",  "markers",   "mathlow",  "mathupp",  "meteorology", "music",
-    "rowmand",   "rowmans",   "rowmant",   "scriptc",  "scripts",  "symbolic", "timesg",
+    "astrology", "cursive",   "cyrilc_1",  "cyrillic",  "futural", "futuram",     "gothgbt",
+    "gothgrt",   "gothiceng", "gothicger", "gothicita", "gothitt", "greek",       "greekc",
+    "greeks",    "japanese",  "markers",   "mathlow",   "mathupp", "meteorology", "music",
+    "rowmand",   "rowmans",   "rowmant",   "scriptc",   "scripts", "symbolic",    "timesg",
     "timesi",    "timesib",   "timesr",    "timesrb"};
 
 /// The nearest Hershey font for the families browsers fall back on.
 const std::map<std::string, std::string, std::less<>> kNearest = {
-    {"sansserif", "futural"},    {"arial", "futural"},          {"helvetica", "futural"},
-    {"verdana", "futural"},      {"dejavusans", "futural"},     {"liberationsans", "futural"},
-    {"opensans", "futural"},     {"roboto", "futural"},         {"bitstreamverasans", "futural"},
+    {"sansserif", "futural"},
+    {"arial", "futural"},
+    {"helvetica", "futural"},
+    {"verdana", "futural"},
+    {"dejavusans", "futural"},
+    {"liberationsans", "futural"},
+    {"opensans", "futural"},
+    {"roboto", "futural"},
+    {"bitstreamverasans", "futural"},
     // Hershey has no fixed-pitch font: the plain simplex is the nearest.
-    {"monospace", "futural"},    {"courier", "futural"},        {"couriernew", "futural"},
-    {"dejavusansmono", "futural"}, {"serif", "timesr"},         {"times", "timesr"},
-    {"timesnewroman", "timesr"}, {"georgia", "timesr"},         {"dejavuserif", "timesr"},
-    {"liberationserif", "timesr"}, {"script", "scripts"},       {"comicsansms", "scripts"}};
+    {"monospace", "futural"},
+    {"courier", "futural"},
+    {"couriernew", "futural"},
+    {"dejavusansmono", "futural"},
+    {"serif", "timesr"},
+    {"times", "timesr"},
+    {"timesnewroman", "timesr"},
+    {"georgia", "timesr"},
+    {"dejavuserif", "timesr"},
+    {"liberationserif", "timesr"},
+    {"script", "scripts"},
+    {"comicsansms", "scripts"}};
 
 /// The value of an inherited property at `e`: its own or the nearest
 /// ancestor's; empty when none sets it.
@@ -204,10 +218,13 @@ std::optional<double> length_of(std::string_view v, double em, bool percent_of_e
     const double x = std::strtod(s.c_str(), &end);
     if (end == s.c_str() || !std::isfinite(x)) return std::nullopt;
     const std::string unit = lower(trimmed(std::string_view(end)));
-    static const std::map<std::string, double, std::less<>> kPx = {
-        {"", 1.0},           {"px", 1.0},          {"pt", kPxPerInch / 72.0},
-        {"pc", kPxPerInch / 6.0}, {"mm", kPxPerInch / 25.4}, {"cm", kPxPerInch / 2.54},
-        {"in", kPxPerInch}};
+    static const std::map<std::string, double, std::less<>> kPx = {{"", 1.0},
+                                                                   {"px", 1.0},
+                                                                   {"pt", kPxPerInch / 72.0},
+                                                                   {"pc", kPxPerInch / 6.0},
+                                                                   {"mm", kPxPerInch / 25.4},
+                                                                   {"cm", kPxPerInch / 2.54},
+                                                                   {"in", kPxPerInch}};
     if (unit == "em") return x * em;
     if (unit == "ex") return x * em / 2.0;
     if (unit == "%" && percent_of_em) return x * em / 100.0;
@@ -219,8 +236,8 @@ std::optional<double> length_of(std::string_view v, double em, bool percent_of_e
 /// The font size at `e`, in user units (0 draws nothing).
 double font_size(XmlElement e, const std::string& label) {
     const tinyxml2::XMLNode* up = e->Parent();
-    const double parent = up && up->ToElement() ? font_size(up->ToElement(), label)
-                                                : kMediumFontSize;
+    const double parent =
+        up && up->ToElement() ? font_size(up->ToElement(), label) : kMediumFontSize;
     const std::string v = property(e, "font-size");
     if (v.empty() || v == "inherit") return parent;
     static const std::map<std::string, double, std::less<>> kKeywords = {
@@ -318,8 +335,8 @@ public:
         const std::string label = element_label(text);
         const std::string mode = inherited(text, "writing-mode");
         if (!mode.empty() && mode != "lr" && mode != "lr-tb" && mode != "horizontal-tb")
-            throw InputError(label, "vertical writing (writing-mode " + mode +
-                                        ") cannot be honoured");
+            throw InputError(label,
+                             "vertical writing (writing-mode " + mode + ") cannot be honoured");
         bool preserve = false;
         for (const tinyxml2::XMLNode* n = text; n && n->ToElement(); n = n->Parent()) {
             if (const char* v = n->ToElement()->Attribute("xml:space")) {
@@ -414,8 +431,8 @@ private:
                 out->InsertEndChild(g);
                 run(c, g, depth + 1);
             } else if (!kNotDrawn.count(name)) {
-                throw InputError(element_label(c), "text " + std::string(name) +
-                                                       " cannot be honoured (only tspan)");
+                throw InputError(element_label(c),
+                                 "text " + std::string(name) + " cannot be honoured (only tspan)");
             }
         }
     }
@@ -475,7 +492,8 @@ void render(XMLElement* e, const Rendering& rendering, tinyxml2::XMLDocument& do
             XMLElement* g = doc.NewElement("g");
             for (const tinyxml2::XMLAttribute* a = c->FirstAttribute(); a; a = a->Next()) {
                 const std::string_view n = a->Name();
-                if (n != "x" && n != "y" && n != "dx" && n != "dy") g->SetAttribute(a->Name(), a->Value());
+                if (n != "x" && n != "y" && n != "dx" && n != "dy")
+                    g->SetAttribute(a->Name(), a->Value());
             }
             if (!c->Attribute("modsynth:line")) g->SetAttribute("modsynth:line", c->GetLineNum());
             Writer(doc, missing).write(c, g);

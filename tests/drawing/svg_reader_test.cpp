@@ -232,14 +232,16 @@ TEST_CASE("SVG: text is written in a Hershey font where the text lies", "[drawin
 
     // The anchor moves the text by half its advance, or all of it.
     const auto anchored = [](const std::string& anchor) {
-        return box_of(read_svg(svg(R"(<text x="50" y="40" font-size="16" text-anchor=")" +
-                                   anchor + R"(">HI</text>)")));
+        return box_of(read_svg(svg(R"(<text x="50" y="40" font-size="16" text-anchor=")" + anchor +
+                                   R"(">HI</text>)")));
     };
     const Box start = anchored("start"), middle = anchored("middle"), end = anchored("end");
     // The anchor is inherited.
-    CHECK(box_of(read_svg(svg(
-                     R"(<g style="text-anchor:end"><text x="50" y="40" font-size="16">HI</text></g>)")))
-              .max.x() == Approx(end.max.x()));
+    CHECK(
+        box_of(
+            read_svg(svg(
+                R"(<g style="text-anchor:end"><text x="50" y="40" font-size="16">HI</text></g>)")))
+            .max.x() == Approx(end.max.x()));
     CHECK(start.min.x() > 50.0);
     CHECK(end.max.x() < 50.0);
     CHECK(start.min.x() - middle.min.x() == Approx((start.min.x() - end.min.x()) / 2.0));
@@ -248,13 +250,14 @@ TEST_CASE("SVG: text is written in a Hershey font where the text lies", "[drawin
 
     // The font size from a style, in px, inherited, or in em; a
     // transform moves and scales the glyphs.
-    const Box styled = box_of(read_svg(svg(R"(<text x="10" y="40" style="font-size:16px">HI</text>)")));
+    const Box styled =
+        box_of(read_svg(svg(R"(<text x="10" y="40" style="font-size:16px">HI</text>)")));
     CHECK(styled.max.x() == Approx(b.max.x()));
-    const Box inherited =
-        box_of(read_svg(svg(R"(<g font-size="8"><text x="10" y="40" font-size="2em">HI</text></g>)")));
+    const Box inherited = box_of(
+        read_svg(svg(R"(<g font-size="8"><text x="10" y="40" font-size="2em">HI</text></g>)")));
     CHECK(inherited.max.y() == Approx(b.max.y()));
-    const Box moved = box_of(read_svg(
-        svg(R"x(<g transform="translate(5,-10)"><text x="10" y="40" font-size="8" transform="scale(2)">HI</text></g>)x")));
+    const Box moved = box_of(read_svg(svg(
+        R"x(<g transform="translate(5,-10)"><text x="10" y="40" font-size="8" transform="scale(2)">HI</text></g>)x")));
     CHECK(moved.min.x() == Approx(b.min.x() + 10.0 + 5.0));  // 2 * (10 + bearing at 8) + 5
     CHECK(moved.min.y() == Approx(100.0 - (80.0 - 10.0)));
     CHECK(moved.max.y() == Approx(moved.min.y() + 16.0 * 21.0 / 32.0));
@@ -283,7 +286,8 @@ TEST_CASE("SVG: tspans continue the text or start a chunk of their own", "[drawi
     CHECK(e.max.x() > 50.0);
     // White space collapses as a browser shows it; a text of none draws
     // nothing.
-    const Box spaced = box_of(read_svg(svg("<text x=\"10\" y=\"20\" font-size=\"10\">\n   AB  </text>")));
+    const Box spaced =
+        box_of(read_svg(svg("<text x=\"10\" y=\"20\" font-size=\"10\">\n   AB  </text>")));
     CHECK(spaced.min.x() == Approx(ab.min.x()));
     CHECK_THAT(message_of([] { read_svg(svg(R"(<text x="1" y="2">  </text>)")); }),
                Catch::Contains("empty drawing"));
@@ -291,10 +295,10 @@ TEST_CASE("SVG: tspans continue the text or start a chunk of their own", "[drawi
 
 TEST_CASE("SVG: text that is not rendered is not drawn; fonts map to Hershey ones",
           "[drawing][svg][text]") {
-    for (const std::string hidden : {R"(<text display="none">A</text>)",
-                                     R"(<g visibility="hidden"><text>A</text></g>)",
-                                     R"(<text fill="none" stroke="none">A</text>)",
-                                     R"(<text>A<tspan display="none">B</tspan></text>)"}) {
+    for (const std::string hidden :
+         {R"(<text display="none">A</text>)", R"(<g visibility="hidden"><text>A</text></g>)",
+          R"(<text fill="none" stroke="none">A</text>)",
+          R"(<text>A<tspan display="none">B</tspan></text>)"}) {
         INFO(hidden);
         const std::size_t a = read_svg(svg("<text>A</text>")).curves.size();
         const Drawing d = read_svg(svg(kShown + hidden));
@@ -326,4 +330,38 @@ TEST_CASE("SVG: text that cannot be honoured is refused by name", "[drawing][svg
     }
     CHECK_THAT(message_of([] { read_svg(svg(R"(<text id="a" rotate="30">A</text>)")); }),
                Catch::Contains("text#a (line 1)"));
+}
+
+TEST_CASE("SVG: a label as Inkscape writes it imports; characters without a glyph are said",
+          "[drawing][svg][text]") {
+    const std::string label =
+        R"svg(<svg xmlns="http://www.w3.org/2000/svg" xmlns:sodipodi="http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd"
+   width="60mm" height="30mm" viewBox="0 0 60 30">
+  <g id="layer1">
+    <rect style="fill:none;stroke:#000000;stroke-width:0.5" width="56" height="26" x="2" y="2" ry="3"/>
+    <text xml:space="preserve" style="font-size:8.46667px;line-height:1.25;font-family:sans-serif;text-anchor:middle;fill:#000000;stroke:none"
+       x="36" y="18" id="text1"><tspan sodipodi:role="line" id="tspan1" x="36" y="18">WARN°</tspan></text>
+  </g>
+</svg>)svg";
+    ImportOptions options;
+    options.placement.width = 0.25;
+    const ImportResult r = import_drawing(label, DrawingFormat::Svg, options);
+    CHECK(r.strokes.size() > 5);
+    REQUIRE(!r.warnings.empty());
+    CHECK_THAT(r.warnings.front(),
+               Catch::Contains("tspan#tspan1 (line 6)") && Catch::Contains("without a glyph"));
+    // The word is centred on x = 36 mm of the 60 mm label.
+    const Drawing d = read_svg(label);
+    Box word;
+    for (const Curve& c : d.curves) {
+        if (c.source.rfind("tspan", 0) != 0) continue;
+        for (const Segment& s : c.segments) {
+            for (const Vec2& p : {start_point(s), end_point(s)}) {
+                word.min = word.min.cwiseMin(p);
+                word.max = word.max.cwiseMax(p);
+            }
+        }
+    }
+    CHECK(word.centre().x() == Approx(36.0).margin(0.3));
+    CHECK(word.min.y() == Approx(12.0).margin(1e-9));  // "WARN" has no descender
 }
