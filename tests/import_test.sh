@@ -115,9 +115,11 @@ expect_error() {  # file-content-name expected-text...
 svg() { printf '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">\n%s\n</svg>\n' "$2" >"$tmp/$1"; }
 svg malformed.svg '<path id="p3" d="M 10,"/>'
 expect_error "$tmp/malformed.svg" "path#p3 (line 2)" "malformed path data" "M 10,"
-svg text.svg '<text id="t1">Hello</text>
+svg text.svg '<text id="t1" style="writing-mode:tb">Hello</text>'
+expect_error "$tmp/text.svg" "text#t1 (line 2)" "vertical writing"
+svg image.svg '<path d="M 1,1 L 2,2"/>
 <image id="logo" href="x.png"/>'
-expect_error "$tmp/text.svg" "text#t1 (line 2)" "image#logo (line 3)"
+expect_error "$tmp/image.svg" "image#logo (line 3)" "bitmap"
 svg zero.svg '<path id="dot" d="M 5,5 L 5,5"/>'
 expect_error "$tmp/zero.svg" "path#dot (line 2)" "zero-length"
 svg empty.svg ''

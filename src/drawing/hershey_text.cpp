@@ -179,6 +179,7 @@ TextCurves text_curves(std::string_view text, const Vec2& at, const TextLayout& 
             x += g->width;
         }
     }
+    out.advance = lines.back().width * scale * layout.width_factor;
     return out;
 }
 

@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -17,6 +21,7 @@
 #include <boost/exception/get_error_info.hpp>
 #include <svgpp/svgpp.hpp>
 
+#include <modsynth/drawing/hershey_text.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/text/printable.h>
 
@@ -36,11 +41,21 @@ using XmlElement = const tinyxml2::XMLElement*;
 constexpr double kPxPerInch = 96.0;
 constexpr double kMmPerPx = 25.4 / kPxPerInch;
 
-/// "path#p3 (line 12)": how messages name an element.
-std::string element_label(XmlElement e) {
+/// The paths a text's glyphs become keep the text's (or tspan's) name in
+/// this foreign attribute, which the walk skips.
+constexpr const char* kNameAttribute = "modsynth:name";
+
+/// "path#p3": an element's name and id.
+std::string element_name(XmlElement e) {
+    if (const char* named = e->Attribute(kNameAttribute)) return named;
     std::string label = text::printable(svg_xml::local_name(e->Name()), 40);
     if (const char* id = e->Attribute("id")) label += "#" + text::printable(id, 40);
-    return label + " (line " + svg_use::line_of(e) + ")";
+    return label;
+}
+
+/// "path#p3 (line 12)": how messages name an element.
+std::string element_label(XmlElement e) {
+    return element_name(e) + " (line " + svg_use::line_of(e) + ")";
 }
 
 /// Elements that draw nothing by themselves: skipped with what they hold.
@@ -137,6 +152,362 @@ struct Rendering {
     bool outline_only() const { return paint_matters && filled && !stroked; }
 };
 
+/// SVG text, written as a pen plotter writes it: in a single-stroke
+/// Hershey font. Before the walk, each rendered `text` becomes a group of
+/// paths (one per run of characters, within groups for its tspans) that
+/// keeps the text's attributes, so that its transform, clip, paint and
+/// visibility act as on any shape.
+namespace svg_text {
+
+using tinyxml2::XMLElement;
+
+constexpr double kMediumFontSize = 16.0;  ///< px, CSS's initial font size
+/// Hershey glyphs are drawn on a body 32 units high whose capitals are 21
+/// high: the share of a font size a capital letter takes.
+constexpr double kCapPerEm = 21.0 / 32.0;
+
+/// The fonts hershey-fonts-data ships: a family naming one of them (or
+/// "Hershey NAME") asks for that font and nothing else.
+const std::set<std::string, std::less<>> kHersheyFonts = {
+    "astrology", "cursive",   "cyrilc_1",  "cyrillic",  "futural", "futuram",     "gothgbt",
+    "gothgrt",   "gothiceng", "gothicger", "gothicita", "gothitt", "greek",       "greekc",
+    "greeks",    "japanese",  "markers",   "mathlow",   "mathupp", "meteorology", "music",
+    "rowmand",   "rowmans",   "rowmant",   "scriptc",   "scripts", "symbolic",    "timesg",
+    "timesi",    "timesib",   "timesr",    "timesrb"};
+
+/// The nearest Hershey font for the families browsers fall back on.
+const std::map<std::string, std::string, std::less<>> kNearest = {
+    {"sansserif", "futural"},
+    {"arial", "futural"},
+    {"helvetica", "futural"},
+    {"verdana", "futural"},
+    {"dejavusans", "futural"},
+    {"liberationsans", "futural"},
+    {"opensans", "futural"},
+    {"roboto", "futural"},
+    {"bitstreamverasans", "futural"},
+    // Hershey has no fixed-pitch font: the plain simplex is the nearest.
+    {"monospace", "futural"},
+    {"courier", "futural"},
+    {"couriernew", "futural"},
+    {"dejavusansmono", "futural"},
+    {"serif", "timesr"},
+    {"times", "timesr"},
+    {"timesnewroman", "timesr"},
+    {"georgia", "timesr"},
+    {"dejavuserif", "timesr"},
+    {"liberationserif", "timesr"},
+    {"script", "scripts"},
+    {"comicsansms", "scripts"}};
+
+/// The value of an inherited property at `e`: its own or the nearest
+/// ancestor's; empty when none sets it.
+std::string inherited(XmlElement e, std::string_view name, bool keep_case = false) {
+    for (const tinyxml2::XMLNode* n = e; n && n->ToElement(); n = n->Parent()) {
+        const std::string v = property(n->ToElement(), name, keep_case);
+        if (!v.empty() && lower(v) != "inherit") return v;
+    }
+    return {};
+}
+
+/// A length in user units, or nothing when `v` is not one; `em` is the
+/// font size that em, ex and (when `percent_of_em`) % refer to.
+std::optional<double> length_of(std::string_view v, double em, bool percent_of_em) {
+    const std::string s(trimmed(v));
+    char* end = nullptr;
+    const double x = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() || !std::isfinite(x)) return std::nullopt;
+    const std::string unit = lower(trimmed(std::string_view(end)));
+    static const std::map<std::string, double, std::less<>> kPx = {{"", 1.0},
+                                                                   {"px", 1.0},
+                                                                   {"pt", kPxPerInch / 72.0},
+                                                                   {"pc", kPxPerInch / 6.0},
+                                                                   {"mm", kPxPerInch / 25.4},
+                                                                   {"cm", kPxPerInch / 2.54},
+                                                                   {"in", kPxPerInch}};
+    if (unit == "em") return x * em;
+    if (unit == "ex") return x * em / 2.0;
+    if (unit == "%" && percent_of_em) return x * em / 100.0;
+    const auto found = kPx.find(unit);
+    if (found == kPx.end()) return std::nullopt;
+    return x * found->second;
+}
+
+/// The font size at `e`, in user units (0 draws nothing).
+double font_size(XmlElement e, const std::string& label) {
+    const tinyxml2::XMLNode* up = e->Parent();
+    const double parent =
+        up && up->ToElement() ? font_size(up->ToElement(), label) : kMediumFontSize;
+    const std::string v = property(e, "font-size");
+    if (v.empty() || v == "inherit") return parent;
+    static const std::map<std::string, double, std::less<>> kKeywords = {
+        {"xx-small", 9.0}, {"x-small", 10.0}, {"small", 13.0},   {"medium", 16.0},
+        {"large", 18.0},   {"x-large", 24.0}, {"xx-large", 32.0}};
+    if (const auto k = kKeywords.find(v); k != kKeywords.end()) return k->second;
+    if (v == "larger") return parent * 1.2;
+    if (v == "smaller") return parent / 1.2;
+    const auto size = length_of(v, parent, true);
+    if (!size || *size < 0.0 || *size > kMaxDrawingCoordinate)
+        throw InputError(label, "font-size '" + text::printable(v, 40) + "' cannot be honoured");
+    return *size;
+}
+
+/// The Hershey font for the font-family at `e`: the first family that
+/// names one or has a nearest one; the default otherwise.
+std::string font_for(XmlElement e, const std::string& label) {
+    const std::string families = inherited(e, "font-family", true);
+    static const std::vector<std::string> installed = hershey_fonts();
+    const auto is_installed = [&](const std::string& f) {
+        return std::find(installed.begin(), installed.end(), f) != installed.end();
+    };
+    for (std::string_view rest = families; !rest.empty();) {
+        const auto comma = rest.find(',');
+        std::string_view family = trimmed(rest.substr(0, comma));
+        rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+        if (family.size() >= 2 && (family.front() == '"' || family.front() == '\'') &&
+            family.back() == family.front())
+            family = family.substr(1, family.size() - 2);
+        std::string key;  // "Hershey Sans-Serif" -> "hersheysansserif"
+        for (const char c : lower(family)) {
+            if (std::isalnum(static_cast<unsigned char>(c)) || c == '_') key += c;
+        }
+        const bool hershey = key.rfind("hershey", 0) == 0;
+        if (hershey) key = key.substr(7);
+        if (is_installed(key)) return key;
+        if (hershey || kHersheyFonts.count(key)) {
+            std::string list;
+            for (const std::string& f : installed) list += (list.empty() ? "" : ", ") + f;
+            throw InputError(label, "font-family '" + text::printable(std::string(family), 40) +
+                                        "' names a Hershey font that is not installed (" +
+                                        (list.empty() ? "none is; install hershey-fonts-data"
+                                                      : "installed: " + list) +
+                                        ")");
+        }
+        if (const auto near = kNearest.find(key); near != kNearest.end()) {
+            if (is_installed(near->second)) return near->second;
+        }
+    }
+    return kDefaultFont;
+}
+
+/// The text of the document with its white space as SVG renders it: runs
+/// of spaces, tabs and line breaks as one space (none at the text's
+/// start or end), unless xml:space is "preserve".
+void collapse_space(XMLElement* text, bool preserve,
+                    std::map<const tinyxml2::XMLNode*, std::string>& out) {
+    std::vector<const tinyxml2::XMLNode*> order;
+    const std::function<void(const tinyxml2::XMLNode*)> walk = [&](const tinyxml2::XMLNode* n) {
+        for (const tinyxml2::XMLNode* c = n->FirstChild(); c; c = c->NextSibling()) {
+            if (c->ToText()) order.push_back(c);
+            if (c->ToElement()) walk(c);
+        }
+    };
+    walk(text);
+    bool after_space = true;
+    for (const tinyxml2::XMLNode* n : order) {
+        std::string s;
+        for (const char c : std::string_view(n->Value())) {
+            const bool space = c == ' ' || c == '\t' || c == '\n' || c == '\r';
+            if (preserve) {
+                s += space ? ' ' : c;
+            } else if (!space || !after_space) {
+                s += space ? ' ' : c;
+                after_space = space;
+            }
+        }
+        out[n] = s;
+    }
+    if (preserve) return;
+    for (auto n = order.rbegin(); n != order.rend(); ++n) {
+        std::string& s = out[*n];
+        while (!s.empty() && s.back() == ' ') s.pop_back();
+        if (!s.empty()) break;
+    }
+}
+
+class Writer {
+public:
+    Writer(tinyxml2::XMLDocument& doc, std::vector<std::string>& missing)
+        : doc_(&doc), missing_(&missing) {}
+
+    /// Lays `text` out into `out`, a group that replaces it.
+    void write(XMLElement* text, XMLElement* out) {
+        const std::string label = element_label(text);
+        const std::string mode = inherited(text, "writing-mode");
+        if (!mode.empty() && mode != "lr" && mode != "lr-tb" && mode != "horizontal-tb")
+            throw InputError(label,
+                             "vertical writing (writing-mode " + mode + ") cannot be honoured");
+        bool preserve = false;
+        for (const tinyxml2::XMLNode* n = text; n && n->ToElement(); n = n->Parent()) {
+            if (const char* v = n->ToElement()->Attribute("xml:space")) {
+                preserve = std::string_view(v) == "preserve";
+                break;
+            }
+        }
+        collapse_space(text, preserve, text_);
+        run(text, out, 0);
+        flush_chunk();
+    }
+
+private:
+    struct Run {
+        XMLElement* path;
+        std::vector<Curve> curves;  ///< in the text's user space, y down
+    };
+
+    /// A position attribute: one length or none; a list (a position per
+    /// character) is refused.
+    std::optional<double> position(XMLElement* e, const char* name, double em,
+                                   const std::string& label) {
+        const char* v = e->Attribute(name);
+        if (!v || trimmed(v).empty()) return std::nullopt;
+        const std::string_view value = trimmed(v);
+        if (value.find_first_of(" ,\t\n") != std::string_view::npos) {
+            throw InputError(label, std::string(name) + "='" + text::printable(v, 40) +
+                                        "' places characters one by one, which cannot be honoured");
+        }
+        const auto length = length_of(value, em, false);
+        if (!length || std::abs(*length) > kMaxDrawingCoordinate)
+            throw InputError(label, "malformed attribute " + std::string(name) + "='" +
+                                        text::printable(v, 40) + "'");
+        return length;
+    }
+
+    void run(XMLElement* e, XMLElement* out, int depth) {
+        const std::string label = element_label(e);
+        if (depth > 32) throw InputError(label, "tspans nested too deeply");
+        for (const char* refused : {"rotate", "textLength"}) {
+            if (e->Attribute(refused))
+                throw InputError(label, std::string(refused) + " cannot be honoured");
+        }
+        const double size = font_size(e, label);
+        const auto x = position(e, "x", size, label), y = position(e, "y", size, label);
+        const auto dx = position(e, "dx", size, label), dy = position(e, "dy", size, label);
+        if (x || y) {
+            // An absolute position starts a chunk, anchored on its own.
+            flush_chunk();
+            if (x) pen_.x() = *x;
+            if (y) pen_.y() = *y;
+            chunk_start_ = pen_.x();
+            anchor_ = inherited(e, "text-anchor");
+        }
+        if (dx) pen_.x() += *dx;
+        if (dy) pen_.y() += *dy;
+        TextLayout layout;
+        layout.font = font_for(e, label);
+        layout.height = size * kCapPerEm;
+        for (tinyxml2::XMLNode* n = e->FirstChild(); n; n = n->NextSibling()) {
+            if (n->ToText()) {
+                const std::string& s = text_[n];
+                if (s.empty() || size == 0.0) continue;
+                TextCurves t = text_curves(s, Vec2::Zero(), layout, "", label);
+                if (!t.missing.empty() && missing_->size() < 3)
+                    missing_->push_back(label + " ('" + text::printable(t.missing, 40) + "')");
+                Run r{nullptr, std::move(t.curves)};
+                for (Curve& c : r.curves) {
+                    for (Segment& s : c.segments) {
+                        auto& l = std::get<LineSegment>(s);
+                        l.a = Vec2(pen_.x() + l.a.x(), pen_.y() - l.a.y());
+                        l.b = Vec2(pen_.x() + l.b.x(), pen_.y() - l.b.y());
+                    }
+                }
+                pen_.x() += t.advance;
+                if (r.curves.empty()) continue;
+                r.path = doc_->NewElement("path");
+                named_after(r.path, e);
+                out->InsertEndChild(r.path);
+                chunk_.push_back(std::move(r));
+                continue;
+            }
+            XMLElement* c = n->ToElement();
+            if (!c || !svg_xml::is_svg_element(c)) continue;
+            const std::string_view name = svg_xml::local_name(c->Name());
+            if (name == "tspan" || name == "a") {
+                XMLElement* g = doc_->NewElement("g");
+                for (const char* a : {"style", "fill", "stroke", "display", "visibility"}) {
+                    if (const char* v = c->Attribute(a)) g->SetAttribute(a, v);
+                }
+                named_after(g, c);
+                out->InsertEndChild(g);
+                run(c, g, depth + 1);
+            } else if (!kNotDrawn.count(name)) {
+                throw InputError(element_label(c),
+                                 "text " + std::string(name) + " cannot be honoured (only tspan)");
+            }
+        }
+    }
+
+    void named_after(XMLElement* made, XMLElement* e) {
+        made->SetAttribute(kNameAttribute, element_name(e).c_str());
+        made->SetAttribute("modsynth:line", e->IntAttribute("modsynth:line", e->GetLineNum()));
+        if (const char* use = e->Attribute("modsynth:use-line"))
+            made->SetAttribute("modsynth:use-line", use);
+    }
+
+    /// The chunk ends: its runs move by its anchor, and are written.
+    void flush_chunk() {
+        const double width = pen_.x() - chunk_start_;
+        const double shift = anchor_ == "middle" ? -width / 2.0 : anchor_ == "end" ? -width : 0.0;
+        for (const Run& r : chunk_) {
+            std::string d;
+            char number[64];
+            const auto put = [&](char command, const Vec2& p) {
+                std::snprintf(number, sizeof number, "%c%.12g,%.12g ", command, p.x() + shift,
+                              p.y());
+                d += number;
+            };
+            for (const Curve& c : r.curves) {
+                put('M', std::get<LineSegment>(c.segments.front()).a);
+                for (const Segment& s : c.segments) put('L', std::get<LineSegment>(s).b);
+            }
+            r.path->SetAttribute("d", d.c_str());
+        }
+        chunk_.clear();
+        chunk_start_ = pen_.x();
+    }
+
+    tinyxml2::XMLDocument* doc_;
+    std::vector<std::string>* missing_;
+    std::map<const tinyxml2::XMLNode*, std::string> text_;
+    Vec2 pen_ = Vec2::Zero();
+    double chunk_start_ = 0.0;
+    std::string anchor_;
+    std::vector<Run> chunk_;
+};
+
+/// Replaces every rendered `text` under `e` by the paths of its glyphs;
+/// one that is not rendered is left for the check to pass over. Notes in
+/// `missing` (the first few) the texts with characters the font lacks.
+void render(XMLElement* e, const Rendering& rendering, tinyxml2::XMLDocument& doc,
+            std::vector<std::string>& missing) {
+    for (XMLElement* c = e->FirstChildElement(); c;) {
+        XMLElement* next = c->NextSiblingElement();
+        const std::string_view name = svg_xml::local_name(c->Name());
+        if (!svg_xml::is_svg_element(c) || kNotDrawn.count(name)) {
+            c = next;
+            continue;
+        }
+        const Rendering own = rendering.of(c);
+        if (name == "text" && own.drawn()) {
+            XMLElement* g = doc.NewElement("g");
+            for (const tinyxml2::XMLAttribute* a = c->FirstAttribute(); a; a = a->Next()) {
+                const std::string_view n = a->Name();
+                if (n != "x" && n != "y" && n != "dx" && n != "dy")
+                    g->SetAttribute(a->Name(), a->Value());
+            }
+            if (!c->Attribute("modsynth:line")) g->SetAttribute("modsynth:line", c->GetLineNum());
+            Writer(doc, missing).write(c, g);
+            e->InsertAfterChild(c, g);
+            e->DeleteChild(c);
+        } else if (name != "text") {
+            render(c, own, doc, missing);
+        }
+        c = next;
+    }
+}
+
+}  // namespace svg_text
+
 /// Walks what SVG++ will walk, before it does: every element must be one
 /// that can be drawn (or one that draws nothing), so that nothing in the
 /// drawing is dropped without a word. Elements that are not rendered
@@ -157,7 +528,9 @@ void check_elements(XmlElement e, const Rendering& rendering, const ReadOptions&
         const Rendering own = rendering.of(c);
         if (kShapes.count(name)) {
             if (!own.drawn()) not_drawn.insert(c);
-            if (own.drawn() && own.outline_only()) outlines.insert(c);
+            // A text's glyphs are centrelines already, however it is painted.
+            if (own.drawn() && own.outline_only() && !c->Attribute(kNameAttribute))
+                outlines.insert(c);
             continue;
         }
         if (kContainers.count(name)) {
@@ -174,7 +547,6 @@ void check_elements(XmlElement e, const Rendering& rendering, const ReadOptions&
         }
         if (!own.drawn()) continue;
         std::string why;
-        if (name == "text") why = " (convert text to paths first)";
         if (name == "image") why = " (a bitmap has no strokes)";
         unsupported.push_back(element_label(c) + why);
     }
@@ -713,6 +1085,8 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
     }
     svg_use::expand(doc);
     drop_unsized_rects(doc.RootElement());
+    std::vector<std::string> missing_glyphs;
+    svg_text::render(doc.RootElement(), Rendering{}.of(root), doc, missing_glyphs);
     std::vector<std::string> unsupported;
     SvgState state;
     state.options = &options;
@@ -775,6 +1149,11 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
         state.curves = std::move(kept);
     }
     std::vector<std::string> warnings;
+    if (!missing_glyphs.empty()) {
+        std::string list;
+        for (const std::string& m : missing_glyphs) list += (list.empty() ? "" : ", ") + m;
+        warnings.push_back("left out characters without a glyph in the font: " + list);
+    }
     if (state.dot_count > 0) {
         std::string list;
         for (const std::string& d : state.dots) list += (list.empty() ? "" : ", ") + d;

@@ -184,8 +184,8 @@ TEST_CASE("SVG: errors name the element and its line", "[drawing]") {
                Catch::Contains("path#p3 (line 2)") && Catch::Contains("malformed path data") &&
                    Catch::Contains("M 10,"));
     CHECK_THAT(
-        message_of([&] { read_svg(head + "<text id=\"t1\">Hi</text>\n<image id=\"i\"/></svg>"); }),
-        Catch::Contains("text#t1 (line 2)") && Catch::Contains("image#i (line 3)"));
+        message_of([&] { read_svg(head + "<foreignObject id=\"t1\"/>\n<image id=\"i\"/></svg>"); }),
+        Catch::Contains("foreignObject#t1 (line 2)") && Catch::Contains("image#i (line 3)"));
     CHECK_THAT(message_of([&] { read_svg(head + "<path id=\"z\" d=\"M 1,1 L 1,1\"/></svg>"); }),
                Catch::Contains("path#z (line 2)") && Catch::Contains("zero-length"));
     CHECK_THAT(message_of([&] { read_svg(head + "</svg>"); }), Catch::Contains("empty drawing"));

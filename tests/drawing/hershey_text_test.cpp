@@ -84,3 +84,18 @@ TEST_CASE("text: what a font cannot write is said", "[drawing][text]") {
     layout.font = "../etc/passwd";
     CHECK_THROWS_AS(text_curves("a", Vec2::Zero(), layout, "t"), modsynth::task::InputError);
 }
+
+TEST_CASE("text: the advance is where text that continues the line starts", "[drawing][text]") {
+    TextLayout layout;
+    layout.height = 0.02;
+    const TextCurves h = text_curves("H", Vec2::Zero(), layout, "t");
+    const TextCurves hh = text_curves("HH", Vec2::Zero(), layout, "t");
+    CHECK(h.advance > 0.02);
+    CHECK(hh.advance == Approx(2.0 * h.advance));
+    // Right-aligned text ends where left-aligned text's pen stops.
+    layout.horizontal = TextLayout::Horizontal::Right;
+    const TextCurves right = text_curves("HH", Vec2::Zero(), layout, "t");
+    CHECK(bounds(right).min.x() == Approx(bounds(hh).min.x() - hh.advance));
+    // Only the last line counts.
+    CHECK(text_curves("HHHH\nH", Vec2::Zero(), layout, "t").advance == Approx(h.advance));
+}

@@ -193,3 +193,175 @@ TEST_CASE("SVG: a rect without a width or height is not rendered", "[drawing][sv
         read_svg(svg(kShown + R"svg(<rect fill="#fff" rx="0" ry="0"/><rect height="5"/>)svg"));
     CHECK(d.curves.size() == 1);
 }
+
+namespace {
+
+struct Box {
+    Vec2 min = Vec2::Constant(1e300), max = Vec2::Constant(-1e300);
+    Vec2 centre() const { return (min + max) / 2.0; }
+};
+
+Box box_of(const Drawing& d) {
+    Box b;
+    for (const Curve& c : d.curves) {
+        for (const Segment& s : c.segments) {
+            for (const Vec2& p : {start_point(s), end_point(s)}) {
+                b.min = b.min.cwiseMin(p);
+                b.max = b.max.cwiseMax(p);
+            }
+        }
+    }
+    return b;
+}
+
+}  // namespace
+
+TEST_CASE("SVG: text is written in a Hershey font where the text lies", "[drawing][svg][text]") {
+    // One user unit is a millimetre; y grows down from the page's top,
+    // 100 mm above the drawing's origin.
+    const Drawing d = read_svg(svg(R"(<text id="t" x="10" y="40" font-size="16">HI</text>)"));
+    REQUIRE(!d.curves.empty());
+    CHECK(d.curves.front().source == "text#t (line 1)");
+    const Box b = box_of(d);
+    // Capitals stand on the baseline, 21/32 of the font size high.
+    CHECK(b.min.y() == Approx(60.0));
+    CHECK(b.max.y() == Approx(60.0 + 16.0 * 21.0 / 32.0));
+    CHECK(b.min.x() > 10.0);
+    CHECK(b.max.x() < 10.0 + 16.0);
+    CHECK(d.filled_outlines == 0);  // filled text: its strokes, not outlines
+
+    // The anchor moves the text by half its advance, or all of it.
+    const auto anchored = [](const std::string& anchor) {
+        return box_of(read_svg(svg(R"(<text x="50" y="40" font-size="16" text-anchor=")" + anchor +
+                                   R"(">HI</text>)")));
+    };
+    const Box start = anchored("start"), middle = anchored("middle"), end = anchored("end");
+    // The anchor is inherited.
+    CHECK(
+        box_of(
+            read_svg(svg(
+                R"(<g style="text-anchor:end"><text x="50" y="40" font-size="16">HI</text></g>)")))
+            .max.x() == Approx(end.max.x()));
+    CHECK(start.min.x() > 50.0);
+    CHECK(end.max.x() < 50.0);
+    CHECK(start.min.x() - middle.min.x() == Approx((start.min.x() - end.min.x()) / 2.0));
+    CHECK(middle.centre().x() == Approx(50.0).margin(0.5));
+    CHECK(middle.min.y() == Approx(start.min.y()));
+
+    // The font size from a style, in px, inherited, or in em; a
+    // transform moves and scales the glyphs.
+    const Box styled =
+        box_of(read_svg(svg(R"(<text x="10" y="40" style="font-size:16px">HI</text>)")));
+    CHECK(styled.max.x() == Approx(b.max.x()));
+    const Box inherited = box_of(
+        read_svg(svg(R"(<g font-size="8"><text x="10" y="40" font-size="2em">HI</text></g>)")));
+    CHECK(inherited.max.y() == Approx(b.max.y()));
+    const Box moved = box_of(read_svg(svg(
+        R"x(<g transform="translate(5,-10)"><text x="10" y="40" font-size="8" transform="scale(2)">HI</text></g>)x")));
+    CHECK(moved.min.x() == Approx(b.min.x() + 10.0 + 5.0));  // 2 * (10 + bearing at 8) + 5
+    CHECK(moved.min.y() == Approx(100.0 - (80.0 - 10.0)));
+    CHECK(moved.max.y() == Approx(moved.min.y() + 16.0 * 21.0 / 32.0));
+}
+
+TEST_CASE("SVG: tspans continue the text or start a chunk of their own", "[drawing][svg][text]") {
+    // A tspan with dy is written after the text before it, lower; one with
+    // x and y starts where it says (Inkscape writes each line so).
+    const Drawing d = read_svg(svg(
+        R"(<text x="10" y="20" font-size="10">AB<tspan id="s" dy="30">CD</tspan><tspan x="60" y="90" text-anchor="end">E</tspan></text>)"));
+    Box ab, cd, e;
+    for (const Curve& c : d.curves) {
+        Box& to = c.source.rfind("tspan#s", 0) == 0 ? cd : c.source.rfind("tspan", 0) == 0 ? e : ab;
+        for (const Segment& s : c.segments) {
+            for (const Vec2& p : {start_point(s), end_point(s)}) {
+                to.min = to.min.cwiseMin(p);
+                to.max = to.max.cwiseMax(p);
+            }
+        }
+    }
+    CHECK(ab.min.y() == Approx(80.0));
+    CHECK(cd.min.y() == Approx(50.0));
+    CHECK(cd.min.x() > ab.max.x());
+    CHECK(e.min.y() == Approx(10.0));
+    CHECK(e.max.x() < 60.0);
+    CHECK(e.max.x() > 50.0);
+    // White space collapses as a browser shows it; a text of none draws
+    // nothing.
+    const Box spaced =
+        box_of(read_svg(svg("<text x=\"10\" y=\"20\" font-size=\"10\">\n   AB  </text>")));
+    CHECK(spaced.min.x() == Approx(ab.min.x()));
+    CHECK_THAT(message_of([] { read_svg(svg(R"(<text x="1" y="2">  </text>)")); }),
+               Catch::Contains("empty drawing"));
+}
+
+TEST_CASE("SVG: text that is not rendered is not drawn; fonts map to Hershey ones",
+          "[drawing][svg][text]") {
+    for (const std::string hidden :
+         {R"(<text display="none">A</text>)", R"(<g visibility="hidden"><text>A</text></g>)",
+          R"(<text fill="none" stroke="none">A</text>)",
+          R"(<text>A<tspan display="none">B</tspan></text>)"}) {
+        INFO(hidden);
+        const std::size_t a = read_svg(svg("<text>A</text>")).curves.size();
+        const Drawing d = read_svg(svg(kShown + hidden));
+        CHECK(d.curves.size() == (hidden.find("tspan") != std::string::npos ? 1 + a : 1));
+    }
+    // A serif family is written in a serif font, a sans-serif one in the
+    // default; a family naming an installed Hershey font is that font.
+    const auto strokes = [](const std::string& family) {
+        return read_svg(svg("<text x=\"10\" y=\"50\" font-family=\"" + family + "\">H</text>"))
+            .curves.size();
+    };
+    CHECK(strokes("Arial, sans-serif") == 3);
+    CHECK(strokes("'Times New Roman', serif") > 3);
+    CHECK(strokes("Hershey rowmans") == 3);
+    CHECK(strokes("Unknown Font") == 3);
+}
+
+TEST_CASE("SVG: text that cannot be honoured is refused by name", "[drawing][svg][text]") {
+    for (const auto& [body, why] : std::vector<std::pair<std::string, std::string>>{
+             {R"(<text id="a"><textPath href="#p">A</textPath></text>)", "textPath (line 1)"},
+             {R"(<text id="a" style="writing-mode:tb">A</text>)", "vertical writing"},
+             {R"(<text id="a" font-family="Hershey NoSuch">A</text>)", "not installed"},
+             {R"(<text id="a" x="1 2 3">ABC</text>)", "one by one"},
+             {R"(<text id="a" rotate="30">A</text>)", "rotate"},
+             {R"(<text id="a" font-size="big">A</text>)", "font-size"}}) {
+        INFO(body);
+        CHECK_THAT(message_of([&] { read_svg(svg(kShown + body)); }),
+                   Catch::Contains("(line 1)") && Catch::Contains(why));
+    }
+    CHECK_THAT(message_of([] { read_svg(svg(R"(<text id="a" rotate="30">A</text>)")); }),
+               Catch::Contains("text#a (line 1)"));
+}
+
+TEST_CASE("SVG: a label as Inkscape writes it imports; characters without a glyph are said",
+          "[drawing][svg][text]") {
+    const std::string label =
+        R"svg(<svg xmlns="http://www.w3.org/2000/svg" xmlns:sodipodi="http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd"
+   width="60mm" height="30mm" viewBox="0 0 60 30">
+  <g id="layer1">
+    <rect style="fill:none;stroke:#000000;stroke-width:0.5" width="56" height="26" x="2" y="2" ry="3"/>
+    <text xml:space="preserve" style="font-size:8.46667px;line-height:1.25;font-family:sans-serif;text-anchor:middle;fill:#000000;stroke:none"
+       x="36" y="18" id="text1"><tspan sodipodi:role="line" id="tspan1" x="36" y="18">WARN°</tspan></text>
+  </g>
+</svg>)svg";
+    ImportOptions options;
+    options.placement.width = 0.25;
+    const ImportResult r = import_drawing(label, DrawingFormat::Svg, options);
+    CHECK(r.strokes.size() > 5);
+    REQUIRE(!r.warnings.empty());
+    CHECK_THAT(r.warnings.front(),
+               Catch::Contains("tspan#tspan1 (line 6)") && Catch::Contains("without a glyph"));
+    // The word is centred on x = 36 mm of the 60 mm label.
+    const Drawing d = read_svg(label);
+    Box word;
+    for (const Curve& c : d.curves) {
+        if (c.source.rfind("tspan", 0) != 0) continue;
+        for (const Segment& s : c.segments) {
+            for (const Vec2& p : {start_point(s), end_point(s)}) {
+                word.min = word.min.cwiseMin(p);
+                word.max = word.max.cwiseMax(p);
+            }
+        }
+    }
+    CHECK(word.centre().x() == Approx(36.0).margin(0.3));
+    CHECK(word.min.y() == Approx(12.0).margin(1e-9));  // "WARN" has no descender
+}

@@ -31,6 +31,9 @@ struct TextCurves {
     std::vector<Curve> curves;  ///< one per stroke of a glyph
     /// The characters the font has no glyph for (left out), as in the text.
     std::string missing;
+    /// How far the last line moves the pen, drawing units: where text that
+    /// continues it starts.
+    double advance = 0.0;
 };
 
 /// `text` (lines separated by '\n') laid out about the alignment point `at`;
