@@ -30,18 +30,10 @@
 namespace modsynth::app {
 namespace {
 
-struct SolveArgs {
-    std::string task, output;
-    double time_limit = 60.0;
-    unsigned seed = 0;
-    /// Caps on top of the joint limits; infinity: none.
-    double ee_speed = std::numeric_limits<double>::infinity();
-    double joint_speed = std::numeric_limits<double>::infinity();
-    bool quiet = false;
-    std::string events;  ///< where progress events go as JSON lines, if anywhere
+struct SolveArgs : SolveRequest {
+    std::string task;
     std::string swept = "auto";
     double shorten_gap = synth::SynthesisOptions{}.shorten_gap;
-    output::ExportPaths exports;
 };
 
 /// Where along the path a stretch of samples lies, by the task's names.
@@ -125,10 +117,7 @@ int run_solve(const SolveArgs& a) {
     const run::Stopwatch clock;
     io::TaskDocument doc = io::load_task_document(a.task);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
-        return run_spatial_solve(*spatial,
-                                 {a.output, a.time_limit, a.seed, a.ee_speed, a.joint_speed,
-                                  a.quiet, a.events, a.exports},
-                                 clock.started());
+        return run_spatial_solve(*spatial, a, clock.started());
     const task::Task task = std::get<task::Task>(std::move(doc));
     const auto elapsed = [&] { return clock.seconds(); };
     // The same files as any other answer: a report that says "unknown" and

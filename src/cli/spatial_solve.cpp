@@ -59,7 +59,7 @@ void print_summary(const task::SpatialTask& task, const synth::Solution& solutio
 
 }  // namespace
 
-int run_spatial_solve(const task::SpatialTask& task, const SpatialSolveRequest& a,
+int run_spatial_solve(const task::SpatialTask& task, const SolveRequest& a,
                       std::chrono::steady_clock::time_point t0) {
     const auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

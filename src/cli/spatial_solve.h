@@ -11,7 +11,9 @@
 
 namespace modsynth::app {
 
-struct SpatialSolveRequest {
+/// What both solve paths take from the command line (the planar one adds
+/// its own options, cmd_solve.cpp).
+struct SolveRequest {
     std::string output;
     double time_limit = 60.0;
     unsigned seed = 0;
@@ -26,7 +28,7 @@ struct SpatialSolveRequest {
 
 /// The run's exit code; `started` is when the command began (its time
 /// limit counts from there).
-int run_spatial_solve(const task::SpatialTask& task, const SpatialSolveRequest& request,
+int run_spatial_solve(const task::SpatialTask& task, const SolveRequest& request,
                       std::chrono::steady_clock::time_point started);
 
 }  // namespace modsynth::app
