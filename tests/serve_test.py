@@ -620,6 +620,31 @@ def test_import_drawing():
               "the underlay's map puts the wave's start on the path: %s" % (wave,))
         check(body.get("placement", {}).get("metres_per_unit") == 0.001, "placement: %s" % body.get("placement"))
 
+        # On a surface in space, in a child `modsynth import` as on the command line.
+        bracket = os.path.join(ROOT, "tasks/drawings/bracket.dxf")
+        for option, numbers, kind in [("--plane", "0.4,0,0.25,0,-1,0,0,0,1", "plane"),
+                                      ("--cylinder", "0.4,0,0.25,0,0,1,0.08", "cylinder")]:
+            with tempfile.TemporaryDirectory() as tmp:
+                out = os.path.join(tmp, "cli.json")
+                subprocess.run([BIN, "import", bracket, "-o", out, "--name", "bracket",
+                                option, numbers, "--base", "-0.05,-0.05,0.02,0.05,0.05,0.02"],
+                               check=True, stdout=subprocess.DEVNULL)
+                cli = json.load(open(out))
+            status, _, body = s.json("POST", "/api/import?format=dxf&name=bracket&%s=%s&base=-0.05,-0.05,0.02,0.05,0.05,0.02"
+                                     % (kind, numbers), read(bracket), {"Content-Type": "application/dxf"})
+            check(status == 200 and body.get("surface") == kind and body.get("underlay") is None
+                  and body.get("deviation", 1) <= 1e-4 and body.get("tolerance") == 1e-4,
+                  "%s: a spatial task (%s %s)" % (kind, status, body.get("error")))
+            check(body.get("task") == cli and cli.get("space") == "3d",
+                  "%s: the task is the one `modsynth import %s` writes" % (kind, option))
+        status, _, body = s.json("POST", "/api/import?format=dxf&plane=0,0,0,1,0,0,1,0,0", read(bracket),
+                                 {"Content-Type": "application/dxf"})
+        check(status == 400 and body.get("part") == "plane", "a plane whose U and V are one: 400 naming plane (%s)" % body)
+        status, _, body = s.json("POST", "/api/import?format=dxf&cylinder=0,0,0,0,0,1,0.001&base=-1,-1,0,1,1,0", read(bracket),
+                                 {"Content-Type": "application/dxf"})
+        check(status == 422 and body.get("part") == "cylinder" and "circumference" in body.get("error", ""),
+              "a drawing wider than the cylinder, from the child: 422 naming cylinder (%s)" % body)
+
         status, _, body = s.json("POST", "/api/import?format=dxf", read(os.path.join(ROOT, "tasks/drawings/bracket.dxf")),
                                  {"Content-Type": "application/dxf"})
         check(status == 200 and body.get("underlay") is None and body.get("primitives", 0) > 0,

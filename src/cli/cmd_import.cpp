@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,7 +12,6 @@
 
 #include <modsynth/drawing/hershey_text.h>
 #include <modsynth/drawing/import.h>
-#include <modsynth/drawing/surface.h>
 #include <modsynth/drawing/svg_writer.h>
 #include <modsynth/io/atomic_file.h>
 #include <modsynth/io/input.h>
@@ -30,6 +28,7 @@
 #include "imported_task.h"
 #include "number_checks.h"
 #include "planar_task.h"
+#include "surface_import.h"
 #include "watchdog.h"
 
 namespace modsynth::app {
@@ -82,38 +81,11 @@ task::SpatialTask spatial_base_task(const ImportArgs& a) {
     return t;
 }
 
-/// The point the drawing on a cylinder faces: the first base box's centre,
-/// else the task's origin.
-geometry::Vec3 facing_point(const ImportArgs& a) {
-    if (a.bases.empty()) return geometry::Vec3::Zero();
-    const auto& b = a.bases.front();
-    return {(b[0] + b[3]) / 2.0, (b[1] + b[4]) / 2.0, (b[2] + b[5]) / 2.0};
-}
-
-/// The drawing, imported in its own plane, placed on --plane or wrapped
-/// round --cylinder: the spatial task, with the deviation of both steps.
-nlohmann::json spatial_task_json(const ImportArgs& a, drawing::ImportResult& r,
-                                 const drawing::ImportOptions& options, double wrap_tolerance) {
-    drawing::PlacedStrokes placed;
-    std::vector<geometry::Obstacle3> obstacles;
-    std::function<geometry::Vec3(const Vec2&)> to_space;
-    if (!a.plane.empty()) {
-        const drawing::PlaneSurface plane = drawing::plane_surface(a.plane);
-        placed = drawing::place_on_plane(r.strokes, plane);
-        to_space = [plane](const Vec2& p) { return drawing::surface_point(plane, p); };
-    } else {
-        const drawing::CylinderSurface cylinder =
-            drawing::cylinder_surface(a.cylinder, facing_point(a));
-        placed = drawing::place_on_cylinder(r.strokes, cylinder, wrap_tolerance,
-                                            task::kMaxPrimitives, options.deadline);
-        to_space = [cylinder](const Vec2& p) { return drawing::surface_point(cylinder, p); };
-    }
-    // A circle of the obstacle layer keeps the pen off that much of the
-    // surface: a sphere of its radius where its centre lands.
-    for (const geometry::Disc& d : r.obstacles)
-        obstacles.push_back(geometry::Sphere{to_space(d.center), d.radius});
-    r.deviation += placed.deviation;
-    return imported_spatial_task_json(placed, obstacles, spatial_base_task(a));
+SurfaceImport surface_of(const ImportArgs& a) {
+    SurfaceImport s;
+    s.plane = a.plane;
+    s.cylinder = a.cylinder;
+    return s;
 }
 
 std::string file_stem(const std::string& path) {
@@ -174,19 +146,10 @@ int run_import(ImportArgs& a) {
     if (a.width > 0.0) options.placement.width = a.width;
     if (a.scale > 0.0) options.placement.scale = a.scale;
     if (!a.at.empty()) options.placement.at = Vec2(a.at[0], a.at[1]);
-    // On a surface, the drawing's centre goes to the surface's origin: it
-    // is placed about its own centre first.
-    if (a.spatial()) options.placement.at = Vec2::Zero();
     options.placement.rotate_degrees = a.rotate;
     options.tolerance = a.tolerance;
-    // Round a cylinder, half the tolerance for the drawing's own curves,
-    // half for the wrapped ones: the wrapping keeps lengths along the
-    // surface, so the two deviations add at most.
-    double wrap_tolerance = 0.0;
-    if (!a.cylinder.empty()) {
-        options.tolerance = a.tolerance / 2.0;
-        wrap_tolerance = a.tolerance / 2.0;
-    }
+    const SurfaceImport surface = surface_of(a);
+    const double wrap_tolerance = prepare_surface_import(options, surface);
     options.keep_order = a.keep_order;
     options.deadline = start + limit;
     drawing::ImportResult r;
@@ -209,8 +172,9 @@ int run_import(ImportArgs& a) {
             throw InputError(a.input + ": " + e.part(), problem);
         }
         if (a.spatial()) {
-            doc = spatial_task_json(a, r, options, wrap_tolerance);
-            reply = {{"task", doc}, {"deviation", r.deviation}, {"tolerance", a.tolerance}};
+            doc = surface_task_json(r, surface, spatial_base_task(a), wrap_tolerance,
+                                    options.deadline);
+            reply = surface_import_reply_json(r, options, doc, surface.kind(), a.tolerance);
         } else if (a.reply.empty()) {
             doc = imported_task_json(r, base_task(a));
         } else {
@@ -383,9 +347,7 @@ Command add_import(CLI::App& parent) {
                     }
                 }
                 // Bad surfaces are refused before the drawing is read.
-                if (!a->plane.empty()) drawing::plane_surface(a->plane);
-                if (!a->cylinder.empty())
-                    drawing::cylinder_surface(a->cylinder, geometry::Vec3::Zero());
+                surface_of(*a).check();
                 for (int n : a->dof) {
                     if (a->spatial() && !(n >= task::kMinSpatialDof && n <= task::kMaxSpatialDof))
                         throw InputError("--dof", text::format("%d joints: a spatial chain "

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <modsynth/io/atomic_file.h>
 #include <modsynth/io/input.h>
@@ -42,19 +43,49 @@ std::string time_limit_text(double seconds) {
 /// value in one argument, so that a value starting with '-' stays a value.
 std::vector<std::string> import_arguments(const ImportRequest& r, double time_limit) {
     const drawing::Placement& p = r.options.placement;
+    const auto numbers = [](const std::vector<double>& v) {
+        std::string out;
+        for (double x : v) out += (out.empty() ? "" : ",") + number(x);
+        return out;
+    };
+    const bool placed = r.surface.placed();
     std::vector<std::string> args = {
         "--time-limit=" + number(time_limit), "--tolerance=" + number(r.options.tolerance),
-        "--rotate=" + number(p.rotate_degrees), "--name=" + r.base.name};
+        "--rotate=" + number(p.rotate_degrees),
+        "--name=" + (placed ? r.spatial_base.name : r.base.name)};
     if (p.width) args.push_back("--width=" + number(*p.width));
     if (p.scale) args.push_back("--scale=" + number(*p.scale));
-    if (p.at) args.push_back("--at=" + number(p.at->x()) + "," + number(p.at->y()));
-    for (const auto& b : r.base.base_regions)
-        args.push_back("--base=" + number(b.min.x()) + "," + number(b.min.y()) + "," +
-                       number(b.max.x()) + "," + number(b.max.y()));
+    if (placed) {
+        if (!r.surface.plane.empty()) args.push_back("--plane=" + numbers(r.surface.plane));
+        if (!r.surface.cylinder.empty())
+            args.push_back("--cylinder=" + numbers(r.surface.cylinder));
+        for (const auto& b : r.spatial_base.base_regions)
+            args.push_back("--base=" + numbers({b.min.x(), b.min.y(), b.min.z(), b.max.x(),
+                                                b.max.y(), b.max.z()}));
+    } else {
+        if (p.at) args.push_back("--at=" + number(p.at->x()) + "," + number(p.at->y()));
+        for (const auto& b : r.base.base_regions)
+            args.push_back("--base=" + number(b.min.x()) + "," + number(b.min.y()) + "," +
+                           number(b.max.x()) + "," + number(b.max.y()));
+    }
     if (!r.options.read.obstacle_layer.empty())
         args.push_back("--obstacles-from=" + r.options.read.obstacle_layer);
     if (r.options.keep_order) args.push_back("--keep-order");
     return args;
+}
+
+/// The child names --plane and --cylinder as the command line spells them;
+/// the reply names them as the request did.
+json as_query_options(json reply, const SurfaceImport& surface) {
+    for (const auto& [cli, query] : {std::pair{std::string("--plane"), surface.plane_option},
+                                     std::pair{std::string("--cylinder"), surface.cylinder_option}}) {
+        for (const char* key : {"part", "error"}) {
+            if (!reply.contains(key) || !reply[key].is_string()) continue;
+            const std::string text = reply[key].get<std::string>();
+            if (text.compare(0, cli.size(), cli) == 0) reply[key] = query + text.substr(cli.size());
+        }
+    }
+    return reply;
 }
 
 }  // namespace
@@ -97,10 +128,15 @@ ImportReply ImportRunner::in_process(const ImportRequest& request) {
     options.deadline =
         drawing::Clock::now() + std::chrono::duration_cast<drawing::Clock::duration>(
                                     std::chrono::duration<double>(limits_.time_limit));
+    const SurfaceImport& surface = request.surface;
+    const double tolerance = options.tolerance;
+    const double wrap_tolerance = prepare_surface_import(options, surface);
     try {
-        const drawing::ImportResult r =
-            drawing::import_drawing(request.body, request.format, options);
-        return {200, import_reply_json(r, options, request.base)};
+        drawing::ImportResult r = drawing::import_drawing(request.body, request.format, options);
+        if (!surface.placed()) return {200, import_reply_json(r, options, request.base)};
+        const json task =
+            surface_task_json(r, surface, request.spatial_base, wrap_tolerance, options.deadline);
+        return {200, surface_import_reply_json(r, options, task, surface.kind(), tolerance)};
     } catch (const task::InputError& e) {
         return {422, error_json(e.what(), e.part())};
     } catch (const drawing::ImportTimeout& e) {
@@ -145,7 +181,7 @@ ImportReply ImportRunner::in_child(const ImportRequest& request) {
         if (result->exit_code == kOk && reply->contains("task")) return {200, *reply};
         if ((result->exit_code == kInvalid || result->exit_code == kUnknown) &&
             reply->contains("error"))
-            return {422, *reply};
+            return {422, as_query_options(*reply, request.surface)};
     }
     // Anything else is the importer's failure, not the drawing's: its last
     // words say what happened.

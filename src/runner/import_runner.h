@@ -13,7 +13,10 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/drawing/import.h>
+#include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
+
+#include "surface_import.h"
 
 namespace modsynth::app {
 
@@ -30,6 +33,10 @@ struct ImportRequest {
     std::string body;                ///< the drawing file's bytes
     drawing::ImportOptions options;  ///< its deadline is the runner's to set
     task::Task base;                 ///< name and base regions of the task
+    /// A drawing placed on a plane or round a cylinder in space: the task
+    /// is spatial, its name and base boxes from `spatial_base`.
+    SurfaceImport surface;
+    task::SpatialTask spatial_base;
 };
 
 struct ImportReply {

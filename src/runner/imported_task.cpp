@@ -55,10 +55,17 @@ json imported_spatial_task_json(const drawing::PlacedStrokes& placed,
     return doc;
 }
 
-json import_reply_json(const drawing::ImportResult& r, const drawing::ImportOptions& options,
-                       const task::Task& base) {
+namespace {
+
+/// The reply's keys but the task's: counts of what `task` holds, the
+/// figures of the import.
+json reply_json(const drawing::ImportResult& r, const drawing::ImportOptions& options,
+                const json& task) {
+    // A task in space may hold more primitives than the drawing had: the
+    // wrapping round a cylinder fits curves anew.
+    const json strokes = task.contains("strokes") ? task["strokes"] : json::array({task["trajectory"]});
     std::size_t primitives = 0;
-    for (const auto& s : r.strokes) primitives += s.size();
+    for (const auto& s : strokes) primitives += s.size();
     // What the CLI prints beside the task: the layers found with their
     // entity counts (DXF), and one line for each kind of thing skipped.
     json layers = json::object();
@@ -70,8 +77,8 @@ json import_reply_json(const drawing::ImportResult& r, const drawing::ImportOpti
                     {"transform", svg_matrix(r.page_to_task)},
                     {"y_flip", is_mirror(r.page_to_task)}};
     }
-    return {{"task", imported_task_json(r, base)},
-            {"strokes", r.strokes.size()},
+    return {{"task", task},
+            {"strokes", strokes.size()},
             {"primitives", primitives},
             {"obstacles", r.obstacles.size()},
             {"deviation", r.deviation},
@@ -85,6 +92,23 @@ json import_reply_json(const drawing::ImportResult& r, const drawing::ImportOpti
             {"warnings", r.warnings},
             {"filled_outlines", r.filled_outlines},
             {"layers", layers}};
+}
+
+}  // namespace
+
+json import_reply_json(const drawing::ImportResult& r, const drawing::ImportOptions& options,
+                       const task::Task& base) {
+    return reply_json(r, options, imported_task_json(r, base));
+}
+
+json surface_import_reply_json(const drawing::ImportResult& r,
+                               const drawing::ImportOptions& options, const json& task,
+                               const char* surface, double tolerance) {
+    json reply = reply_json(r, options, task);
+    reply["tolerance"] = tolerance;
+    reply["underlay"] = nullptr;
+    reply["surface"] = surface;
+    return reply;
 }
 
 }  // namespace modsynth::app

@@ -32,4 +32,13 @@ nlohmann::json imported_spatial_task_json(const drawing::PlacedStrokes& placed,
 nlohmann::json import_reply_json(const drawing::ImportResult& r,
                                  const drawing::ImportOptions& options, const task::Task& base);
 
+/// The same for a drawing placed on a surface in space: `task` is its
+/// spatial task (surface_import.h), `surface` "plane" or "cylinder",
+/// `tolerance` the one asked for (round a cylinder the import's own is
+/// half of it). No page lies under a task in space: `underlay` is null.
+nlohmann::json surface_import_reply_json(const drawing::ImportResult& r,
+                                         const drawing::ImportOptions& options,
+                                         const nlohmann::json& task, const char* surface,
+                                         double tolerance);
+
 }  // namespace modsynth::app

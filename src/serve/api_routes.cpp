@@ -419,7 +419,7 @@ private:
         const auto doc = read_body(body, res);
         if (!doc) return;
         try {
-            // A spatial task is validated too; the editor shows it read-only.
+            // A spatial task is validated too: the editor edits it in 3-D.
             std::visit(
                 [&](const auto& t) {
                     send_json(res, 200,
@@ -456,11 +456,25 @@ private:
                 throw task::InputError("format", "expected svg or dxf, not '" + printable(f) + "'");
             }
             if (req.has_param("name")) request.base.name = req.get_param_value("name");
+            request.spatial_base.name = request.base.name;
             // The ranges `modsynth import` takes.
             options.placement.width = query_number(req, "width", kLargestScale);
             options.placement.scale = query_number(req, "scale", kLargestScale);
             if (options.placement.width && options.placement.scale)
                 throw task::InputError("scale", "give width or scale, not both");
+            // On a surface in space, as `import --plane` / `--cylinder`.
+            SurfaceImport& surface = request.surface;
+            surface.plane_option = "plane";
+            surface.cylinder_option = "cylinder";
+            if (const auto p = query_numbers(req, "plane", 9, kFarthestPoint)) surface.plane = *p;
+            if (const auto c = query_numbers(req, "cylinder", 7, kFarthestPoint))
+                surface.cylinder = *c;
+            if (!surface.plane.empty() && !surface.cylinder.empty())
+                throw task::InputError("cylinder", "give plane or cylinder, not both");
+            surface.check();
+            if (surface.placed() && req.has_param("at"))
+                throw task::InputError(
+                    "at", "not with plane or cylinder: the drawing's centre goes to the surface");
             if (const auto at = query_numbers(req, "at", 2, kFarthestPoint))
                 options.placement.at = geometry::Vec2((*at)[0], (*at)[1]);
             if (const auto r = query_numbers(req, "rotate", 1)) {
@@ -471,7 +485,18 @@ private:
             options.tolerance = query_number(req, "tolerance").value_or(options.tolerance);
             if (!(options.tolerance >= 1e-9 && options.tolerance <= 1.0))
                 throw task::InputError("tolerance", "metres within 1e-9 to 1");
-            if (const auto b = query_numbers(req, "base", 4, kFarthestPoint)) {
+            if (surface.placed()) {
+                // In space a base region is a box; round a cylinder the
+                // drawing faces its centre.
+                if (const auto b = query_numbers(req, "base", 6, kFarthestPoint)) {
+                    const auto& v = *b;
+                    if (!(v[0] <= v[3]) || !(v[1] <= v[4]) || !(v[2] <= v[5]))
+                        throw task::InputError(
+                            "base", "expected a box xmin,ymin,zmin,xmax,ymax,zmax with min <= max");
+                    request.spatial_base.base_regions.push_back(
+                        {geometry::Vec3(v[0], v[1], v[2]), geometry::Vec3(v[3], v[4], v[5])});
+                }
+            } else if (const auto b = query_numbers(req, "base", 4, kFarthestPoint)) {
                 const auto& v = *b;
                 if (!(v[0] <= v[2]) || !(v[1] <= v[3]))
                     throw task::InputError("base", "expected xmin,ymin,xmax,ymax with min <= max");
