@@ -1,13 +1,21 @@
 # Writes a C++ source holding the files of web/ as byte arrays, so the
 # binary serves its page with no files beside it. Run as a script:
 #   cmake -DSOURCE_DIR=web -DFILES="index.html;app.js" -DOUTPUT=web_assets.cpp -P embed_web.cmake
+# EXTRA (optional) lists files from elsewhere by their full paths (a
+# generated bundle, example tasks), each served by its own name.
 # Bytes rather than string literals: no delimiter can clash with a file's
 # text, and no compiler limit on literal length applies.
 set(body "")
 set(table "")
 set(index 0)
+set(paths "")
 foreach(name IN LISTS FILES)
-  file(READ "${SOURCE_DIR}/${name}" hex HEX)
+  list(APPEND paths "${SOURCE_DIR}/${name}")
+endforeach()
+list(APPEND paths ${EXTRA})
+foreach(path IN LISTS paths)
+  get_filename_component(name "${path}" NAME)
+  file(READ "${path}" hex HEX)
   string(LENGTH "${hex}" hex_length)
   math(EXPR size "${hex_length} / 2")
   string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${hex}")

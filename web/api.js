@@ -46,15 +46,19 @@ export function fileUrl(job, name) {
 }
 
 /// POST /api/import: a drawing file (.svg or .dxf) to a task, placed by
-/// `options` ({width, at: [x, y], tolerance}, each optional). {status, body}:
-/// 200 with {task, primitives, deviation, underlay ...}, or an error naming
-/// the element that could not be read.
+/// `options` ({width, at: [x, y], tolerance, base}, each optional), or on a
+/// surface in space ({plane: 9 numbers} or {cylinder: 7}, with `base` a box
+/// of 6). {status, body}: 200 with {task, primitives, deviation, underlay
+/// ...}, or an error naming the element or option that could not be read.
 export async function importDrawing(file, options = {}) {
   const dxf = /\.dxf$/i.test(file.name);
   const query = new URLSearchParams({ format: dxf ? "dxf" : "svg", name: file.name.replace(/\.[^.]*$/, "") || "drawing" });
   if (options.width > 0) query.set("width", options.width);
   if (options.tolerance > 0) query.set("tolerance", options.tolerance);
   if (Array.isArray(options.at)) query.set("at", options.at.join(","));
+  if (Array.isArray(options.plane)) query.set("plane", options.plane.join(","));
+  if (Array.isArray(options.cylinder)) query.set("cylinder", options.cylinder.join(","));
+  if (Array.isArray(options.base)) query.set("base", options.base.join(","));
   const type = dxf ? "application/dxf" : "image/svg+xml";
   try {
     const res = await fetch("/api/import?" + query, { method: "POST", headers: { "Content-Type": type }, body: file });

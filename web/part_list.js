@@ -4,6 +4,7 @@
 
 import { isPoint, lengthText, primitiveLength } from "./geometry.js";
 import { primitiveColour } from "./task_render.js";
+import { dist3, isPoint3, isSpatial, obstacleKind, primitiveLength3, sub } from "./space_geometry.js";
 import { $, h } from "./dom.js";
 
 const OBSTACLE_COLOUR = "#e45756";
@@ -18,6 +19,7 @@ export class PartList {
   }
 
   render() {
+    if (isSpatial(this.model.doc)) return this.renderSpatial();
     const list = $("parts");
     const rows = [];
     this.model.trajectory.forEach((p, j) => rows.push(this.partRow(`trajectory[${j}]`, primitiveColour(j), this.primitiveSummary(p))));
@@ -28,6 +30,27 @@ export class PartList {
         ? `${lengthText(r.max[0] - r.min[0])} x ${lengthText(r.max[1] - r.min[1])}` : "malformed")));
     if (!rows.length) rows.push(h("li", { class: "note" }, "Empty: pick Line, Arc or Circle and click on the canvas."));
     list.replaceChildren(...rows);
+  }
+
+  /// The parts of a task in space: primitives, spheres, capsules, boxes
+  /// and base boxes with their sizes.
+  renderSpatial() {
+    const rows = [];
+    const at = (p) => isPoint3(p) ? `(${p.map((v) => v.toFixed(3)).join(", ")})` : "?";
+    const sizes = (b) => b && isPoint3(b.min) && isPoint3(b.max) ? sub(b.max, b.min).map(lengthText).join(" x ") : "malformed";
+    this.model.trajectory.forEach((p, j) => rows.push(this.partRow(`trajectory[${j}]`, primitiveColour(j),
+      !p || typeof p !== "object" ? "malformed"
+        : `${p.type || "?"}${p.type === "line" ? "" : " " + (p.direction || "ccw")}, ${lengthText(primitiveLength3(p))}`)));
+    this.model.obstacles.forEach((o, i) => {
+      const k = obstacleKind(o);
+      const summary = k === "sphere" ? `sphere at ${at(o.center)}, r ${lengthText(o.radius)}`
+        : k === "capsule" ? `capsule ${lengthText(isPoint3(o.a) && isPoint3(o.b) ? dist3(o.a, o.b) : NaN)} long, r ${lengthText(o.radius)}`
+        : k === "box" ? `box ${sizes(o)}` : "malformed";
+      rows.push(this.partRow(`obstacles[${i}]`, OBSTACLE_COLOUR, summary));
+    });
+    this.model.regions.forEach((r, i) => rows.push(this.partRow(`base_regions[${i}]`, REGION_COLOUR, `box ${sizes(r)}`)));
+    if (!rows.length) rows.push(h("li", { class: "note" }, "Empty: add a line, an arc, a circle or a helix with the buttons above."));
+    $("parts").replaceChildren(...rows);
   }
 
   primitiveSummary(p) {

@@ -5,6 +5,7 @@
 
 import * as api from "./api.js";
 import { lengthText } from "./geometry.js";
+import { isSpatial } from "./space_geometry.js";
 import { $, h } from "./dom.js";
 
 // How the panel names the files a job offers, in the order it lists them
@@ -35,6 +36,7 @@ export class ResultView {
 
   clear() {
     this.store.setWitness(null);
+    this.store.setSolution(null);
     for (const id of ["result-summary", "explanation", "downloads"]) $(id).replaceChildren();
     $("tab-result").disabled = true;
     $("report").removeAttribute("src");
@@ -52,8 +54,11 @@ export class ResultView {
     rows.push(["Solve time", r.seconds.toFixed(2) + " s"]);
     const table = h("table", { id: "summary-table" }, rows.map(([k, v]) => h("tr", {}, h("th", {}, k), h("td", {}, v))));
     $("result-summary").replaceChildren(table);
+    const spatial = isSpatial(this.store.doc);
     if (r.status === "solved") this.addRobotRows(job, table);
-    if (REPORTED.includes(r.status)) this.showReport(api.fileUrl(job, "report.html"), r.status === "solved");
+    // In space the arm moves in the editor's own 3-D view; the report
+    // waits in its tab.
+    if (REPORTED.includes(r.status)) this.showReport(api.fileUrl(job, "report.html"), r.status === "solved" && !spatial);
     if (r.status !== "solved") {
       this.store.setCore(r.core);
       this.showExplanation(r);
@@ -67,8 +72,12 @@ export class ResultView {
       const s = await (await fetch(api.fileUrl(job, "solution.json"))).json();
       this.store.setWitness(s.explanation);
       const ex = s.explanation || {};
+      const reach = isSpatial(this.store.doc) && (ex.core || []).includes("base_regions") &&
+        (ex.core || []).some((p) => /^(trajectory|strokes)\[/.test(p));
       const about = ex.separation ? "The closed wall is drawn in red on the canvas: the obstacles grown by half the tube, and where they overlap."
-        : ex.geodesic ? "The shortest way around the obstacles is drawn in red on the canvas, with its length against the reach." : null;
+        : ex.geodesic ? "The shortest way around the obstacles is drawn in red on the canvas, with its length against the reach."
+        : reach ? "The primitive out of reach is drawn thick and red in the 3-D view, with a dashed red line from the base box to its farthest point."
+        : isSpatial(this.store.doc) && (ex.core || []).length ? "The parts in conflict are drawn red in the 3-D view." : null;
       if (about) $("explanation-message").after(h("p", { id: "proof-note", class: "note" }, about));
     } catch (e) {
       // The explanation above already says why.
@@ -77,14 +86,19 @@ export class ResultView {
 
   /// Link lengths and base, from the solution itself.
   async addRobotRows(job, table) {
+    let s = null;
     try {
-      const s = await (await fetch(api.fileUrl(job, "solution.json"))).json();
-      const links = s.robot.link_lengths.map(lengthText).join(" + ");
-      table.append(h("tr", {}, h("th", {}, "Links"), h("td", { id: "summary-links" }, links)),
+      s = await (await fetch(api.fileUrl(job, "solution.json"))).json();
+      // A spatial arm is a DH chain: its rows (a, alpha, d) instead of links.
+      const links = Array.isArray(s.robot.dh)
+        ? s.robot.dh.map((l) => `(${lengthText(l.a)}, ${(l.alpha * 180 / Math.PI).toFixed(0)}°, ${lengthText(l.d)})`).join(" ")
+        : s.robot.link_lengths.map(lengthText).join(" + ");
+      table.append(h("tr", {}, h("th", {}, Array.isArray(s.robot.dh) ? "DH (a, α, d)" : "Links"), h("td", { id: "summary-links" }, links)),
                    h("tr", {}, h("th", {}, "Base"), h("td", {}, `(${s.robot.base.map((v) => v.toFixed(3)).join(", ")}) m`)));
     } catch (e) {
       // The summary above already says the essentials.
     }
+    if (s) this.store.setSolution(s);
   }
 
   /// The report's own drawing, animated when there is a motion ("#t=0&play":
@@ -101,7 +115,8 @@ export class ResultView {
     const items = (r.core || []).map((p) => h("li", { "data-part": p }, h("code", {}, p)));
     $("explanation").replaceChildren(
       h("p", { id: "explanation-message" }, r.message || "No robot was found."),
-      items.length ? h("p", {}, "The parts in conflict, outlined in red on the canvas:") : null,
+      items.length ? h("p", {}, isSpatial(this.store.doc) ? "The parts in conflict, red in the 3-D view:"
+                                                            : "The parts in conflict, outlined in red on the canvas:") : null,
       items.length ? h("ul", { id: "core-list" }, items) : null,
       r.status === "infeasible" ? h("p", { id: "suggestions-status", class: "note" }, "Looking for the smallest changes that remove the conflict…") : null);
   }

@@ -4,6 +4,8 @@
 
 import { dist, isPoint, lengthText } from "./geometry.js";
 import { splitPart } from "./parts.js";
+import { isPoint3, isSpatial, obstacleKind } from "./space_geometry.js";
+import { radiusText, spatialFields } from "./spatial_form.js";
 import { $, h } from "./dom.js";
 
 const POINT_KEYS = {
@@ -39,7 +41,7 @@ export class SelectionForm {
     if (form.dataset.signature !== signature) {
       const active = form.contains(document.activeElement) ? document.activeElement : null;
       form.dataset.signature = signature;
-      form.replaceChildren(...this.selectionForm(part, item));
+      form.replaceChildren(...(isSpatial(this.model.doc) ? this.spatialForm(part, item) : this.selectionForm(part, item)));
       if (active && active.dataset.key) {
         const axis = active.dataset.axis === undefined ? "" : `[data-axis="${active.dataset.axis}"]`;
         const again = form.querySelector(`[data-key="${active.dataset.key}"]${axis}`);
@@ -79,21 +81,34 @@ export class SelectionForm {
             h("button", { type: "button", onclick: () => this.store.remove(part) }, "Delete " + part)];
   }
 
+  /// A part of a spatial task: its points in x, y and z (spatial_form.js).
+  spatialForm(part, item) {
+    const grid = spatialFields(this.model, part, item, (g, path) => this.fieldErrors(g, path));
+    const own = [...this.store.errors].filter(([p]) => p === part).map(([, m]) => m);
+    return [...own.map((m) => h("p", { class: "error-text" }, m)), grid,
+            h("button", { type: "button", onclick: () => this.store.remove(part) }, "Delete " + part)];
+  }
+
   refreshValues(form, item) {
     for (const field of form.querySelectorAll("[data-key]")) {
       if (field === document.activeElement) continue;
       const key = field.dataset.key;
       if (field.dataset.axis !== undefined) {
-        const v = isPoint(item[key]) ? item[key][+field.dataset.axis] : NaN;
+        const v = Array.isArray(item[key]) ? item[key][+field.dataset.axis] : NaN;
         field.value = Number.isFinite(v) ? v : "";
-      } else if (key === "radius") {
-        field.value = Number.isFinite(item.radius) ? item.radius : "";
+      } else if (key === "radius" || key === "pitch" || key === "turns") {
+        field.value = Number.isFinite(item[key]) ? item[key] : "";
       } else if (key === "direction") {
         field.value = item.direction === "cw" ? "cw" : "ccw";
+      } else if (key === "kind") {
+        field.value = obstacleKind(item) || "sphere";
       }
     }
     const radius = form.querySelector("[data-radius-text]");
-    if (radius) radius.textContent = isPoint(item.start) && isPoint(item.center) ? lengthText(dist(item.start, item.center)) : "?";
+    if (radius) {
+      radius.textContent = isPoint3(item.start) ? radiusText(item)
+        : isPoint(item.start) && isPoint(item.center) ? lengthText(dist(item.start, item.center)) : "?";
+    }
   }
 
   fieldErrors(grid, path) {

@@ -9,6 +9,7 @@
 //   validation  the server's verdict changed (checking, valid, invalid, empty)
 //   core        the infeasibility core changed
 //   witness     the proof's witness changed (drawn over the task)
+//   solution    a solve's solution arrived (or went: null)
 //   synthesis   the solve's state changed (idle, starting, running, solved ...)
 //   view        the editor or the result is shown
 //   info        the server's settings arrived
@@ -27,6 +28,7 @@ export class Store extends EventTarget {
     this.validity = { state: "checking", errors: new Map() };
     this.core = [];
     this.witness = null;
+    this.solution = null;
     this.synthesis = "idle";
     this.view = "editor";
     this.info = null;
@@ -35,6 +37,7 @@ export class Store extends EventTarget {
       // A core names the parts of the task as it was solved.
       if (this.core.length) this.setCore([]);
       if (this.witness) this.setWitness(null);
+      if (this.solution) this.setSolution(null);
       this.emit("doc");
     });
   }
@@ -127,6 +130,13 @@ export class Store extends EventTarget {
     const e = explanation || {};
     this.witness = e.separation || e.geodesic ? { separation: e.separation || null, geodesic: e.geodesic || null } : null;
     this.emit("witness", this.witness);
+  }
+
+  /// The solution file of the last solve (modsynth-solution/1), for views
+  /// that show its motion; null when there is none or the task changed.
+  setSolution(solution) {
+    this.solution = solution || null;
+    this.emit("solution", this.solution);
   }
 
   setSynthesis(state) {

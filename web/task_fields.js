@@ -4,6 +4,8 @@
 
 import { concerns, splitPart } from "./parts.js";
 import { DOCUMENT } from "./store.js";
+import { isSpatial } from "./space_geometry.js";
+import { SPATIAL_ROBOT_DEFAULTS } from "./space_edit.js";
 import { $ } from "./dom.js";
 
 export class TaskFields {
@@ -38,17 +40,21 @@ export class TaskFields {
         this.model.setRobot(input.dataset.robot, Number.isFinite(v) ? v : input.value);
       });
     }
-    for (const n of [2, 3]) {
+    for (const n of [2, 3, 4, 5, 6]) {
       $("dof-" + n).addEventListener("change", () => {
-        this.model.setRobot("dof", [2, 3].filter((k) => $("dof-" + k).checked));
+        this.model.setRobot("dof", this.jointCounts().filter((k) => $("dof-" + k).checked));
       });
     }
   }
 
+  /// The joint counts a task may allow: 2 or 3 in the plane, 3 to 6 in space.
+  jointCounts() { return isSpatial(this.model.doc) ? [3, 4, 5, 6] : [2, 3]; }
+
   renderTaskFields() {
     const doc = this.model.doc, robot = doc.robot && typeof doc.robot === "object" ? doc.robot : {};
     // A key left out gets the server's default: shown greyed in its field.
-    const defaults = (this.store.info && this.store.info.robot_defaults) || {};
+    // A spatial task's defaults are the contract's (formats.md).
+    const defaults = isSpatial(doc) ? SPATIAL_ROBOT_DEFAULTS : (this.store.info && this.store.info.robot_defaults) || {};
     const name = $("task-name");
     if (document.activeElement !== name) name.value = typeof doc.name === "string" ? doc.name : "";
     for (const input of document.querySelectorAll("input[data-robot]")) {
@@ -56,7 +62,7 @@ export class TaskFields {
       input.placeholder = defaults[input.dataset.robot] ?? "";
     }
     const dof = Array.isArray(robot.dof) ? robot.dof : defaults.dof || [];
-    for (const n of [2, 3]) $("dof-" + n).checked = dof.includes(n);
+    for (const n of this.jointCounts()) $("dof-" + n).checked = dof.includes(n);
     const messages = [];
     for (const e of document.querySelectorAll("#task-box [data-part]")) {
       const part = e.dataset.part;

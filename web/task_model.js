@@ -6,6 +6,7 @@
 
 import { isPoint, primitiveEnd, roundPoint } from "./geometry.js";
 import { partName, splitPart } from "./parts.js";
+import { isPoint3 } from "./space_geometry.js";
 
 /// A task with nothing in it yet. `robot` is what its robot block starts
 /// as (the server's defaults, from GET /api/info); without it the block is
@@ -49,7 +50,9 @@ export function moveVertex(doc, k, p) {
   while (hi < t.length && t[hi] && t[hi].type === "circle") ++hi;
   for (let j = lo; j <= hi; ++j) {
     if (j < t.length && t[j]) t[j].start = [...p];
-    if (j > 0 && t[j - 1] && t[j - 1].type !== "circle") t[j - 1].end = [...p];
+    // A helix ends where its turns take it: an end is only checked against that.
+    const keepsEnd = t[j - 1] && (t[j - 1].type === "circle" || (t[j - 1].type === "helix" && t[j - 1].end === undefined));
+    if (j > 0 && t[j - 1] && !keepsEnd) t[j - 1].end = [...p];
   }
 }
 
@@ -172,7 +175,7 @@ export class TaskModel extends EventTarget {
     if (!s || this.item(part) === undefined) return;
     this.change((d) => {
       const [list, i] = s;
-      if (list === "trajectory" && i + 1 < d.trajectory.length && isPoint(d.trajectory[i].start)) {
+      if (list === "trajectory" && i + 1 < d.trajectory.length && (isPoint(d.trajectory[i].start) || isPoint3(d.trajectory[i].start))) {
         moveVertex(d, i + 1, d.trajectory[i].start);
       }
       d[list].splice(i, 1);

@@ -6,98 +6,14 @@
 // three.js into one script that the report carries inline.
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
+import { armObjects, capsule, dhFrames, material, niceStep, origin, v3, webglWorks } from "./scene.js";
 
 const $ = (id) => document.getElementById(id);
 // What a browser test reads: whether the view drew, and how to move it.
 const state = { ready: false, error: "", frames: 0, time: 0 };
 window.modsynthView = state;
 
-function webglWorks() {
-  try {
-    const c = document.createElement("canvas");
-    return !!(c.getContext("webgl2") || c.getContext("webgl"));
-  } catch (e) {
-    return false;
-  }
-}
-
-// ------------------------------------------------------------------ the chain
-
-/// Frames 0..n of a DH chain (formats.md): frame k = frame k-1 Rz(q) Tz(d)
-/// Tx(a) Rx(alpha); each a 3x4 row-major [R | p].
-function dhFrames(robot, q) {
-  let f = [1, 0, 0, robot.base[0], 0, 1, 0, robot.base[1], 0, 0, 1, robot.base[2]];
-  const out = [f];
-  for (let k = 0; k < robot.dh.length; ++k) {
-    const [a, alpha, d] = robot.dh[k];
-    const cq = Math.cos(q[k]), sq = Math.sin(q[k]), ca = Math.cos(alpha), sa = Math.sin(alpha);
-    const t = [cq, -sq * ca, sq * sa, a * cq, sq, cq * ca, -cq * sa, a * sq, 0, sa, ca, d];
-    const g = new Array(12);
-    for (let r = 0; r < 3; ++r) {
-      for (let c = 0; c < 4; ++c) {
-        let v = f[r * 4] * t[c] + f[r * 4 + 1] * t[4 + c] + f[r * 4 + 2] * t[8 + c];
-        if (c === 3) v += f[r * 4 + 3];
-        g[r * 4 + c] = v;
-      }
-    }
-    f = g;
-    out.push(f);
-  }
-  return out;
-}
-
-const origin = (f) => new THREE.Vector3(f[3], f[7], f[11]);
-const column = (f, c) => new THREE.Vector3(f[c], f[4 + c], f[8 + c]);
-
-/// The chain's segments (the d part then the a part of each link, zero
-/// lengths dropped) at the given frames.
-function segments(robot, frames) {
-  const out = [];
-  for (let k = 0; k < robot.dh.length; ++k) {
-    const [, , d] = robot.dh[k];
-    const start = origin(frames[k]);
-    const corner = start.clone().addScaledVector(column(frames[k], 2), d);
-    const end = origin(frames[k + 1]);
-    if (Math.abs(d) > 1e-9) out.push([start, corner]);
-    if (corner.distanceTo(end) > 1e-9) out.push([corner, end]);
-  }
-  return out;
-}
-
-// ------------------------------------------------------------------ the scene
-
-function material(colour, opacity) {
-  return new THREE.MeshStandardMaterial({
-    color: colour, roughness: 0.6, metalness: 0.1,
-    transparent: opacity < 1, opacity: opacity, depthWrite: opacity >= 1,
-  });
-}
-
-const Y = new THREE.Vector3(0, 1, 0);
-
-/// Puts a unit cylinder (height 1 along y) between a and b.
-function place(mesh, a, b) {
-  const d = b.clone().sub(a);
-  const length = d.length();
-  mesh.position.copy(a).addScaledVector(d, 0.5);
-  if (length > 0) mesh.quaternion.setFromUnitVectors(Y, d.clone().divideScalar(length));
-  mesh.scale.set(1, Math.max(length, 1e-9), 1);
-}
-
-function capsule(a, b, r, mat) {
-  const group = new THREE.Group();
-  const body = new THREE.Mesh(new THREE.CylinderGeometry(r, r, 1, 24, 1, true), mat);
-  place(body, a, b);
-  group.add(body);
-  for (const p of [a, b]) {
-    const cap = new THREE.Mesh(new THREE.SphereGeometry(r, 24, 12), mat);
-    cap.position.copy(p);
-    group.add(cap);
-  }
-  return group;
-}
-
-const v3 = (p) => new THREE.Vector3(p[0], p[1], p[2]);
+// ------------------------------------------------------------------ the task
 
 function taskObjects(task, scene, size) {
   const core = 0xd00000;
@@ -148,76 +64,7 @@ function taskObjects(task, scene, size) {
   }
 }
 
-/// The arm's meshes, moved by pose(q).
-function armObjects(robot, scene) {
-  const r = robot.D / 2;
-  const linkMat = material(0x3a3a44, 1);
-  const toolMat = material(0x111111, 1);
-  const moduleMat = material(0xcc3326, 0.85);
-  const zero = robot.dh.map(() => 0);
-  const count = segments(robot, dhFrames(robot, zero)).length;
-  const bodies = [], caps = [];
-  for (let i = 0; i < count; ++i) {
-    const m = new THREE.Mesh(new THREE.CylinderGeometry(r, r, 1, 24, 1, true), linkMat);
-    scene.add(m);
-    bodies.push(m);
-  }
-  for (let i = 0; i <= count; ++i) {
-    const m = new THREE.Mesh(new THREE.SphereGeometry(r, 24, 12), linkMat);
-    scene.add(m);
-    caps.push(m);
-  }
-  const tool = new THREE.Mesh(new THREE.CylinderGeometry(r * 1.05, r * 1.05, 1, 24, 1, false), toolMat);
-  tool.visible = robot.tool > 0;
-  scene.add(tool);
-  const modules = new THREE.Group();
-  const boxes = robot.dh.map(() => {
-    const m = new THREE.Mesh(new THREE.BoxGeometry(robot.mod[0], robot.mod[1], robot.mod[2]), moduleMat);
-    modules.add(m);
-    return m;
-  });
-  scene.add(modules);
-  const ee = new THREE.Mesh(new THREE.SphereGeometry(r * 0.6, 16, 8), new THREE.MeshBasicMaterial({ color: 0x000000 }));
-  scene.add(ee);
-  const basis = new THREE.Matrix4();
-  return {
-    modules,
-    pose(q) {
-      const frames = dhFrames(robot, q);
-      const segs = segments(robot, frames);
-      segs.forEach(([a, b], i) => {
-        place(bodies[i], a, b);
-        caps[i].position.copy(a);
-        caps[i + 1].position.copy(b);
-      });
-      if (robot.tool > 0 && segs.length) {
-        const [a, b] = segs[segs.length - 1];
-        const d = b.clone().sub(a);
-        const from = b.clone().addScaledVector(d, -Math.min(1, robot.tool / d.length()));
-        place(tool, from, b);
-      }
-      boxes.forEach((m, k) => {
-        const f = frames[k];
-        basis.set(f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11], 0, 0, 0, 1);
-        m.position.set(0, 0, 0);
-        m.quaternion.identity();
-        m.scale.set(1, 1, 1);
-        m.applyMatrix4(basis);
-      });
-      const e = origin(frames[frames.length - 1]);
-      ee.position.copy(e);
-      return e;
-    },
-  };
-}
-
 // ------------------------------------------------------------------ the view
-
-function niceStep(span) {
-  const raw = span / 10;
-  const p = Math.pow(10, Math.floor(Math.log10(raw)));
-  return raw / p >= 5 ? 5 * p : raw / p >= 2 ? 2 * p : p;
-}
 
 function start() {
   const data = JSON.parse($("scene-data").textContent);
