@@ -49,10 +49,10 @@ std::vector<std::string> import_arguments(const ImportRequest& r, double time_li
         return out;
     };
     const bool placed = r.surface.placed();
-    std::vector<std::string> args = {
-        "--time-limit=" + number(time_limit), "--tolerance=" + number(r.options.tolerance),
-        "--rotate=" + number(p.rotate_degrees),
-        "--name=" + (placed ? r.spatial_base.name : r.base.name)};
+    std::vector<std::string> args = {"--time-limit=" + number(time_limit),
+                                     "--tolerance=" + number(r.options.tolerance),
+                                     "--rotate=" + number(p.rotate_degrees),
+                                     "--name=" + (placed ? r.spatial_base.name : r.base.name)};
     if (p.width) args.push_back("--width=" + number(*p.width));
     if (p.scale) args.push_back("--scale=" + number(*p.scale));
     if (placed) {
@@ -77,8 +77,9 @@ std::vector<std::string> import_arguments(const ImportRequest& r, double time_li
 /// The child names --plane and --cylinder as the command line spells them;
 /// the reply names them as the request did.
 json as_query_options(json reply, const SurfaceImport& surface) {
-    for (const auto& [cli, query] : {std::pair{std::string("--plane"), surface.plane_option},
-                                     std::pair{std::string("--cylinder"), surface.cylinder_option}}) {
+    for (const auto& [cli, query] :
+         {std::pair{std::string("--plane"), surface.plane_option},
+          std::pair{std::string("--cylinder"), surface.cylinder_option}}) {
         for (const char* key : {"part", "error"}) {
             if (!reply.contains(key) || !reply[key].is_string()) continue;
             const std::string text = reply[key].get<std::string>();

@@ -63,7 +63,8 @@ json reply_json(const drawing::ImportResult& r, const drawing::ImportOptions& op
                 const json& task) {
     // A task in space may hold more primitives than the drawing had: the
     // wrapping round a cylinder fits curves anew.
-    const json strokes = task.contains("strokes") ? task["strokes"] : json::array({task["trajectory"]});
+    const json strokes =
+        task.contains("strokes") ? task["strokes"] : json::array({task["trajectory"]});
     std::size_t primitives = 0;
     for (const auto& s : strokes) primitives += s.size();
     // What the CLI prints beside the task: the layers found with their

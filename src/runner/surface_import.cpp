@@ -46,9 +46,9 @@ nlohmann::json surface_task_json(drawing::ImportResult& r, const SurfaceImport& 
     } else {
         const drawing::CylinderSurface cylinder = drawing::cylinder_surface(
             surface.cylinder, facing_point(base), surface.cylinder_option.c_str());
-        placed = drawing::place_on_cylinder(r.strokes, cylinder, wrap_tolerance,
-                                            task::kMaxPrimitives, deadline,
-                                            surface.cylinder_option.c_str());
+        placed =
+            drawing::place_on_cylinder(r.strokes, cylinder, wrap_tolerance, task::kMaxPrimitives,
+                                       deadline, surface.cylinder_option.c_str());
         to_space = [cylinder](const geometry::Vec2& p) {
             return drawing::surface_point(cylinder, p);
         };

@@ -73,7 +73,8 @@ private:
 /// Every point of every primitive of a task's strokes (start, end, center).
 template <typename F>
 void each_point(const json& task, F f) {
-    const json strokes = task.contains("strokes") ? task["strokes"] : json::array({task["trajectory"]});
+    const json strokes =
+        task.contains("strokes") ? task["strokes"] : json::array({task["trajectory"]});
     for (const auto& stroke : strokes)
         for (const auto& p : stroke)
             for (const char* key : {"start", "end"})

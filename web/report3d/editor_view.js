@@ -22,6 +22,10 @@ const AXIS_COLOURS = { x: 0xd62728, y: 0x2ca02c, z: 0x1f77b4 };
 const DRAG_PIXELS = 5;        // a press that moves further is a drag, not a click
 const ARROW_SCREEN = 0.16;    // an arrow's length, as a share of its distance from the camera
 const HOLD_AT_END_S = 0.6;    // the motion rests this long at its end before it starts again
+// Between two frames of the motion the page gets this long for the rest
+// (the panel, the server's answers): drawn in software, as without a GPU,
+// a frame can take the whole of a frame's time.
+const MOTION_PAUSE_MS = 25;
 
 function dispose(group) {
   for (const child of [...group.children]) {
@@ -507,7 +511,7 @@ export class EditorView3D {
         this.showTime(Math.min(time, m.T1));
         // The hold at the end is counted past T1.
         if (time > m.T1) this.state.time = time - m.T0;
-        requestAnimationFrame(frame);
+        setTimeout(() => requestAnimationFrame(frame), MOTION_PAUSE_MS);
       };
       requestAnimationFrame(frame);
     } else if (this.motion && this.hooks.onTime) {
