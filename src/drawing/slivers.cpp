@@ -132,7 +132,10 @@ std::optional<Replacement> candidate(const std::vector<Primitive>& chain, std::s
     // A stroke shorter than the tolerance may end as one piece that short.
     const bool whole = r.first == 0 && r.last + 1 == chain.size() && !before && !after;
     for (const Primitive& q : fresh) {
-        if (q.kind == PrimitiveKind::Circle) return std::nullopt;
+        // A stroke that closes on itself within the tolerance would become
+        // a piece of no length.
+        if (q.kind == PrimitiveKind::Circle || !(geometry::length(q) >= kMinPiece))
+            return std::nullopt;
         if (geometry::length(q) < tolerance && !(whole && fresh.size() == 1)) return std::nullopt;
     }
     r.far = apart(old, fresh);

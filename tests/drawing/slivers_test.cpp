@@ -127,6 +127,13 @@ TEST_CASE("Slivers: kept when merging would stray past the tolerance", "[drawing
     std::vector<Primitive> chain{a, sliver, b};
     CHECK(merge_slivers(chain, kTolerance, kTolerance) == kTolerance);
     CHECK(chain.size() == 3);
+    // A stroke out and back within the tolerance is not merged into a
+    // piece of no length.
+    std::vector<Primitive> back{geometry::make_line(Vec2(0.3, 0.0), Vec2(0.30001, 0.0)),
+                                geometry::make_line(Vec2(0.30001, 0.0), Vec2(0.3, 0.0))};
+    merge_slivers(back, kTolerance, 0.0);
+    REQUIRE(back.size() == 2);
+    for (const Primitive& p : back) CHECK(geometry::length(p) > 0.0);
     // A stroke that is one short piece stays.
     std::vector<Primitive> dot{geometry::make_line(Vec2(0.3, 0.0), Vec2(0.30001, 0.0))};
     merge_slivers(dot, kTolerance, 0.0);
