@@ -174,6 +174,25 @@ for drawing in sketch.svg bracket.dxf; do
     fi
 done
 
+# Hatches: skipped with a warning that names the option; with
+# --hatch-boundaries their boundary paths (a polyline path with a bulge,
+# edge paths of lines, arcs, an elliptic arc and a spline) are closed
+# strokes of a task that solves and passes the grader.
+"$bin" import "$root/tests/fixtures/drawings/hatches.dxf" -o "$tmp/h.json" >"$tmp/out" 2>"$tmp/err"
+[ $? -eq 2 ] && grep -qF "HATCH #1 (layer outline)" "$tmp/err" && grep -qF -- "--hatch-boundaries" "$tmp/err" ||
+    fail "hatches.dxf without --hatch-boundaries: $(cat "$tmp/err")"
+"$bin" import "$root/tests/fixtures/drawings/hatches.dxf" --hatch-boundaries -o "$tmp/solve-hatch.json" \
+    --at 0.3,0.1 --base -0.1,-0.1,0.1,0.1 >"$tmp/out" 2>"$tmp/err" || fail "import hatches.dxf: $(cat "$tmp/err")"
+[ -s "$tmp/err" ] && fail "hatches.dxf: unexpected warnings: $(cat "$tmp/err")"
+grep -q "^.*hatches.dxf -> .*: 5 strokes" "$tmp/out" || fail "hatches.dxf: not 5 strokes: $(cat "$tmp/out")"
+check_task "$tmp/solve-hatch.json" 5
+timeout 120 "$bin" solve "$tmp/solve-hatch.json" -o "$tmp/solve-hatch.sol.json" --quiet \
+    >"$tmp/out" 2>&1 || fail "solve the hatches: exit $?: $(tail -3 "$tmp/out")"
+if [ -f "$grader_py" ]; then
+    python3 "$grader_py" "$tmp/solve-hatch.json" "$tmp/solve-hatch.sol.json" --expect solved \
+        >"$tmp/grade" 2>&1 || fail "hatches: $(tail -2 "$tmp/grade")"
+fi
+
 # Text in a single-stroke font: a task that solves and passes the grader.
 "$bin" import --text "Hi" --height 0.05 -o "$tmp/solve-text.json" --at 0.3,0.1 \
     --base -0.1,-0.1,0.1,0.1 >"$tmp/out" 2>&1 || fail "import --text: $(cat "$tmp/out")"

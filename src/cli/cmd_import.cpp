@@ -49,6 +49,7 @@ struct ImportArgs {
     std::string obstacle_layer;
     std::vector<std::string> layers;
     bool strict = false;
+    bool hatch_boundaries = false;
     std::vector<int> dof;
     double link_diameter = -1.0;
     bool keep_order = false;
@@ -143,6 +144,7 @@ int run_import(ImportArgs& a) {
     options.read.obstacle_layer = a.obstacle_layer;
     options.read.layers = a.layers;
     options.read.strict = a.strict;
+    options.read.hatch_boundaries = a.hatch_boundaries;
     if (a.width > 0.0) options.placement.width = a.width;
     if (a.scale > 0.0) options.placement.scale = a.scale;
     if (!a.at.empty()) options.placement.at = Vec2(a.at[0], a.at[1]);
@@ -316,6 +318,9 @@ Command add_import(CLI::App& parent) {
     sub->add_flag("--strict", a->strict,
                   "refuse what cannot be traced (text without a font, hatches, dimensions, "
                   "points, images, 3D solids, degenerate pieces) instead of skipping it");
+    sub->add_flag("--hatch-boundaries", a->hatch_boundaries,
+                  "trace the boundary paths of DXF hatches (their outlines) instead of "
+                  "skipping them");
     sub->add_option("--name", a->name, "task name (default: the file name)");
     sub->add_option("--dof", a->dof,
                     "allowed joint counts, e.g. 2,3 (default 2,3; with --plane or --cylinder "

@@ -78,65 +78,6 @@ Vec2 tangent(const Segment& s, double t, double t0, double t1, bool at_start) {
     return (point(s, t1) - point(s, t0)).normalized();
 }
 
-/// The arc leaving p with unit tangent t that passes through q; a line
-/// when nearly straight.
-Primitive arc_through(const Vec2& p, const Vec2& t, const Vec2& q) {
-    const Vec2 w = q - p;
-    const double den = 2.0 * perp(t).dot(w);
-    const double r = std::abs(w.squaredNorm() / den);
-    if (!std::isfinite(r) || r > kMaxRadius || std::abs(den) <= 1e-12 * w.norm()) {
-        return make_line(p, q);
-    }
-    const Vec2 center = p + (w.squaredNorm() / den) * perp(t);
-    return make_arc(p, q, center, den > 0.0);
-}
-
-/// The arc that passes through q and arrives at p with unit tangent t.
-Primitive arc_into(const Vec2& q, const Vec2& p, const Vec2& t) {
-    const Vec2 w = q - p;
-    const double den = 2.0 * perp(t).dot(w);
-    const double r = std::abs(w.squaredNorm() / den);
-    if (!std::isfinite(r) || r > kMaxRadius || std::abs(den) <= 1e-12 * w.norm()) {
-        return make_line(q, p);
-    }
-    const Vec2 center = p + (w.squaredNorm() / den) * perp(t);
-    return make_arc(q, p, center, den > 0.0);
-}
-
-/// The biarc from p0 (tangent t0) to p1 (tangent t1) whose two arcs have
-/// equal tangent lengths; empty when none runs forwards.
-std::optional<std::vector<Primitive>> biarc(const Vec2& p0, const Vec2& t0, const Vec2& p1,
-                                            const Vec2& t1) {
-    const Vec2 v = p1 - p0;
-    const double chord = v.norm();
-    if (chord == 0.0) return std::nullopt;
-    // Straight: both tangents along the chord.
-    if (std::abs(cross(t0, v)) <= 1e-12 * chord && std::abs(cross(t1, v)) <= 1e-12 * chord &&
-        t0.dot(v) > 0.0 && t1.dot(v) > 0.0) {
-        return std::vector<Primitive>{make_line(p0, p1)};
-    }
-    const Vec2 t = t0 + t1;
-    const double den = 2.0 * (1.0 - t0.dot(t1));
-    double d;
-    if (den <= 1e-12) {
-        const double vt = v.dot(t1);
-        if (!(vt > 0.0)) return std::nullopt;
-        d = v.squaredNorm() / (4.0 * vt);
-    } else {
-        const double vt = v.dot(t);
-        d = (-vt + std::sqrt(vt * vt + den * v.squaredNorm())) / den;
-    }
-    if (!(d > 0.0) || !std::isfinite(d)) return std::nullopt;
-    const Vec2 q = (p0 + p1 + d * (t0 - t1)) / 2.0;
-    std::vector<Primitive> out;
-    if ((q - p0).norm() > kMinPiece) out.push_back(arc_through(p0, t0, q));
-    if ((p1 - q).norm() > kMinPiece) {
-        out.push_back(out.empty() ? arc_into(p0, p1, t1) : arc_into(q, p1, t1));
-    }
-    if (out.empty()) out.push_back(make_line(p0, p1));
-    return out;
-}
-
 double distance_to(const std::vector<Primitive>& ps, const Vec2& q) {
     double best = std::numeric_limits<double>::infinity();
     for (const Primitive& p : ps) best = std::min(best, geometry::nearest(p, q).distance);
@@ -441,6 +382,60 @@ std::vector<Primitive> without_slivers(const std::vector<Primitive>& ps) {
 }
 
 }  // namespace
+
+Primitive arc_through(const Vec2& p, const Vec2& t, const Vec2& q) {
+    const Vec2 w = q - p;
+    const double den = 2.0 * perp(t).dot(w);
+    const double r = std::abs(w.squaredNorm() / den);
+    if (!std::isfinite(r) || r > kMaxRadius || std::abs(den) <= 1e-12 * w.norm()) {
+        return make_line(p, q);
+    }
+    const Vec2 center = p + (w.squaredNorm() / den) * perp(t);
+    return make_arc(p, q, center, den > 0.0);
+}
+
+Primitive arc_into(const Vec2& q, const Vec2& p, const Vec2& t) {
+    const Vec2 w = q - p;
+    const double den = 2.0 * perp(t).dot(w);
+    const double r = std::abs(w.squaredNorm() / den);
+    if (!std::isfinite(r) || r > kMaxRadius || std::abs(den) <= 1e-12 * w.norm()) {
+        return make_line(q, p);
+    }
+    const Vec2 center = p + (w.squaredNorm() / den) * perp(t);
+    return make_arc(q, p, center, den > 0.0);
+}
+
+std::optional<std::vector<Primitive>> biarc(const Vec2& p0, const Vec2& t0, const Vec2& p1,
+                                            const Vec2& t1) {
+    const Vec2 v = p1 - p0;
+    const double chord = v.norm();
+    if (chord == 0.0) return std::nullopt;
+    // Straight: both tangents along the chord.
+    if (std::abs(cross(t0, v)) <= 1e-12 * chord && std::abs(cross(t1, v)) <= 1e-12 * chord &&
+        t0.dot(v) > 0.0 && t1.dot(v) > 0.0) {
+        return std::vector<Primitive>{make_line(p0, p1)};
+    }
+    const Vec2 t = t0 + t1;
+    const double den = 2.0 * (1.0 - t0.dot(t1));
+    double d;
+    if (den <= 1e-12) {
+        const double vt = v.dot(t1);
+        if (!(vt > 0.0)) return std::nullopt;
+        d = v.squaredNorm() / (4.0 * vt);
+    } else {
+        const double vt = v.dot(t);
+        d = (-vt + std::sqrt(vt * vt + den * v.squaredNorm())) / den;
+    }
+    if (!(d > 0.0) || !std::isfinite(d)) return std::nullopt;
+    const Vec2 q = (p0 + p1 + d * (t0 - t1)) / 2.0;
+    std::vector<Primitive> out;
+    if ((q - p0).norm() > kMinPiece) out.push_back(arc_through(p0, t0, q));
+    if ((p1 - q).norm() > kMinPiece) {
+        out.push_back(out.empty() ? arc_into(p0, p1, t1) : arc_into(q, p1, t1));
+    }
+    if (out.empty()) out.push_back(make_line(p0, p1));
+    return out;
+}
 
 double deviation(const Segment& segment, double t0, double t1,
                  const std::vector<Primitive>& primitives, int samples) {

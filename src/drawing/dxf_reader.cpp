@@ -21,6 +21,7 @@
 #include <modsynth/task/input_error.h>
 #include <modsynth/text/printable.h>
 
+#include "dxf_hatch.h"
 #include "elliptic_arc.h"
 
 namespace modsynth::drawing {
@@ -56,7 +57,8 @@ double metres_per_insunit(int code) {
 /// those are kept open until the next entity starts.
 class Collector : public DL_CreationAdapter {
 public:
-    explicit Collector(const ReadOptions& options) : options_(options) {}
+    Collector(const ReadOptions& options, std::vector<HatchBoundary> hatches)
+        : options_(options), hatches_(std::move(hatches)) {}
 
     Drawing finish() {
         close_open();
@@ -74,7 +76,10 @@ public:
                 throw InputError("(document)",
                                  "entities that cannot be drawn: " + list + " (--strict)");
             }
-            drawing_.warnings.push_back("skipped what cannot be traced: " + listed(unsupported_));
+            drawing_.warnings.push_back("skipped what cannot be traced: " + listed(unsupported_) +
+                                        (unsupported_.count("HATCH")
+                                             ? " (--hatch-boundaries traces a hatch's outline)"
+                                             : ""));
         }
         if (!degenerate_.empty())
             drawing_.warnings.push_back("skipped degenerate pieces: " + listed(degenerate_));
@@ -296,7 +301,36 @@ public:
         unsupported("DIMENSION");
     }
     void addLeader(const DL_LeaderData&) override { unsupported("LEADER"); }
-    void addHatch(const DL_HatchData&) override { unsupported("HATCH"); }
+    // dxflib's hatch loops are not what the file holds (dxf_hatch.h): the
+    // pre-scan read every boundary, in the order dxflib reports the hatches.
+    void addHatch(const DL_HatchData&) override {
+        if (next_hatch_ >= hatches_.size())
+            throw InputError("(document)", "a HATCH the reader did not scan");
+        HatchBoundary hatch = std::move(hatches_[next_hatch_++]);
+        if (hatch.layer != getAttributes().getLayer())
+            throw InputError("(document)", "a HATCH read out of step with the reader's scan");
+        // Circles of the obstacle layer are obstacles; a hatch there fills
+        // one, and is not traced.
+        if (!options_.hatch_boundaries || on_obstacle_layer()) {
+            unsupported("HATCH");
+            return;
+        }
+        if (!begin("HATCH")) return;
+        if (!hatch.problem.empty()) fail(hatch.problem);
+        const std::string hatch_label = label_;
+        for (const std::string& edge : hatch.left_out) {
+            const std::string where = hatch_label + " " + edge;
+            if (block_) {
+                block_->skips.push_back({false, "HATCH edges", where});
+            } else {
+                note(unsupported_, "HATCH edges", where);
+            }
+        }
+        for (HatchBoundary::Run& run : hatch.runs) {
+            const std::string label = hatch_label + " boundary path " + std::to_string(run.path);
+            add_curve(std::move(run.segments), &label, &layer_);
+        }
+    }
     void addImage(const DL_ImageData&) override { unsupported("IMAGE"); }
 
 private:
@@ -872,6 +906,8 @@ private:
     }
 
     const ReadOptions& options_;
+    std::vector<HatchBoundary> hatches_;  ///< every HATCH's, in file order
+    std::size_t next_hatch_ = 0;
     Drawing drawing_;
     std::map<std::string, Skipped> unsupported_;
     std::map<std::string, Skipped> degenerate_;
@@ -1036,6 +1072,9 @@ struct CheckedGroups {
     /// Entity types of the ENTITIES section that dxflib does not read, and
     /// the lines where they begin.
     std::map<std::string, std::vector<std::size_t>> unread;
+    /// The boundaries of every HATCH (in ENTITIES and in blocks), in file
+    /// order.
+    std::vector<HatchBoundary> hatches;
 };
 
 /// The file's groups as dxflib is to read them, after every check dxflib
@@ -1057,6 +1096,7 @@ CheckedGroups checked_groups(std::string_view text) {
     Context context;
     std::string section;
     bool started = false, in_section = false, section_named = false;
+    std::optional<HatchReader> hatch;
     while (const auto code_line = lines.next()) {
         const std::size_t code_number = lines.number();
         const auto value_line = lines.next();
@@ -1085,11 +1125,12 @@ CheckedGroups checked_groups(std::string_view text) {
             return "group code " + std::to_string(*code) + " is '" + text::printable(value) + "'";
         };
         std::optional<long long> integer;
+        std::optional<double> real;
         switch (value_type(*code)) {
             case ValueType::Real: {
                 std::string why;
-                if (!parse_real(value, why))
-                    throw InputError(context.at(value_number), what() + ", " + why);
+                real = parse_real(value, why);
+                if (!real) throw InputError(context.at(value_number), what() + ", " + why);
                 break;
             }
             case ValueType::Integer:
@@ -1107,6 +1148,10 @@ CheckedGroups checked_groups(std::string_view text) {
         }
         if (*code == 0) {
             context.check_counts();
+            if (hatch) {
+                checked.hatches.push_back(hatch->finish());
+                hatch.reset();
+            }
             const std::string_view name = trimmed(value);
             section_named = false;
             if (name == "SECTION") {
@@ -1125,6 +1170,7 @@ CheckedGroups checked_groups(std::string_view text) {
             context.line = value_number;
             const auto counts = kCounts.find(name);
             if (counts != kCounts.end()) context.counts = &counts->second;
+            if (name == "HATCH" && (section == "ENTITIES" || section == "BLOCKS")) hatch.emplace();
             out += "0\n";
             out += name;
             out += '\n';
@@ -1141,6 +1187,15 @@ CheckedGroups checked_groups(std::string_view text) {
             context.name = text::printable(section) + " section";
         }
         section_named = false;
+        if (hatch) {
+            if (real) {
+                hatch->number(static_cast<int>(*code), *real, value_number);
+            } else if (integer) {
+                hatch->number(static_cast<int>(*code), static_cast<double>(*integer), value_number);
+            } else {
+                hatch->text(static_cast<int>(*code), std::string(value));
+            }
+        }
         if (context.counts) {
             for (const DeclaredCount& c : *context.counts) {
                 if (*code == c.item_code) ++context.items[c.item_code];
@@ -1179,7 +1234,7 @@ Drawing read_dxf(std::string_view text, const ReadOptions& options) {
     }
     CheckedGroups checked = checked_groups(text);
     std::stringstream stream{std::move(checked.text)};
-    Collector collector(options);
+    Collector collector(options, std::move(checked.hatches));
     collector.add_unread(checked.unread);
     DL_Dxf dxf;
     try {

@@ -10,6 +10,7 @@
 
 #include <modsynth/drawing/biarc_fit.h>
 #include <modsynth/drawing/dxf_reader.h>
+#include <modsynth/drawing/slivers.h>
 #include <modsynth/drawing/svg_reader.h>
 #include <modsynth/geometry/distance.h>
 #include <modsynth/task/input_error.h>
@@ -95,7 +96,8 @@ std::optional<std::size_t> primitives_needed(const std::vector<Curve>& placed, d
         if (!(size_across(c) >= kMinPiece)) continue;
         try {
             FittedCurve f = fit_curve(c, tolerance, task::kMaxPrimitives, deadline);
-            fold_short_lines(f.primitives, tolerance, f.deviation);
+            merge_slivers(f.primitives, tolerance,
+                          fold_short_lines(f.primitives, tolerance, f.deviation));
             total += f.primitives.size();
         } catch (const InputError&) {
             return std::nullopt;
@@ -265,6 +267,9 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
         }
         f.deviation += straightened;
         f.deviation = fold_short_lines(f.primitives, options.tolerance, f.deviation);
+        // What is still shorter than the tolerance (an arc between arcs, a
+        // line between arcs) is merged into its neighbours.
+        f.deviation = merge_slivers(f.primitives, options.tolerance, f.deviation);
         total += f.primitives.size();
         if (total > task::kMaxPrimitives) continue;
         result.deviation = std::max(result.deviation, f.deviation);

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <set>
@@ -345,6 +346,7 @@ public:
             }
         }
         collapse_space(text, preserve, text_);
+        anchor_ = inherited(text, "text-anchor");
         run(text, out, 0);
         flush_chunk();
     }
@@ -355,68 +357,133 @@ private:
         std::vector<Curve> curves;  ///< in the text's user space, y down
     };
 
-    /// A position attribute: one length or none; a list (a position per
-    /// character) is refused.
-    std::optional<double> position(XMLElement* e, const char* name, double em,
-                                   const std::string& label) {
+    /// A position attribute: the lengths of its list (a position per
+    /// character, the first for the element's first character), none when
+    /// absent.
+    std::vector<double> positions(XMLElement* e, const char* name, double em,
+                                  const std::string& label) {
+        std::vector<double> out;
         const char* v = e->Attribute(name);
-        if (!v || trimmed(v).empty()) return std::nullopt;
-        const std::string_view value = trimmed(v);
-        if (value.find_first_of(" ,\t\n") != std::string_view::npos) {
-            throw InputError(label, std::string(name) + "='" + text::printable(v, 40) +
-                                        "' places characters one by one, which cannot be honoured");
+        if (!v) return out;
+        std::string_view rest = v;
+        while (!rest.empty()) {
+            const auto begin = rest.find_first_not_of(" ,\t\n\r");
+            if (begin == std::string_view::npos) break;
+            rest.remove_prefix(begin);
+            const auto end = std::min(rest.find_first_of(" ,\t\n\r"), rest.size());
+            const auto length = length_of(rest.substr(0, end), em, false);
+            if (!length || std::abs(*length) > kMaxDrawingCoordinate)
+                throw InputError(label, "malformed attribute " + std::string(name) + "='" +
+                                            text::printable(v, 40) + "'");
+            out.push_back(*length);
+            rest.remove_prefix(end);
         }
-        const auto length = length_of(value, em, false);
+        return out;
+    }
+
+    /// letter-spacing or word-spacing at `e`: a length added after each
+    /// character (each space), 0 when "normal".
+    static double spacing(XMLElement* e, const char* name, double em, const std::string& label) {
+        const std::string v = inherited(e, name);
+        if (v.empty() || v == "normal") return 0.0;
+        const auto length = length_of(v, em, false);
         if (!length || std::abs(*length) > kMaxDrawingCoordinate)
-            throw InputError(label, "malformed attribute " + std::string(name) + "='" +
-                                        text::printable(v, 40) + "'");
-        return length;
+            throw InputError(label, std::string(name) + " '" + text::printable(v, 40) +
+                                        "' cannot be honoured (a length or normal)");
+        return *length;
+    }
+
+    /// Properties that move glyphs in ways the layout does not follow:
+    /// refused by name rather than drawn elsewhere than a browser shows.
+    static void refuse_unhonoured(XMLElement* e, const std::string& label) {
+        for (const char* refused : {"rotate", "textLength"}) {
+            if (e->Attribute(refused))
+                throw InputError(label, std::string(refused) + " cannot be honoured");
+        }
+        const auto refuse = [&](const char* name, std::initializer_list<std::string_view> fine) {
+            const std::string v = property(e, name);
+            if (v.empty() || v == "inherit") return;
+            if (std::find(fine.begin(), fine.end(), v) != fine.end()) return;
+            throw InputError(label, std::string(name) + " '" + text::printable(v, 40) +
+                                        "' cannot be honoured (glyphs are written on the "
+                                        "alphabetic baseline, left to right)");
+        };
+        refuse("baseline-shift", {"baseline", "0", "0px"});
+        refuse("dominant-baseline", {"auto", "alphabetic"});
+        refuse("alignment-baseline", {"auto", "baseline", "alphabetic"});
+        refuse("direction", {"ltr"});
+        refuse("unicode-bidi", {"normal", "embed", "isolate"});
+        refuse("kerning", {"auto", "0"});
+    }
+
+    /// The x, y, dx and dy lists of the text and the tspans being written,
+    /// outermost first, and how many of each one's characters came: a
+    /// character takes the innermost value given for it (SVG 1.1, 10.5).
+    struct Positions {
+        std::vector<double> x, y, dx, dy;
+        std::size_t next = 0;
+    };
+
+    std::optional<double> position_of(std::vector<double> Positions::*list) const {
+        for (auto l = levels_.rbegin(); l != levels_.rend(); ++l) {
+            const std::vector<double>& values = (*l).*list;
+            if (l->next < values.size()) return values[l->next];
+        }
+        return std::nullopt;
     }
 
     void run(XMLElement* e, XMLElement* out, int depth) {
         const std::string label = element_label(e);
         if (depth > 32) throw InputError(label, "tspans nested too deeply");
-        for (const char* refused : {"rotate", "textLength"}) {
-            if (e->Attribute(refused))
-                throw InputError(label, std::string(refused) + " cannot be honoured");
-        }
+        refuse_unhonoured(e, label);
         const double size = font_size(e, label);
-        const auto x = position(e, "x", size, label), y = position(e, "y", size, label);
-        const auto dx = position(e, "dx", size, label), dy = position(e, "dy", size, label);
-        if (x || y) {
-            // An absolute position starts a chunk, anchored on its own.
-            flush_chunk();
-            if (x) pen_.x() = *x;
-            if (y) pen_.y() = *y;
-            chunk_start_ = pen_.x();
-            anchor_ = inherited(e, "text-anchor");
-        }
-        if (dx) pen_.x() += *dx;
-        if (dy) pen_.y() += *dy;
+        levels_.push_back({positions(e, "x", size, label), positions(e, "y", size, label),
+                           positions(e, "dx", size, label), positions(e, "dy", size, label)});
+        const double letter = spacing(e, "letter-spacing", size, label);
+        const double word = spacing(e, "word-spacing", size, label);
         TextLayout layout;
         layout.font = font_for(e, label);
         layout.height = size * kCapPerEm;
         for (tinyxml2::XMLNode* n = e->FirstChild(); n; n = n->NextSibling()) {
             if (n->ToText()) {
                 const std::string& s = text_[n];
-                if (s.empty() || size == 0.0) continue;
-                TextCurves t = text_curves(s, Vec2::Zero(), layout, "", label);
-                if (!t.missing.empty() && missing_->size() < 3)
-                    missing_->push_back(label + " ('" + text::printable(t.missing, 40) + "')");
-                Run r{nullptr, std::move(t.curves)};
-                for (Curve& c : r.curves) {
-                    for (Segment& s : c.segments) {
-                        auto& l = std::get<LineSegment>(s);
-                        l.a = Vec2(pen_.x() + l.a.x(), pen_.y() - l.a.y());
-                        l.b = Vec2(pen_.x() + l.b.x(), pen_.y() - l.b.y());
+                std::string missing;
+                Run r{nullptr, {}};
+                for (std::size_t i = 0; i < s.size();) {
+                    const std::size_t len = std::min(utf8_length(s[i]), s.size() - i);
+                    const std::string_view ch(s.data() + i, len);
+                    i += len;
+                    const auto x = position_of(&Positions::x), y = position_of(&Positions::y);
+                    if (x || y) {
+                        // An absolute position starts a chunk, anchored on
+                        // its own.
+                        emit(std::move(r), e, out);
+                        r = Run{nullptr, {}};
+                        flush_chunk();
+                        if (x) pen_.x() = *x;
+                        if (y) pen_.y() = *y;
+                        chunk_start_ = pen_.x();
+                        anchor_ = inherited(e, "text-anchor");
                     }
+                    if (const auto dx = position_of(&Positions::dx)) pen_.x() += *dx;
+                    if (const auto dy = position_of(&Positions::dy)) pen_.y() += *dy;
+                    for (Positions& l : levels_) ++l.next;
+                    if (size == 0.0) continue;
+                    TextCurves t = text_curves(ch, Vec2::Zero(), layout, "", label);
+                    missing += t.missing;
+                    for (Curve& c : t.curves) {
+                        for (Segment& seg : c.segments) {
+                            auto& l = std::get<LineSegment>(seg);
+                            l.a = Vec2(pen_.x() + l.a.x(), pen_.y() - l.a.y());
+                            l.b = Vec2(pen_.x() + l.b.x(), pen_.y() - l.b.y());
+                        }
+                        r.curves.push_back(std::move(c));
+                    }
+                    pen_.x() += t.advance + letter + (ch == " " ? word : 0.0);
                 }
-                pen_.x() += t.advance;
-                if (r.curves.empty()) continue;
-                r.path = doc_->NewElement("path");
-                named_after(r.path, e);
-                out->InsertEndChild(r.path);
-                chunk_.push_back(std::move(r));
+                if (!missing.empty() && missing_->size() < 3)
+                    missing_->push_back(label + " ('" + text::printable(missing, 40) + "')");
+                emit(std::move(r), e, out);
                 continue;
             }
             XMLElement* c = n->ToElement();
@@ -435,6 +502,27 @@ private:
                                  "text " + std::string(name) + " cannot be honoured (only tspan)");
             }
         }
+        // Its characters were counted as its ancestors' characters too.
+        levels_.pop_back();
+    }
+
+    /// The length of the UTF-8 sequence a byte begins (1 for anything else):
+    /// a list's value places one character, not one byte.
+    static std::size_t utf8_length(char byte) {
+        const auto c = static_cast<unsigned char>(byte);
+        if (c >= 0xF0 && c < 0xF8) return 4;
+        if (c >= 0xE0) return c < 0xF0 ? 3 : 1;
+        if (c >= 0xC0) return 2;
+        return 1;
+    }
+
+    /// A run of characters of one text node within one chunk becomes a path.
+    void emit(Run&& r, XMLElement* e, XMLElement* out) {
+        if (r.curves.empty()) return;
+        r.path = doc_->NewElement("path");
+        named_after(r.path, e);
+        out->InsertEndChild(r.path);
+        chunk_.push_back(std::move(r));
     }
 
     void named_after(XMLElement* made, XMLElement* e) {
@@ -473,6 +561,7 @@ private:
     double chunk_start_ = 0.0;
     std::string anchor_;
     std::vector<Run> chunk_;
+    std::vector<Positions> levels_;
 };
 
 /// Replaces every rendered `text` under `e` by the paths of its glyphs;

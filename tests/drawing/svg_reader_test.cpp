@@ -2,6 +2,7 @@
 // double precision: drawn as a browser draws them, or refused by name.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -293,6 +294,58 @@ TEST_CASE("SVG: tspans continue the text or start a chunk of their own", "[drawi
                Catch::Contains("empty drawing"));
 }
 
+TEST_CASE("SVG: per-character positions and spacing move the characters", "[drawing][svg][text]") {
+    const auto points = [](const std::string& body) {
+        std::vector<std::pair<double, double>> out;
+        for (const Curve& c : read_svg(svg(body)).curves) {
+            for (const Segment& s : c.segments)
+                out.emplace_back(start_point(s).x(), start_point(s).y());
+        }
+        std::sort(out.begin(), out.end());
+        return out;
+    };
+    const auto same = [](const std::vector<std::pair<double, double>>& a,
+                         const std::vector<std::pair<double, double>>& b) {
+        if (a.size() != b.size()) return false;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            if (std::abs(a[i].first - b[i].first) > 1e-9 ||
+                std::abs(a[i].second - b[i].second) > 1e-9)
+                return false;
+        }
+        return true;
+    };
+    // An x list places each character, as texts of one character would;
+    // a tspan without its own takes its ancestor's for its characters.
+    const auto apart = points(
+        R"(<text x="10" y="40" font-size="16">A</text><text x="30" y="40" font-size="16">B</text><text x="50" y="40" font-size="16">C</text>)");
+    CHECK(same(points(R"(<text x="10 30 50" y="40" font-size="16">ABC</text>)"), apart));
+    CHECK(same(
+        points(
+            R"(<text x="10,30" y="40" font-size="16">A<tspan>B</tspan><tspan x="50">C</tspan></text>)"),
+        apart));
+    // Shorter lists leave the rest of the characters flowing on.
+    const Box plain = box_of(read_svg(svg(R"(<text x="10" y="40" font-size="16">AB</text>)")));
+    const auto box = [](const std::string& body) { return box_of(read_svg(svg(body))); };
+    const Box shifted = box(R"(<text x="10" y="40" font-size="16" dx="0 5">AB</text>)");
+    CHECK(shifted.min.x() == Approx(plain.min.x()));
+    CHECK(shifted.max.x() == Approx(plain.max.x() + 5.0));
+    const Box raised = box(R"(<text x="10" y="40" font-size="16" dy="0,-3">AB</text>)");
+    CHECK(raised.max.y() == Approx(plain.max.y() + 3.0));
+    CHECK(raised.min.y() == Approx(plain.min.y()));
+    // letter-spacing after every character (em: of the font size),
+    // word-spacing after every space.
+    CHECK(box(R"(<text x="10" y="40" font-size="16" letter-spacing="2">AB</text>)").max.x() ==
+          Approx(plain.max.x() + 2.0));
+    CHECK(box(R"(<text x="10" y="40" font-size="16" style="letter-spacing:0.5em">AB</text>)")
+              .max.x() == Approx(plain.max.x() + 8.0));
+    const Box words = box(R"(<text x="10" y="40" font-size="16">A B</text>)");
+    CHECK(box(R"(<text x="10" y="40" font-size="16" word-spacing="4">A B</text>)").max.x() ==
+          Approx(words.max.x() + 4.0));
+    CHECK(
+        box(R"(<g letter-spacing="1"><text x="10" y="40" font-size="16">A B</text></g>)").max.x() ==
+        Approx(words.max.x() + 2.0));
+}
+
 TEST_CASE("SVG: text that is not rendered is not drawn; fonts map to Hershey ones",
           "[drawing][svg][text]") {
     for (const std::string hidden :
@@ -321,7 +374,12 @@ TEST_CASE("SVG: text that cannot be honoured is refused by name", "[drawing][svg
              {R"(<text id="a"><textPath href="#p">A</textPath></text>)", "textPath (line 1)"},
              {R"(<text id="a" style="writing-mode:tb">A</text>)", "vertical writing"},
              {R"(<text id="a" font-family="Hershey NoSuch">A</text>)", "not installed"},
-             {R"(<text id="a" x="1 2 3">ABC</text>)", "one by one"},
+             {R"(<text id="a" baseline-shift="super">A</text>)", "baseline-shift 'super'"},
+             {R"(<text id="a" style="dominant-baseline:middle">A</text>)",
+              "dominant-baseline 'middle'"},
+             {R"(<text id="a" direction="rtl">A</text>)", "direction 'rtl'"},
+             {R"(<text id="a" letter-spacing="10%">A</text>)", "letter-spacing '10%'"},
+             {R"(<text id="a" x="1 b">AB</text>)", "malformed attribute x"},
              {R"(<text id="a" rotate="30">A</text>)", "rotate"},
              {R"(<text id="a" font-size="big">A</text>)", "font-size"}}) {
         INFO(body);

@@ -6,6 +6,7 @@
 // strays further than the tolerance from the curve is split where it strays
 // most, and each half fitted again.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include <modsynth/drawing/curve.h>
@@ -48,5 +49,19 @@ double deviation(const Segment& segment, double t0, double t1,
 
 /// The same path run backwards.
 Primitive reversed(const Primitive& p);
+
+/// The arc leaving p with unit tangent t that passes through q; a line
+/// when nearly straight.
+Primitive arc_through(const Vec2& p, const Vec2& t, const Vec2& q);
+
+/// The arc that passes through q and arrives at p with unit tangent t; a
+/// line when nearly straight.
+Primitive arc_into(const Vec2& q, const Vec2& p, const Vec2& t);
+
+/// The biarc from p0 (unit tangent t0) to p1 (unit tangent t1) whose two
+/// arcs have equal tangent lengths, tangent-continuous where they meet;
+/// empty when none runs forwards.
+std::optional<std::vector<Primitive>> biarc(const Vec2& p0, const Vec2& t0, const Vec2& p1,
+                                            const Vec2& t1);
 
 }  // namespace modsynth::drawing

@@ -43,6 +43,10 @@ struct ReadOptions {
     std::vector<std::string> layers;
     /// Refuse, rather than skip with a warning, what cannot be traced.
     bool strict = false;
+    /// Trace the boundary paths of DXF HATCH entities as strokes (a fill
+    /// has no centreline; its outline is what a pen can draw), rather than
+    /// skip them with a warning.
+    bool hatch_boundaries = false;
 };
 
 /// The sizes a reader refuses beyond (a drawing for a robot arm has

@@ -1,0 +1,158 @@
+// Slivers: a piece shorter than the tolerance between arcs is merged into
+// its neighbours, the chain staying joined, tangent-continuous where it
+// was, and within the tolerance of what it replaced.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <vector>
+
+#include <modsynth/drawing/import.h>
+#include <modsynth/drawing/slivers.h>
+
+#include <Eigen/Geometry>
+
+namespace {
+
+using namespace modsynth::drawing;
+using modsynth::geometry::Primitive;
+using modsynth::geometry::PrimitiveKind;
+using modsynth::geometry::Vec2;
+namespace geometry = modsynth::geometry;
+
+constexpr double kTolerance = 1e-4;
+
+/// The arc from `start` about `center` by `sweep` radians (ccw > 0).
+Primitive arc(const Vec2& start, const Vec2& center, double sweep) {
+    const Vec2 r = start - center;
+    const Vec2 end = center + Eigen::Rotation2D<double>(sweep).toRotationMatrix() * r;
+    return geometry::make_arc(start, end, center, sweep > 0.0);
+}
+
+/// The arc that leaves where `p` ends, tangent to it, turning the same way
+/// on a circle of `radius`, by `sweep`.
+Primitive tangent_arc(const Primitive& p, double radius, double sweep) {
+    const Vec2 t = geometry::tangent_at(p, geometry::length(p));
+    const Vec2 normal = sweep > 0.0 ? geometry::perp(t) : Vec2(-geometry::perp(t));
+    return arc(p.end, p.end + radius * normal, sweep);
+}
+
+double far_between(const std::vector<Primitive>& a, const std::vector<Primitive>& b) {
+    double worst = 0.0;
+    for (const auto& [from, to] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+        for (const Primitive& p : *from) {
+            for (int i = 0; i <= 200; ++i) {
+                const Vec2 q = geometry::point_at(p, geometry::length(p) * i / 200.0);
+                double best = 1e9;
+                for (const Primitive& o : *to)
+                    best = std::min(best, geometry::nearest(o, q).distance);
+                worst = std::max(worst, best);
+            }
+        }
+    }
+    return worst;
+}
+
+double angle_between(const Vec2& a, const Vec2& b) {
+    return std::atan2(geometry::cross(a, b), a.dot(b));
+}
+
+void check_joined(const std::vector<Primitive>& chain) {
+    for (std::size_t i = 1; i < chain.size(); ++i)
+        CHECK((chain[i].start - chain[i - 1].end).norm() <= 1e-12);
+}
+
+}  // namespace
+
+TEST_CASE("Slivers: a short arc between two arcs becomes a biarc, smooth throughout",
+          "[drawing][slivers]") {
+    const Primitive a = arc(Vec2(0.3, -0.01), Vec2(0.3, 0.0), 1.2);
+    const Primitive sliver = tangent_arc(a, 0.005, 2e-5 / 0.005);  // 20 um
+    const Primitive b = tangent_arc(sliver, 0.02, 0.5);
+    const std::vector<Primitive> before{a, sliver, b};
+    std::vector<Primitive> chain = before;
+    const double deviation = merge_slivers(chain, kTolerance, 0.0);
+    for (const Primitive& p : chain) CHECK(geometry::length(p) >= kTolerance);
+    check_joined(chain);
+    CHECK((chain.front().start - before.front().start).norm() <= 1e-12);
+    CHECK((chain.back().end - before.back().end).norm() <= 1e-12);
+    for (std::size_t i = 1; i < chain.size(); ++i) {
+        CHECK(std::abs(
+                  angle_between(geometry::tangent_at(chain[i - 1], geometry::length(chain[i - 1])),
+                                geometry::tangent_at(chain[i], 0.0))) <= 1e-9);
+    }
+    // Within the tolerance of the chain it replaced, as it says.
+    const double far = far_between(before, chain);
+    CHECK(far <= deviation + 1e-9);
+    CHECK(deviation <= kTolerance);
+}
+
+TEST_CASE("Slivers: next to a corner, folded into the smooth side; the corner stays",
+          "[drawing][slivers]") {
+    const Primitive line = geometry::make_line(Vec2(0.2, 0.0), Vec2(0.3, 0.0));
+    // A corner of 90 degrees, then a sliver and the arc it meets smoothly.
+    const Primitive sliver = arc(Vec2(0.3, 0.0), Vec2(0.29, 0.0), 3e-5 / 0.01);
+    const Primitive b = tangent_arc(sliver, 0.01, 1.0);
+    std::vector<Primitive> chain{line, sliver, b};
+    const double deviation = merge_slivers(chain, kTolerance, 2e-5);
+    REQUIRE(chain.size() == 3);
+    CHECK(chain[0].end == line.end);
+    CHECK(chain[1].start == line.end);
+    for (const Primitive& p : chain) CHECK(geometry::length(p) >= kTolerance);
+    check_joined(chain);
+    // The corner is still a corner, the arc's far end still smooth with
+    // what the rest of the arc was.
+    CHECK(std::abs(angle_between(Vec2(1.0, 0.0), geometry::tangent_at(chain[1], 0.0))) > 1.0);
+    CHECK(std::abs(angle_between(geometry::tangent_at(chain[1], geometry::length(chain[1])),
+                                 geometry::tangent_at(chain[2], 0.0))) <= 1e-9);
+    CHECK(deviation <= kTolerance);
+    CHECK(deviation >= 2e-5);
+}
+
+TEST_CASE("Slivers: at a stroke's end, folded into the piece before it", "[drawing][slivers]") {
+    const Primitive a = arc(Vec2(0.3, -0.01), Vec2(0.3, 0.0), 1.0);
+    const Primitive sliver = tangent_arc(a, 0.004, -1e-5 / 0.004);  // the other way round
+    std::vector<Primitive> chain{a, sliver};
+    merge_slivers(chain, kTolerance, 0.0);
+    REQUIRE(chain.size() == 2);
+    CHECK((chain.front().start - a.start).norm() <= 1e-12);
+    CHECK((chain.back().end - sliver.end).norm() <= 1e-12);
+    for (const Primitive& p : chain) CHECK(geometry::length(p) >= kTolerance);
+    check_joined(chain);
+}
+
+TEST_CASE("Slivers: kept when merging would stray past the tolerance", "[drawing][slivers]") {
+    const Primitive a = arc(Vec2(0.3, -0.01), Vec2(0.3, 0.0), 1.2);
+    const Primitive sliver = tangent_arc(a, 0.005, 2e-5 / 0.005);
+    const Primitive b = tangent_arc(sliver, 0.02, 0.5);
+    // The fitting already used all of the tolerance: nothing is left.
+    std::vector<Primitive> chain{a, sliver, b};
+    CHECK(merge_slivers(chain, kTolerance, kTolerance) == kTolerance);
+    CHECK(chain.size() == 3);
+    // A stroke out and back within the tolerance is not merged into a
+    // piece of no length.
+    std::vector<Primitive> back{geometry::make_line(Vec2(0.3, 0.0), Vec2(0.30001, 0.0)),
+                                geometry::make_line(Vec2(0.30001, 0.0), Vec2(0.3, 0.0))};
+    merge_slivers(back, kTolerance, 0.0);
+    REQUIRE(back.size() == 2);
+    for (const Primitive& p : back) CHECK(geometry::length(p) > 0.0);
+    // A stroke that is one short piece stays.
+    std::vector<Primitive> dot{geometry::make_line(Vec2(0.3, 0.0), Vec2(0.30001, 0.0))};
+    merge_slivers(dot, kTolerance, 0.0);
+    CHECK(dot.size() == 1);
+}
+
+TEST_CASE("Slivers: an imported path's short arc between arcs is merged", "[drawing][slivers]") {
+    // Two quarter circles and, between them, an arc of 5 um (a path
+    // optimiser's leftover), in millimetres.
+    const std::string svg =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='100mm' height='100mm' "
+        "viewBox='0 0 100 100'><path fill='none' stroke='black' "
+        "d='M 10,50 A 20,20 0 0 1 30,30 A 15,15 0 0 1 30.005,30.0000008 A 25,25 0 0 1 "
+        "55,55'/></svg>";
+    ImportOptions options;
+    options.placement.scale = 1e-3;
+    const ImportResult r = import_drawing(svg, DrawingFormat::Svg, options);
+    REQUIRE(r.strokes.size() == 1);
+    for (const Primitive& p : r.strokes[0]) CHECK(geometry::length(p) >= options.tolerance);
+    check_joined(r.strokes[0]);
+    CHECK(r.deviation <= options.tolerance);
+}
