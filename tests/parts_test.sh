@@ -89,5 +89,25 @@ PY
     for f in "$tmp"/parts/*.scad; do
         cmp -s "$f" "$tmp/again/$(basename "$f")" || fail "export wrote another $(basename "$f")"
     done
+    # A spatial arm: a printed link for each link with a common normal, its
+    # axes at a_k in the mesh.
+    spatial=$root/tasks/spatial/glue-box-edges.json
+    expect_exit 0 "spatial solve --parts" "$bin" solve "$spatial" -o "$tmp/s.json" \
+        --parts "$tmp/sparts" --build-sheet "$tmp/ssheet.md" -q
+    python3 - "$tmp/s.json" "$tmp/sparts" >"$tmp/spatial" 2>&1 <<'PY' || fail "spatial parts: $(cat "$tmp/spatial")"
+import json, os, re, sys
+rows = json.load(open(sys.argv[1]))["robot"]["dh"]
+for k, row in enumerate(rows, 1):
+    scad = os.path.join(sys.argv[2], "link_%d.scad" % k)
+    a = abs(row["a"] if isinstance(row, dict) else row[0])
+    if a <= 0.001:
+        assert not os.path.exists(scad), "link %d: a printed link for a = %g" % (k, a)
+        continue
+    length = float(re.search(r"\nlink_length = ([-0-9.]+);", open(scad).read()).group(1))
+    assert abs(length - 1000 * a) < 1e-3, "link %d: %g mm for a = %g m" % (k, length, a)
+    assert os.path.getsize(scad[:-5] + ".stl") > 0, "link %d: no STL" % k
+PY
+    grep -q "mm apart in the mesh" "$tmp/ssheet.md" || fail "the spatial build sheet lacks the spacing checks"
+    grep -q "a check failed" "$tmp/ssheet.md" && fail "spatial: $(grep 'a check failed' "$tmp/ssheet.md")"
 fi
 finish "parts ($mode)"

@@ -70,8 +70,10 @@ std::optional<parts::PrintedParts> print_parts(const ExportArgs& a, const TaskT&
     std::optional<parts::PrintedParts> printed =
         output::export_parts(task, catalog, solution, a.exports.parts, notes);
     for (auto& n : notes) {
-        if (printed) std::fprintf(stderr, "warning: %s\n", n.c_str());
-        else skipped.push_back(std::move(n));
+        if (printed)
+            std::fprintf(stderr, "warning: %s\n", n.c_str());
+        else
+            skipped.push_back(std::move(n));
     }
     return printed;
 }

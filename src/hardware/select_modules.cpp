@@ -145,8 +145,8 @@ std::vector<const Actuator*> allowed_actuators(const std::vector<std::string>& n
 }
 
 ModuleSelection select_modules(const task::Task& task, const kinematics::Robot& robot,
-                               const std::vector<control::Sample>& samples,
-                               const Catalog& catalog, const std::vector<PrintedLink>& printed) {
+                               const std::vector<control::Sample>& samples, const Catalog& catalog,
+                               const std::vector<PrintedLink>& printed) {
     const std::vector<const Actuator*> allowed = allowed_actuators(task.robot, catalog);
     const int n = robot.dof();
     if (!timed(samples, static_cast<std::size_t>(n))) {

@@ -76,6 +76,9 @@ std::optional<parts::PrintedParts> export_parts(const task::SpatialTask& task,
     // The spatial arm's dynamics keep the tubes (dh_arm_model.h): the
     // printed links span only the a parts of the chain.
     printed.bodies.clear();
+    layout.push_back(
+        "the spatial arm's dynamics keep the tubes' masses: the printed links span "
+        "only the a parts of the chain");
     printed.notes.insert(printed.notes.begin(), layout.begin(), layout.end());
     for (const auto& n : printed.notes) notes.push_back("--parts: " + n);
     return printed;
@@ -96,17 +99,18 @@ std::optional<parts::PrintedParts> export_parts(const task::Task& task,
     for (int round = 0; round < kPartsRounds; ++round) {
         printed = parts::write_printed_parts(
             parts::planar_links(task.robot, solution.robot, modules, settings),
-            parts::module_mount(*modules.front(), housing),
-            task.robot.ee_rod_diameter, folder, "modsynth: " + task.name, settings);
+            parts::module_mount(*modules.front(), housing), task.robot.ee_rod_diameter, folder,
+            "modsynth: " + task.name, settings);
         if (printed->bodies.empty()) break;
         solution.modules = hardware::select_modules(task, solution.robot, solution.samples,
                                                     *catalog, printed->bodies);
         const std::vector<const hardware::Actuator*> again = chosen(*solution.modules, *catalog);
         if (names(again) == names(modules)) break;
         if (round + 1 == kPartsRounds) {
-            notes.push_back(format("--parts %s: the modules the printed links call for changed in "
-                                   "each of %d rounds; the parts are for %s",
-                                   folder.c_str(), kPartsRounds, names(modules).front().c_str()));
+            notes.push_back(
+                format("--parts %s: the modules the printed links call for changed in "
+                       "each of %d rounds; the parts are for %s",
+                       folder.c_str(), kPartsRounds, names(modules).front().c_str()));
             break;
         }
         modules = again;
@@ -138,9 +142,10 @@ std::string printed_parts_section(const parts::PrintedParts& p) {
         ps.material.name.c_str(), ps.infill * 100.0, ps.perimeters, ps.layer_height * 1000.0,
         ps.allowable_stress() / 1e6, ps.material.strength / 1e6, ps.safety_factor);
     if (!p.bodies.empty()) {
-        s += format("\nPrinted link masses (mesh volume x %.0f kg/m^3 x %.2f solid fraction), "
-                    "which the module choice above carries in place of the tubes':",
-                    ps.material.density, ps.solid_fraction);
+        s += format(
+            "\nPrinted link masses (mesh volume x %.0f kg/m^3 x %.2f solid fraction), "
+            "which the module choice above carries in place of the tubes':",
+            ps.material.density, ps.solid_fraction);
         for (std::size_t k = 0; k < p.bodies.size(); ++k)
             s += format(" link %zu %.0f g%s", k + 1, p.bodies[k].mass * 1000.0,
                         k + 1 < p.bodies.size() ? "," : ".\n");

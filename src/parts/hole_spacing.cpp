@@ -48,9 +48,10 @@ SpacingCheck check_spacing(const Mesh& mesh, const LinkDesign& link) {
             ++found;
         }
         if (found == 1) return true;
-        out.message = text::format("link %d: %d loops of the %s's diameter (%.2f mm) in the section "
-                                   "at z = %.2f mm, not 1",
-                                   link.index, found, what, diameter * 1000.0, z_mm);
+        out.message = text::format(
+            "link %d: %d loops of the %s's diameter (%.2f mm) in the section "
+            "at z = %.2f mm, not 1",
+            link.index, found, what, diameter * 1000.0, z_mm);
         return false;
     };
     std::optional<Vec2> horn, axis;

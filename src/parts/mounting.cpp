@@ -7,7 +7,8 @@ namespace modsynth::parts {
 
 Mounting provisional_mounting(const hardware::Dimensions& body) {
     if (!(body.length > 0.0) || !(body.width > 0.0) || !(body.height > 0.0))
-        throw std::invalid_argument("provisional_mounting: the housing's dimensions must be positive");
+        throw std::invalid_argument(
+            "provisional_mounting: the housing's dimensions must be positive");
     const double L = body.length, W = body.width;
     const double clearance = W < 0.030 ? 0.0022 : 0.0032;
     Mounting m;

@@ -62,9 +62,11 @@ std::vector<LinkDesign> dh_links(const task::SpatialRobotSpec& spec,
     for (int k = 0; k < n; ++k) {
         const kinematics::DhRow& r = chain.rows[static_cast<std::size_t>(k)];
         if (std::abs(r.a) <= kShortest) {
-            notes.push_back(text::format("link %d has no common normal (a = %.1f mm): no printed "
-                                         "link, its d tube joins the modules",
-                                         k + 1, r.a * 1000.0));
+            notes.push_back(text::format(
+                "link %d has no common normal (a = 0): no printed link; "
+                "the tube or bracket the sheet lists joins module %d to "
+                "%s",
+                k + 1, k + 1, k + 1 < n ? text::format("module %d", k + 2).c_str() : "the tool"));
             continue;
         }
         if (std::abs(r.d) > kShortest || std::abs(r.alpha) > 1e-6)
@@ -156,8 +158,9 @@ PrintedParts write_printed_parts(const std::vector<LinkDesign>& links, const Mod
         parts.files.push_back(f);
     };
     for (const auto& l : links)
-        source(text::format("link_%d", l.index),
-               link_scad(l, text::format("%s: link %d of %zu", title.c_str(), l.index, links.size())));
+        source(
+            text::format("link_%d", l.index),
+            link_scad(l, text::format("%s: link %d of %zu", title.c_str(), l.index, links.size())));
     source("base_plate", base_plate_scad(first, plate, title + ": base plate"));
     source("tool_holder", tool_holder_scad(rod_diameter, plate, title + ": tool holder"));
     if (!on_path("openscad")) {

@@ -34,10 +34,12 @@ std::string body_parameters(const ModuleMount& m) {
 }
 
 std::string provenance(const ModuleMount& m) {
-    return m.provisional ? format("// %s's bolt pattern is the generic one for its housing (the catalog "
-                                  "gives none):\n// check it against the module before printing.\n",
-                                  m.name.c_str())
-                         : std::string();
+    return m.provisional
+               ? format(
+                     "// %s's bolt pattern is the generic one for its housing (the catalog "
+                     "gives none):\n// check it against the module before printing.\n",
+                     m.name.c_str())
+               : std::string();
 }
 
 }  // namespace

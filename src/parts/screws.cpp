@@ -39,7 +39,8 @@ std::vector<Screw> arm_screws(const std::vector<LinkDesign>& links, const Module
         out.push_back(s);
     };
     add(through_plate(first.mounting.body_hole_diameter, base_plate,
-                      static_cast<int>(first.mounting.body_holes.size()), "module 1 on the base plate"));
+                      static_cast<int>(first.mounting.body_holes.size()),
+                      "module 1 on the base plate"));
     add({"M5", 0.0, 4, "base plate to the table (length to suit the table)"});
     for (const auto& l : links) {
         const Mounting& h = l.horn.mounting;

@@ -101,9 +101,9 @@ TEST_CASE("screws are sized by their holes and cut to stock lengths", "[parts]")
 
     const PrintSettings settings;
     const ModuleMount m = module_mount(x5(), {});
-    const std::vector<LinkDesign> links = {link_design(1, 0.2, m, m, 0.0095, 13.0, settings),
-                                           link_design(2, 0.2, m, std::nullopt, 0.0095, 13.0,
-                                                       settings)};
+    const std::vector<LinkDesign> links = {
+        link_design(1, 0.2, m, m, 0.0095, 13.0, settings),
+        link_design(2, 0.2, m, std::nullopt, 0.0095, 13.0, settings)};
     int m3 = 0;
     for (const auto& sc : arm_screws(links, m, 0.0064))
         if (sc.size == "M3") m3 += sc.count;

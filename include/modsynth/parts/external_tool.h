@@ -25,12 +25,12 @@ ToolRun run_tool(const std::vector<std::string>& argv, double time_limit);
 
 /// What admesh says of an STL file.
 struct AdmeshReport {
-    bool parsed = false;         ///< the report had every figure below
-    int parts = 0;               ///< connected shells
+    bool parsed = false;          ///< the report had every figure below
+    int parts = 0;                ///< connected shells
     int disconnected_facets = 0;  ///< facets with an edge no other facet shares
     int degenerate_facets = 0;
     int edges_fixed = 0;
-    int facets_added = 0;        ///< to fill holes
+    int facets_added = 0;  ///< to fill holes
     int facets_reversed = 0;
     int backwards_edges = 0;
 

@@ -14,10 +14,10 @@ namespace modsynth::parts {
 /// The section of the beam between the ends: a flat flange on the bed,
 /// with a rib standing on its centre line. Lengths in m.
 struct BeamSection {
-    double plate = 0.0;         ///< thickness of the flange and of the end plates
+    double plate = 0.0;  ///< thickness of the flange and of the end plates
     double flange_width = 0.0;
     double rib_thickness = 0.0;
-    double rib_height = 0.0;    ///< above the flange
+    double rib_height = 0.0;  ///< above the flange
 };
 
 /// The rule: the beam carries the driving module's peak torque M (the most
@@ -31,14 +31,14 @@ struct BeamSection {
 BeamSection beam_section(double peak_torque, const Mounting& horn, const PrintSettings& settings);
 
 struct LinkDesign {
-    int index = 1;             ///< 1-based: link k joins joint k to joint k + 1 (or the tool)
-    double length = 0.0;       ///< m, horn axis to the next axis (or the tool's)
-    ModuleMount horn;          ///< module k, its output under the link's first end
+    int index = 1;        ///< 1-based: link k joins joint k to joint k + 1 (or the tool)
+    double length = 0.0;  ///< m, horn axis to the next axis (or the tool's)
+    ModuleMount horn;     ///< module k, its output under the link's first end
     /// Module k + 1, its body on the link's far end; none on the last link,
     /// whose far end carries the tool holder.
     std::optional<ModuleMount> body;
-    double rod_diameter = 0.0; ///< m, the end-effector rod's (last link)
-    double peak_torque = 0.0;  ///< N m, module k's
+    double rod_diameter = 0.0;  ///< m, the end-effector rod's (last link)
+    double peak_torque = 0.0;   ///< N m, module k's
     BeamSection beam;
     /// Diameters (m) of the two holes whose centres are the link's axes:
     /// the bore under the horn's hub and a locating hole on the next axis

@@ -26,10 +26,10 @@ struct Mounting {
 
 /// A module as the printed parts see it: its housing and its bolt pattern.
 struct ModuleMount {
-    std::string name;             ///< the actuator's, as the build sheet names it
-    hardware::Dimensions body;    ///< m: length along the link, width across, height on the axis
+    std::string name;           ///< the actuator's, as the build sheet names it
+    hardware::Dimensions body;  ///< m: length along the link, width across, height on the axis
     Mounting mounting;
-    bool provisional = true;      ///< the pattern is provisional_mounting's, not the maker's
+    bool provisional = true;  ///< the pattern is provisional_mounting's, not the maker's
 };
 
 /// The generic pattern of a housing of these dimensions (m), for a module

@@ -7,9 +7,9 @@
 namespace modsynth::parts {
 
 struct Material {
-    std::string name;            ///< "PLA"
-    double density = 0.0;        ///< kg/m^3 of the solid filament
-    double strength = 0.0;       ///< Pa, tensile strength of a part printed flat, along its layers
+    std::string name;       ///< "PLA"
+    double density = 0.0;   ///< kg/m^3 of the solid filament
+    double strength = 0.0;  ///< Pa, tensile strength of a part printed flat, along its layers
 };
 
 /// PLA: 1240 kg/m^3, 40 MPa along the layers of a flat print (below the
@@ -20,7 +20,7 @@ Material petg();
 
 struct PrintSettings {
     Material material = pla();
-    double infill = 0.4;          ///< fraction, gyroid
+    double infill = 0.4;  ///< fraction, gyroid
     int perimeters = 4;
     double layer_height = 0.0002;  ///< m
     /// The beams' sizing: allowable stress = material.strength / safety_factor.

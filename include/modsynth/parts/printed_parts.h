@@ -21,10 +21,10 @@
 namespace modsynth::parts {
 
 struct PartFile {
-    std::string name;      ///< "link_1"
-    std::string scad;      ///< path of the source
-    std::string stl;       ///< path of the mesh; "" when not rendered
-    std::string checks;    ///< what the checks found, one line
+    std::string name;    ///< "link_1"
+    std::string scad;    ///< path of the source
+    std::string stl;     ///< path of the mesh; "" when not rendered
+    std::string checks;  ///< what the checks found, one line
     bool checks_ok = false;
 };
 
@@ -37,8 +37,8 @@ struct PrintedParts {
     /// One per link, from its mesh (kg, m, kg m^2 about the joint axis);
     /// empty when the links were not rendered.
     std::vector<hardware::PrintedLink> bodies;
-    bool rendered = false;        ///< every file has its STL
-    bool checks_ok = false;       ///< rendered, and every check passed
+    bool rendered = false;           ///< every file has its STL
+    bool checks_ok = false;          ///< rendered, and every check passed
     std::vector<std::string> notes;  ///< warnings: no openscad, a check that failed
 };
 

@@ -11,7 +11,7 @@ struct Screw {
     std::string size;     ///< "M3"
     double length = 0.0;  ///< m, under the head
     int count = 0;
-    std::string use;      ///< what it holds
+    std::string use;  ///< what it holds
 };
 
 /// The metric size a clearance hole (m) is drilled for: M2 for 2.2 mm, M3

@@ -30,7 +30,7 @@ int bad_edges(const Mesh& mesh);
 
 /// Of the solid the mesh bounds (divergence theorem over its triangles).
 struct MassProperties {
-    double volume = 0.0;                                   ///< units^3
+    double volume = 0.0;  ///< units^3
     geometry::Vec3 centroid = geometry::Vec3::Zero();
     /// Second moments about the centroid, per unit density: the inertia
     /// tensor of the solid with density 1.
