@@ -154,7 +154,9 @@ std::vector<std::vector<Vec2>> section(const Mesh& mesh, double z) {
             at = step;
             if (at == start || seen[at]) break;
         }
-        loops.push_back(std::move(loop));
+        // A chain that does not come back to its start is a cut through an
+        // open surface: no loop.
+        if (at == start && loop.size() > 2) loops.push_back(std::move(loop));
     }
     return loops;
 }

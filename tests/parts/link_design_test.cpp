@@ -58,19 +58,21 @@ TEST_CASE("the beam carries the driving module's peak torque at the allowable st
     const PrintSettings settings;
     CHECK(settings.allowable_stress() == Approx(40e6 / 3.0));
     const Mounting horn = provisional_mounting({0.110, 0.073, 0.031});
-    const BeamSection s = beam_section(13.0, horn, settings);
+    // An X8-16's 38 N m needs more than the horn's width.
+    const BeamSection s = beam_section(38.0, horn, settings);
     CHECK(s.plate == Approx(0.0064));
+    CHECK(s.flange_width > horn.horn_diameter);
     // Section modulus t b^2 / 6 of the flange carries M at sigma.
-    const double stress = 13.0 / (s.plate * s.flange_width * s.flange_width / 6.0);
+    const double stress = 38.0 / (s.plate * s.flange_width * s.flange_width / 6.0);
     CHECK(stress == Approx(settings.allowable_stress()));
-    CHECK(13.0 / (s.rib_thickness * s.rib_height * s.rib_height / 6.0) ==
+    CHECK(38.0 / (s.rib_thickness * s.rib_height * s.rib_height / 6.0) ==
           Approx(settings.allowable_stress()));
     // A weak module still gets a beam as wide as its horn.
     CHECK(beam_section(0.1, horn, settings).flange_width == Approx(horn.horn_diameter));
     // PETG is weaker: a wider flange for the same torque.
     PrintSettings petg_settings;
     petg_settings.material = petg();
-    CHECK(beam_section(13.0, horn, petg_settings).flange_width > s.flange_width);
+    CHECK(beam_section(38.0, horn, petg_settings).flange_width > s.flange_width);
     CHECK_THROWS_AS(beam_section(-1.0, horn, settings), std::invalid_argument);
 }
 

@@ -33,7 +33,7 @@ Mesh box(const Vec3& lo, const Vec3& hi) {
 void add_hole_wall(Mesh& m, double x, double y, double d, double h) {
     const int n = 96;
     for (int i = 0; i < n; ++i) {
-        const double a = 2 * M_PI * i / n, b = 2 * M_PI * (i + 1) / n;
+        const double a = 2 * M_PI * i / n, b = 2 * M_PI * ((i + 1) % n) / n;
         const Vec3 p(x + d / 2 * std::cos(a), y + d / 2 * std::sin(a), 0);
         const Vec3 q(x + d / 2 * std::cos(b), y + d / 2 * std::sin(b), 0);
         const Vec3 up(0, 0, h);
@@ -173,4 +173,11 @@ TEST_CASE("an external program is run with a time limit, and a missing one is sa
     CHECK(slow.timed_out);
     CHECK_FALSE(on_path("modsynth-no-such-program"));
     CHECK(on_path("sh"));
+}
+
+TEST_CASE("a cut through an open surface is no loop", "[parts]") {
+    Mesh m = box(Vec3(0, 0, 0), Vec3(2, 1, 1));
+    m.triangles.erase(m.triangles.begin() + 4, m.triangles.begin() + 6);  // one side wall
+    CHECK(section(m, 0.5).empty());
+    CHECK(section(box(Vec3(0, 0, 0), Vec3(2, 1, 1)), 0.5).size() == 1);
 }

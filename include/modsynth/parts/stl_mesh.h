@@ -40,7 +40,8 @@ struct MassProperties {
 MassProperties mass_properties(const Mesh& mesh);
 
 /// The closed loops where the plane z = `z` cuts the mesh, as polygons in
-/// (x, y). `z` should pass through no vertex.
+/// (x, y); where the surface is open, the cut is no loop and is left out.
+/// `z` should pass through no vertex.
 std::vector<std::vector<geometry::Vec2>> section(const Mesh& mesh, double z);
 
 }  // namespace modsynth::parts
