@@ -12,6 +12,7 @@
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/output/exports.h>
+#include <modsynth/output/parts_export.h>
 #include <modsynth/output/recertify.h>
 #include <modsynth/synth/module_choice.h>
 #include <modsynth/synth/spatial_module_choice.h>
@@ -56,6 +57,27 @@ int report_skipped(std::vector<std::string> skipped, const std::vector<std::stri
     return skipped.empty() ? kOk : kInvalid;
 }
 
+/// --parts: the printed parts, written before the build sheet that lists
+/// them. A solution without a robot or modules adds its line to `skipped`;
+/// what the checks found is a warning.
+template <class TaskT>
+std::optional<parts::PrintedParts> print_parts(const ExportArgs& a, const TaskT& task,
+                                               const std::optional<hardware::Catalog>& catalog,
+                                               synth::Solution& solution,
+                                               std::vector<std::string>& skipped) {
+    if (a.exports.parts.empty()) return std::nullopt;
+    std::vector<std::string> notes;
+    std::optional<parts::PrintedParts> printed =
+        output::export_parts(task, catalog, solution, a.exports.parts, notes);
+    for (auto& n : notes) {
+        if (printed)
+            std::fprintf(stderr, "warning: %s\n", n.c_str());
+        else
+            skipped.push_back(std::move(n));
+    }
+    return printed;
+}
+
 /// A spatial task: re-verified as in the plane, modules chosen, and each
 /// file written by the spatial writers.
 int export_spatial(const ExportArgs& a, const task::SpatialTask& task) {
@@ -66,22 +88,29 @@ int export_spatial(const ExportArgs& a, const task::SpatialTask& task) {
     output::ReportFigures figures;
     figures.certificate_note = output::recertify(task, parsed);
     synth::choose_modules(task, catalog, parsed.solution);
+    std::vector<std::string> skipped;
+    const std::optional<parts::PrintedParts> printed =
+        print_parts(a, task, catalog, parsed.solution, skipped);
     const synth::Solution& s = parsed.solution;
     if (s.modules && s.modules->checked && !s.modules->carried())
         std::fprintf(stderr, "warning: the certified robot overloads its modules: %s\n",
                      s.modules->message.c_str());
     output::ExportPaths paths = a.exports;
     const std::vector<std::string> refused = refuse_uncertified(a, s, paths);
-    return report_skipped(output::write_exports(task, parsed.solution, paths, figures), refused);
+    for (auto& line : output::write_exports(task, parsed.solution, paths, figures,
+                                            printed ? &*printed : nullptr))
+        skipped.push_back(std::move(line));
+    return report_skipped(skipped, refused);
 }
 
 int run_export(const ExportArgs& a) {
     if (!a.exports.any()) {
         std::fprintf(stderr,
                      "error: nothing to export; give --report, --urdf, --csv, "
-                     "--joint-trajectory and/or --build-sheet\n");
+                     "--joint-trajectory, --build-sheet and/or --parts\n");
         return kInvalid;
     }
+    if (!a.exports.parts.empty()) parts::prepare_parts_folder(a.exports.parts);
     const io::TaskDocument doc = io::load_task_document(a.task);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
         return export_spatial(a, *spatial);
@@ -92,12 +121,18 @@ int run_export(const ExportArgs& a) {
     output::ReportFigures figures;
     figures.certificate_note = output::recertify(task, parsed);
     synth::choose_modules(task, catalog.catalog, parsed.solution);
+    std::vector<std::string> skipped;
+    const std::optional<parts::PrintedParts> printed =
+        print_parts(a, task, catalog.catalog, parsed.solution, skipped);
     const std::string overload = synth::overload_warning(parsed.solution);
     if (!overload.empty()) std::fprintf(stderr, "warning: %s\n", overload.c_str());
     const synth::Solution& s = parsed.solution;
     output::ExportPaths paths = a.exports;
     const std::vector<std::string> refused = refuse_uncertified(a, s, paths);
-    return report_skipped(output::write_exports(task, parsed.solution, paths, figures), refused);
+    for (auto& line : output::write_exports(task, parsed.solution, paths, figures,
+                                            printed ? &*printed : nullptr))
+        skipped.push_back(std::move(line));
+    return report_skipped(skipped, refused);
 }
 
 }  // namespace
@@ -112,6 +147,11 @@ void add_export_options(CLI::App& sub, output::ExportPaths& paths) {
                    "write the joint trajectory as a ROS 2 trajectory_msgs/JointTrajectory (YAML)");
     sub.add_option("--build-sheet", paths.build_sheet,
                    "write a build sheet (Markdown): parts, tube cut lengths, base, start pose");
+    sub.add_option("--parts", paths.parts,
+                   "write printable links into this folder (created if need be): an OpenSCAD "
+                   "source per link, base_plate.scad and tool_holder.scad, rendered to STL and "
+                   "checked when openscad is installed; the links' printed masses then enter "
+                   "the module choice");
 }
 
 Command add_export(CLI::App& parent) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <variant>
 
+#include <modsynth/hardware/task_catalog.h>
 #include <modsynth/io/progress_json.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_document.h>
@@ -115,6 +116,7 @@ double output_reserve(const task::Task& task, double time_limit) {
 
 int run_solve(const SolveArgs& a) {
     const run::Stopwatch clock;
+    if (!a.exports.parts.empty()) parts::prepare_parts_folder(a.exports.parts);
     io::TaskDocument doc = io::load_task_document(a.task);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
         return run_spatial_solve(*spatial, a, clock.started());
@@ -137,14 +139,17 @@ int run_solve(const SolveArgs& a) {
     SolveProgress progress(a.events, a.quiet);
     options.progress = progress.sink(guard);
     synth::SynthesisStats stats;
-    const synth::Solution solution = synth::solve(task, options, &stats);
+    synth::Solution solution = synth::solve(task, options, &stats);
     const double seconds = elapsed();
     guard.claim();
     for (const auto& note : stats.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+    const std::optional<parts::PrintedParts> printed =
+        print_parts(task, hardware::catalog_for(task).catalog, solution, a.exports.parts);
     const std::string overload = synth::overload_warning(solution);
     if (!overload.empty()) std::fprintf(stderr, "warning: %s\n", overload.c_str());
     write_answer(task, solution, a.output, a.exports,
-                 {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}});
+                 {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}},
+                 printed ? &*printed : nullptr);
     print_summary(task, solution, seconds, stats, a.output, a.ee_speed);
     return exit_code(solution.status);
 }

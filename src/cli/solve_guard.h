@@ -5,10 +5,13 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <modsynth/io/solution_io.h>
 #include <modsynth/output/exports.h>
+#include <modsynth/output/parts_export.h>
 #include <modsynth/run/progress.h>
 #include <modsynth/synth/solution.h>
 
@@ -54,10 +57,27 @@ private:
 /// on stderr: what every answer of `solve` writes, the watchdog's too.
 template <class TaskT>
 void write_answer(const TaskT& task, const synth::Solution& solution, const std::string& output,
-                  const output::ExportPaths& exports, const output::ReportFigures& figures = {}) {
+                  const output::ExportPaths& exports, const output::ReportFigures& figures = {},
+                  const parts::PrintedParts* printed = nullptr) {
     io::write_solution(solution, output);
-    for (const auto& note : output::write_exports(task, solution, exports, figures))
+    for (const auto& note : output::write_exports(task, solution, exports, figures, printed))
         std::fprintf(stderr, "note: %s\n", note.c_str());
+}
+
+/// --parts: the printed parts of a solved arm, written before the solution
+/// and the build sheet so that both carry the modules the printed links
+/// call for; what they could not do is a note. None without --parts.
+template <class TaskT>
+std::optional<parts::PrintedParts> print_parts(const TaskT& task,
+                                               const std::optional<hardware::Catalog>& catalog,
+                                               synth::Solution& solution,
+                                               const std::string& folder) {
+    if (folder.empty()) return std::nullopt;
+    std::vector<std::string> notes;
+    std::optional<parts::PrintedParts> printed =
+        output::export_parts(task, catalog, solution, folder, notes);
+    for (const auto& n : notes) std::fprintf(stderr, "note: %s\n", n.c_str());
+    return printed;
 }
 
 /// kOk, kInfeasible or kUnknown.

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include <modsynth/hardware/select_dh_modules.h>
 #include <modsynth/synth/module_choice.h>
 #include <modsynth/synth/solve.h>
 #include <modsynth/task/part.h>
@@ -76,14 +77,21 @@ int run_spatial_solve(const task::SpatialTask& task, const SolveRequest& a,
     SolveProgress progress(a.events, a.quiet);
     options.progress = progress.sink(guard);
     synth::SynthesisStats stats;
-    const synth::Solution solution = synth::solve(task, options, &stats);
+    synth::Solution solution = synth::solve(task, options, &stats);
     const double seconds = elapsed();
     guard.claim();
     for (const auto& note : stats.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+    std::optional<parts::PrintedParts> printed;
+    if (!a.exports.parts.empty()) {
+        std::string catalog_note;
+        printed = print_parts(task, hardware::spatial_catalog(task, &catalog_note), solution,
+                              a.exports.parts);
+    }
     const std::string overload = synth::overload_warning(solution);
     if (!overload.empty()) std::fprintf(stderr, "warning: %s\n", overload.c_str());
     write_answer(task, solution, a.output, a.exports,
-                 {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}});
+                 {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}},
+                 printed ? &*printed : nullptr);
     print_summary(task, solution, seconds, stats, a.output);
     return exit_code(solution.status);
 }

@@ -17,10 +17,13 @@ void add_part(LinkBody& body, double mass, double com, double inertia) {
 }
 
 ArmModel arm_model(const task::RobotSpec& spec, const kinematics::Robot& robot,
-                   const Catalog& catalog, const std::vector<const Actuator*>& modules) {
+                   const Catalog& catalog, const std::vector<const Actuator*>& modules,
+                   const std::vector<PrintedLink>& printed) {
     const int n = robot.dof();
     if (static_cast<int>(modules.size()) != n)
         throw std::invalid_argument("arm_model: one module per joint");
+    if (!printed.empty() && static_cast<int>(printed.size()) != n)
+        throw std::invalid_argument("arm_model: one printed link per link");
     ArmModel model;
     model.link_lengths = robot.link_lengths;
     if (spec.gravity) model.gravity = *spec.gravity;
@@ -32,20 +35,24 @@ ArmModel arm_model(const task::RobotSpec& spec, const kinematics::Robot& robot,
         LinkBody body;
         const TubeCut& cut = cuts[k];
         const double r = cut.link_length;
-        if (cut.cut_length > 0.0) {
+        if (!printed.empty()) {
+            add_part(body, printed[k].mass, printed[k].com, printed[k].inertia);
+        } else if (cut.cut_length > 0.0) {
             const double start = cut.proximal_allowance;
             const double end = r - cut.distal_allowance;
             const double m = tube.mass_per_metre * cut.cut_length;
             add_part(body, m, (start + end) / 2.0, m * cut.cut_length * cut.cut_length / 12.0);
         }
-        add_part(body, adapter, cut.proximal_allowance - spec.adapter_length / 2.0);
+        if (printed.empty())
+            add_part(body, adapter, cut.proximal_allowance - spec.adapter_length / 2.0);
         if (cut.last) {
             // The rod hangs from the tool straight down: in the plane it is
             // a point at the tool, as is the payload.
             add_part(body, rod.mass_per_metre * ee_rod_length(spec, robot.link_diameter, n), r);
             add_part(body, spec.payload, r);
         } else {
-            add_part(body, adapter, r - cut.distal_allowance + spec.adapter_length / 2.0);
+            if (printed.empty())
+                add_part(body, adapter, r - cut.distal_allowance + spec.adapter_length / 2.0);
             // The next module's housing rides on this link; its output turns
             // with the next one, but its rotor and gears are light next to
             // the housing, so all of its mass is counted here.

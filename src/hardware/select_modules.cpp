@@ -145,8 +145,8 @@ std::vector<const Actuator*> allowed_actuators(const std::vector<std::string>& n
 }
 
 ModuleSelection select_modules(const task::Task& task, const kinematics::Robot& robot,
-                               const std::vector<control::Sample>& samples,
-                               const Catalog& catalog) {
+                               const std::vector<control::Sample>& samples, const Catalog& catalog,
+                               const std::vector<PrintedLink>& printed) {
     const std::vector<const Actuator*> allowed = allowed_actuators(task.robot, catalog);
     const int n = robot.dof();
     if (!timed(samples, static_cast<std::size_t>(n))) {
@@ -156,7 +156,7 @@ ModuleSelection select_modules(const task::Task& task, const kinematics::Robot& 
         return out;
     }
     return choose_modules(n, allowed, [&](const std::vector<const Actuator*>& modules) {
-        return joint_loads(arm_model(task.robot, robot, catalog, modules), samples);
+        return joint_loads(arm_model(task.robot, robot, catalog, modules, printed), samples);
     });
 }
 

@@ -6,6 +6,7 @@
 #include <modsynth/geometry/vec.h>
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/output/hardware.h>
+#include <modsynth/output/parts_export.h>
 #include <modsynth/output/recertify.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/markdown.h>
@@ -145,7 +146,8 @@ std::string modules_section(const synth::Solution& solution) {
     return s + "\nModules: " + text::format("%.3f", m.total_mass) + " kg in all.\n\n";
 }
 
-std::string build_sheet(const task::Task& task, const synth::Solution& solution) {
+std::string build_sheet(const task::Task& task, const synth::Solution& solution,
+                        const parts::PrintedParts* printed) {
     const auto& robot = solution.robot;
     std::string s = "# Build sheet: " +
                     (task.name.empty() ? std::string("task") : text::markdown_literal(task.name)) +
@@ -159,7 +161,8 @@ std::string build_sheet(const task::Task& task, const synth::Solution& solution)
              text::markdown_literal(uncertified_reason(solution.certificate)) +
              ". The motion may leave the path or collide.\n\n";
     return s + parts(task, robot) + modules_section(solution) + cuts_section(task, robot) +
-           stack_section(task, robot) + base_section(robot) + start_pose_section(solution);
+           stack_section(task, robot) + base_section(robot) + start_pose_section(solution) +
+           (printed ? "\n" + printed_parts_section(*printed) : std::string());
 }
 
 }  // namespace modsynth::output

@@ -8,6 +8,7 @@
 #include <modsynth/hardware/dh_stack.h>
 #include <modsynth/kinematics/dh_chain.h>
 #include <modsynth/output/build_sheet.h>
+#include <modsynth/output/parts_export.h>
 #include <modsynth/output/recertify.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/markdown.h>
@@ -156,7 +157,8 @@ std::string start_pose_section(const synth::Solution& solution) {
 
 }  // namespace
 
-std::string build_sheet(const task::SpatialTask& task, const synth::Solution& solution) {
+std::string build_sheet(const task::SpatialTask& task, const synth::Solution& solution,
+                        const parts::PrintedParts* printed) {
     if (!solution.dh_robot || solution.samples.empty())
         throw std::invalid_argument("build_sheet: the solution has no DH robot or no motion");
     const kinematics::DhChain& chain = *solution.dh_robot;
@@ -173,7 +175,8 @@ std::string build_sheet(const task::SpatialTask& task, const synth::Solution& so
              ". The motion may leave the path or collide.\n\n";
     return s + chain_section(chain) + parts_section(task, chain, stack) +
            modules_section(solution) + cuts_section(task, stack) + joints_section(chain, stack) +
-           base_section(chain) + start_pose_section(solution);
+           base_section(chain) + start_pose_section(solution) +
+           (printed ? "\n" + printed_parts_section(*printed) : std::string());
 }
 
 }  // namespace modsynth::output

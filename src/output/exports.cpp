@@ -49,26 +49,28 @@ std::vector<std::string> write_robot_outputs(const synth::Solution& solution,
 }  // namespace
 
 std::vector<std::string> write_exports(const task::Task& task, const synth::Solution& solution,
-                                       const ExportPaths& paths, const ReportFigures& figures) {
+                                       const ExportPaths& paths, const ReportFigures& figures,
+                                       const parts::PrintedParts* printed) {
     if (!paths.report.empty()) write_text_file(paths.report, html_report(task, solution, figures));
     return write_robot_outputs(
         solution,
         {{paths.urdf, "--urdf", [&] { return robot_urdf(task, solution); }},
          {paths.csv, "--csv", [&] { return trajectory_csv(solution); }},
-         {paths.build_sheet, "--build-sheet", [&] { return build_sheet(task, solution); }},
+         {paths.build_sheet, "--build-sheet", [&] { return build_sheet(task, solution, printed); }},
          {paths.joint_trajectory, "--joint-trajectory",
           [&] { return joint_trajectory_yaml(solution); }}});
 }
 
 std::vector<std::string> write_exports(const task::SpatialTask& task,
                                        const synth::Solution& solution, const ExportPaths& paths,
-                                       const ReportFigures& figures) {
+                                       const ReportFigures& figures,
+                                       const parts::PrintedParts* printed) {
     if (!paths.report.empty()) write_text_file(paths.report, html_report(task, solution, figures));
     return write_robot_outputs(
         solution,
         {{paths.urdf, "--urdf", [&] { return robot_urdf(task, solution); }},
          {paths.csv, "--csv", [&] { return trajectory_csv(solution); }},
-         {paths.build_sheet, "--build-sheet", [&] { return build_sheet(task, solution); }},
+         {paths.build_sheet, "--build-sheet", [&] { return build_sheet(task, solution, printed); }},
          {paths.joint_trajectory, "--joint-trajectory",
           [&] { return joint_trajectory_yaml(solution); }}});
 }

@@ -73,3 +73,30 @@ TEST_CASE("the arm model counts every part of the catalog once", "[hardware]") {
     CHECK(m.links[1].com > 0.5 * robot.link_lengths[1]);  // the tool end is heavy
     CHECK(m.gravity == Vec2::Zero());                     // along the axes by default
 }
+
+TEST_CASE("printed links take the place of the tubes and their adapters", "[hardware][parts]") {
+    const Catalog c = load_catalog(std::string(MODSYNTH_SOURCE_DIR) + "/catalog");
+    modsynth::task::RobotSpec spec;
+    modsynth::kinematics::Robot robot;
+    robot.link_lengths = {0.35, 0.30};
+    robot.link_diameter = spec.link_diameter;
+    const std::vector<const Actuator*> modules = {c.actuator("X5-9"), c.actuator("X5-4")};
+    const ArmModel tubes = arm_model(spec, robot, c, modules);
+    const std::vector<PrintedLink> printed = {{0.12, 0.16, 0.002}, {0.08, 0.14, 0.001}};
+    const ArmModel model = arm_model(spec, robot, c, modules, printed);
+    // Link 1: the printed link and module 2's housing, no tube or adapter.
+    const double L = spec.module_length, W = spec.module_width;
+    LinkBody expected;
+    add_part(expected, 0.12, 0.16, 0.002);
+    add_part(expected, modules[1]->mass, 0.35 - (L / 2 - W / 2),
+             modules[1]->mass * (L * L + W * W) / 12.0);
+    CHECK(model.links[0].mass == Approx(expected.mass));
+    CHECK(model.links[0].com == Approx(expected.com));
+    CHECK(model.links[0].inertia == Approx(expected.inertia));
+    CHECK(model.links[0].mass < tubes.links[0].mass);
+    // The last link keeps the rod and the payload at the tool.
+    const Tube& rod = c.tube_closest_to(spec.ee_rod_diameter);
+    CHECK(model.links[1].mass ==
+          Approx(0.08 + rod.mass_per_metre * ee_rod_length(spec, robot.link_diameter, 2)));
+    CHECK_THROWS_AS(arm_model(spec, robot, c, modules, {printed[0]}), std::invalid_argument);
+}

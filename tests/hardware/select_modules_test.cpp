@@ -140,3 +140,24 @@ TEST_CASE("an untimed motion is not checked", "[hardware]") {
     CHECK_FALSE(sel.carried());
     CHECK(sel.message.find("qd, qdd") != std::string::npos);
 }
+
+TEST_CASE("printed links' masses enter the choice in place of the tubes'", "[hardware][parts]") {
+    const Catalog c = shipped();
+    modsynth::task::Task task;
+    task.robot.gravity = modsynth::geometry::Vec2(0.0, -9.81);
+    const auto tubes = select_modules(task, arm(), swing(0.5), c);
+    REQUIRE(tubes.carried());
+    // Light printed links lower joint 1's gravity load; heavy ones (5 kg at
+    // each link's middle) raise it past what the tubes needed.
+    const auto r = arm().link_lengths;
+    const auto with = [&](double mass) {
+        return select_modules(task, arm(), swing(0.5), c,
+                              {{mass, r[0] / 2, 0.0}, {mass, r[1] / 2, 0.0}});
+    };
+    const auto light = with(0.05);
+    const auto heavy = with(5.0);
+    CHECK(light.joints[0].load.peak_torque < tubes.joints[0].load.peak_torque);
+    CHECK(heavy.joints[0].load.peak_torque > tubes.joints[0].load.peak_torque);
+    CHECK(c.actuator(heavy.joints[0].module)->peak_torque >
+          c.actuator(tubes.joints[0].module)->peak_torque);
+}

@@ -28,6 +28,11 @@ struct ArmModel {
     geometry::Vec2 gravity = geometry::Vec2::Zero();
 };
 
+/// A link printed in one piece (parts/): what its mesh weighs, where its
+/// centre of mass is along the link and its moment of inertia about that
+/// centre (axis along the joints).
+using PrintedLink = LinkBody;
+
 /// Adds a part (mass at `com` along the link with its own inertia about its
 /// centre) to a body: the parallel-axis theorem.
 void add_part(LinkBody& body, double mass, double com, double inertia = 0.0);
@@ -38,8 +43,11 @@ void add_part(LinkBody& body, double mass, double com, double inertia = 0.0);
 /// that meets a module, and module k + 1's body (a box of the task's module
 /// size, behind the next axis as on the build sheet); the last link instead
 /// carries the end-effector rod and the payload at the tool. Tube and rod
-/// are the catalog's closest in diameter.
+/// are the catalog's closest in diameter. With `printed` (one per link,
+/// `modsynth solve --parts`), link k carries printed[k] in place of its tube
+/// and its adapters: the printed link bolts straight to the modules.
 ArmModel arm_model(const task::RobotSpec& spec, const kinematics::Robot& robot,
-                   const Catalog& catalog, const std::vector<const Actuator*>& modules);
+                   const Catalog& catalog, const std::vector<const Actuator*>& modules,
+                   const std::vector<PrintedLink>& printed = {});
 
 }  // namespace modsynth::hardware

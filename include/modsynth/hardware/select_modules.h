@@ -53,8 +53,9 @@ ModuleSelection choose_modules(int dof, const std::vector<const Actuator*>& allo
 /// takes the lightest that carries it (lighter modules outward mostly lower
 /// the loads inward; the choice is greedy, not a search over all
 /// combinations). Unchecked (selection.checked false) when a sample lacks
-/// qd or qdd.
+/// qd or qdd. With `printed`, the links are those printed parts (arm_model).
 ModuleSelection select_modules(const task::Task& task, const kinematics::Robot& robot,
-                               const std::vector<control::Sample>& samples, const Catalog& catalog);
+                               const std::vector<control::Sample>& samples, const Catalog& catalog,
+                               const std::vector<PrintedLink>& printed = {});
 
 }  // namespace modsynth::hardware

@@ -5,13 +5,16 @@
 // goes and the joint angles of the start pose.
 #include <string>
 
+#include <modsynth/parts/printed_parts.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/task/spatial_task.h>
 
 namespace modsynth::output {
 
 /// The sheet for a solved spatial solution (solution.dh_robot); sizes come
-/// from task.robot.
-std::string build_sheet(const task::SpatialTask& task, const synth::Solution& solution);
+/// from task.robot. With `printed` (--parts), it lists the printed parts,
+/// their print settings and screws (output/parts_export.h).
+std::string build_sheet(const task::SpatialTask& task, const synth::Solution& solution,
+                        const parts::PrintedParts* printed = nullptr);
 
 }  // namespace modsynth::output

@@ -1,0 +1,40 @@
+#include <modsynth/parts/mounting.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace modsynth::parts {
+
+Mounting provisional_mounting(const hardware::Dimensions& body) {
+    if (!(body.length > 0.0) || !(body.width > 0.0) || !(body.height > 0.0))
+        throw std::invalid_argument(
+            "provisional_mounting: the housing's dimensions must be positive");
+    const double L = body.length, W = body.width;
+    const double clearance = W < 0.030 ? 0.0022 : 0.0032;
+    Mounting m;
+    m.horn_diameter = 0.5 * W;
+    m.horn_bolt_circle = 0.7 * m.horn_diameter;
+    m.horn_holes = 4;
+    m.horn_hole_diameter = clearance;
+    m.body_hole_diameter = clearance;
+    const double inset = std::max(0.004, 0.1 * W);
+    for (double sx : {-1.0, 1.0})
+        for (double sy : {-1.0, 1.0})
+            m.body_holes.emplace_back(sx * (L / 2.0 - inset), sy * (W / 2.0 - inset));
+    m.output_offset = L / 2.0 - W / 2.0;
+    return m;
+}
+
+ModuleMount module_mount(const hardware::Actuator& actuator, const hardware::Dimensions& fallback) {
+    ModuleMount out;
+    out.name = actuator.name;
+    const hardware::Dimensions& d = actuator.dimensions;
+    out.body = d.length > 0.0 && d.width > 0.0 && d.height > 0.0 ? d : fallback;
+    // An actuator's own pattern (the catalog's "mounting" key) goes here
+    // when the catalog carries one.
+    out.mounting = provisional_mounting(out.body);
+    out.provisional = true;
+    return out;
+}
+
+}  // namespace modsynth::parts
