@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <system_error>
@@ -68,9 +69,22 @@ void require_sources(const json& obj, const std::string& place,
     }
 }
 
-Actuator parse_actuator(const json& e, const std::string& place) {
+/// An optional positive figure: absent gives none; present, it must be as
+/// `positive` requires and say where it comes from.
+std::optional<double> optional_figure(const json& obj, const std::string& place, const char* key,
+                                      double cap) {
+    if (obj.find(key) == obj.end()) return std::nullopt;
+    const double v = positive(obj, place, key, cap);
+    require_sources(obj, place, {key});
+    return v;
+}
+
+Actuator parse_actuator(const json& e, const std::string& place, const std::string& family,
+                        bool default_choice) {
     Actuator a;
     a.name = name_of(e, place);
+    a.family = family;
+    a.default_choice = default_choice;
     a.mass = positive(e, place, "mass", 100.0);
     a.continuous_torque = positive(e, place, "continuous_torque", 1e4);
     a.peak_torque = positive(e, place, "peak_torque", 1e4);
@@ -87,6 +101,24 @@ Actuator parse_actuator(const json& e, const std::string& place) {
     a.dimensions.height = positive(*d, place + ": dimensions", "height", 10.0);
     require_sources(e, place,
                     {"mass", "continuous_torque", "peak_torque", "max_speed", "dimensions"});
+    a.stall_torque = optional_figure(e, place, "stall_torque", 1e4);
+    a.no_load_speed = optional_figure(e, place, "no_load_speed", 1e3);
+    a.voltage = optional_figure(e, place, "voltage", 1e3);
+    a.cost = optional_figure(e, place, "cost", 1e7);
+    // The ratings are what the module gives in use, so no more than the
+    // maker's limits they are derived from.
+    if (a.stall_torque && a.peak_torque > *a.stall_torque) {
+        fail(place, "peak_torque " + json(a.peak_torque).dump() + " is more than stall_torque " +
+                        json(*a.stall_torque).dump());
+    }
+    if (a.no_load_speed && a.max_speed > *a.no_load_speed) {
+        fail(place, "max_speed " + json(a.max_speed).dump() + " is more than no_load_speed " +
+                        json(*a.no_load_speed).dump());
+    }
+    if (const auto m = e.find("mounting"); m != e.end()) {
+        a.mounting = parse_mounting(*m, place, a.dimensions.length, a.dimensions.width);
+        require_sources(e, place, {"mounting"});
+    }
     return a;
 }
 
@@ -121,6 +153,19 @@ const Actuator* Catalog::actuator(const std::string& name) const {
     for (const auto& a : actuators)
         if (a.name == name) return &a;
     return nullptr;
+}
+
+std::vector<const Actuator*> Catalog::family(const std::string& name) const {
+    std::vector<const Actuator*> out;
+    for (const auto& a : actuators)
+        if (a.family == name) out.push_back(&a);
+    return out;
+}
+
+std::vector<std::string> Catalog::families() const {
+    std::set<std::string> names;
+    for (const auto& a : actuators) names.insert(a.family);
+    return {names.begin(), names.end()};
 }
 
 const Tube& Catalog::tube_closest_to(double diameter) const {
@@ -159,6 +204,19 @@ void parse_catalog_file(const std::string& text, const std::string& file, Catalo
     const std::string kind = kind_it->get<std::string>();
     if (kind != "actuator" && kind != "tube" && kind != "adapter")
         fail(file, "kind: expected \"actuator\", \"tube\" or \"adapter\", got \"" + kind + "\"");
+    std::string family;
+    bool default_choice = false;
+    if (kind == "actuator") {
+        // Actuator families are names robot.modules may use.
+        const auto f = doc.find("family");
+        if (f == doc.end() || !f->is_string() || f->get<std::string>().empty())
+            fail(file, "family: expected a non-empty text (the name robot.modules uses for it)");
+        family = f->get<std::string>();
+        if (const auto d = doc.find("default"); d != doc.end()) {
+            if (!d->is_boolean()) fail(file, "default: expected true or false, got " + d->dump());
+            default_choice = d->get<bool>();
+        }
+    }
     const auto entries = doc.find("entries");
     if (entries == doc.end() || !entries->is_array() || entries->empty())
         fail(file, "entries: expected a non-empty list");
@@ -167,7 +225,7 @@ void parse_catalog_file(const std::string& text, const std::string& file, Catalo
         const std::string place = entry_place(file, i, e);
         if (!e.is_object()) fail(place, "expected an object");
         if (kind == "actuator") {
-            catalog.actuators.push_back(parse_actuator(e, place));
+            catalog.actuators.push_back(parse_actuator(e, place, family, default_choice));
         } else if (kind == "tube") {
             catalog.tubes.push_back(parse_tube(e, place));
         } else {
@@ -198,6 +256,12 @@ Catalog load_catalog(const std::string& folder) {
     for (const auto& a : catalog.actuators) unique(a.name);
     for (const auto& t : catalog.tubes) unique(t.name);
     for (const auto& a : catalog.adapters) unique(a.name);
+    for (const auto& f : catalog.families()) {
+        if (names.count(f))
+            throw CatalogError(
+                folder + ": the family \"" + f +
+                "\" has the name of a part; robot.modules could not tell them apart");
+    }
     return catalog;
 }
 

@@ -22,6 +22,8 @@ bool timed(const std::vector<control::Sample>& samples, std::size_t dof) {
 JointChoice assess(const Actuator& a, const JointLoad& load) {
     JointChoice c;
     c.module = a.name;
+    c.family = a.family;
+    c.cost = a.cost;
     c.mass = a.mass;
     c.load = load;
     c.peak_torque_limit = a.peak_torque;
@@ -68,6 +70,42 @@ std::string overload_text(int joint, const JointChoice& c) {
                "most room, %s, sees ",
                joint, c.module.c_str()) +
            what;
+}
+
+/// The modules' count, price and total (ModuleSelection::cost).
+std::string cost_line(const std::vector<JointChoice>& joints, std::optional<double>& total) {
+    std::vector<std::pair<const JointChoice*, int>> groups;  // first of each model, in joint order
+    for (const auto& j : joints) {
+        const auto g = std::find_if(groups.begin(), groups.end(),
+                                    [&](const auto& x) { return x.first->module == j.module; });
+        if (g == groups.end()) {
+            groups.emplace_back(&j, 1);
+        } else {
+            ++g->second;
+        }
+    }
+    std::string s = "cost: ";
+    double known = 0.0;
+    bool any_known = false, any_unknown = false;
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+        const auto& [j, count] = groups[i];
+        s += (i ? ", " : "") + std::to_string(count) + " x " + j->module;
+        if (j->cost) {
+            s += text::format(" = $%.2f", count * *j->cost);
+            known += count * *j->cost;
+            any_known = true;
+        } else {
+            s += ": cost unknown";
+            any_unknown = true;
+        }
+    }
+    total.reset();
+    if (!any_unknown) {
+        total = known;
+        return s + text::format("; total $%.2f", known);
+    }
+    if (!any_known) return s + "; total cost unknown";
+    return s + text::format("; total $%.2f plus the modules of unknown cost", known);
 }
 
 }  // namespace
@@ -123,20 +161,33 @@ std::vector<const Actuator*> allowed_actuators(const task::RobotSpec& spec,
 std::vector<const Actuator*> allowed_actuators(const std::vector<std::string>& names,
                                                const Catalog& catalog) {
     std::vector<const Actuator*> out;
+    const auto add = [&](const Actuator* a) {
+        if (std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
+    };
     if (names.empty()) {
-        for (const auto& a : catalog.actuators) out.push_back(&a);
+        for (const auto& a : catalog.actuators)
+            if (a.default_choice) add(&a);
+        if (out.empty())
+            for (const auto& a : catalog.actuators) add(&a);
     } else {
         for (std::size_t i = 0; i < names.size(); ++i) {
-            const Actuator* a = catalog.actuator(names[i]);
-            if (!a) {
-                std::string known;
-                for (const auto& c : catalog.actuators)
-                    known += (known.empty() ? "" : ", ") + c.name;
-                throw task::InputError(
-                    "robot.modules[" + std::to_string(i) + "]",
-                    "the module catalog has no \"" + names[i] + "\"; it has " + known);
+            if (const Actuator* a = catalog.actuator(names[i])) {
+                add(a);
+                continue;
             }
-            out.push_back(a);
+            const std::vector<const Actuator*> family = catalog.family(names[i]);
+            if (family.empty()) {
+                std::string families, models;
+                for (const auto& f : catalog.families())
+                    families += (families.empty() ? "" : ", ") + f;
+                for (const auto& c : catalog.actuators)
+                    models += (models.empty() ? "" : ", ") + c.name;
+                throw task::InputError("robot.modules[" + std::to_string(i) + "]",
+                                       "the module catalog has no \"" + names[i] +
+                                           "\"; its families are " + families + ", its models " +
+                                           models);
+            }
+            for (const Actuator* a : family) add(a);
         }
     }
     std::stable_sort(out.begin(), out.end(),
@@ -188,19 +239,27 @@ ModuleSelection choose_modules(int dof, const std::vector<const Actuator*>& allo
         if (!best->carries) out.overloaded_joint = k + 1;
     }
     for (const auto& j : out.joints) out.total_mass += j.mass;
+    out.cost = cost_line(out.joints, out.total_cost);
     if (out.overloaded_joint > 0) {
         out.message = overload_text(out.overloaded_joint, out.joints[out.overloaded_joint - 1]);
     } else {
-        std::string names;
+        std::string names, families;
+        std::vector<std::string> seen;
         double worst = 1.0;
         for (int k = 0; k < n; ++k) {
-            names += (k ? ", " : "") + out.joints[k].module;
-            worst = std::min(worst, out.joints[k].worst_share);
+            const JointChoice& j = out.joints[k];
+            names += (k ? ", " : "") + j.module;
+            if (!j.family.empty() && std::find(seen.begin(), seen.end(), j.family) == seen.end()) {
+                seen.push_back(j.family);
+                families += (families.empty() ? "" : ", ") + j.family;
+            }
+            worst = std::min(worst, j.worst_share);
         }
         out.message = text::format(
-            "modules %s (%.3f kg), every joint carried with at least "
-            "%.0f%% of a rating to spare",
-            names.c_str(), out.total_mass, 100.0 * worst);
+            "modules %s (%s%s%.3f kg), every joint carried with at least "
+            "%.0f%% of a rating to spare; %s",
+            names.c_str(), families.c_str(), families.empty() ? "" : "; ", out.total_mass,
+            100.0 * worst, out.cost.c_str());
     }
     return out;
 }

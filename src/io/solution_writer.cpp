@@ -62,11 +62,15 @@ nlohmann::json to_json(const hardware::ModuleSelection& m) {
                           {"continuous_torque_margin", j.continuous_margin},
                           {"speed_margin", j.speed_margin},
                           {"carries", j.carries}});
+        if (!j.family.empty()) joints.back()["family"] = j.family;
+        if (j.cost) joints.back()["cost"] = *j.cost;
     }
     nlohmann::json out = {{"joints", joints},
                           {"total_mass", m.total_mass},
                           {"overloaded_joint", nullptr},
-                          {"message", m.message}};
+                          {"message", m.message},
+                          {"cost", m.cost}};
+    if (m.total_cost) out["total_cost"] = *m.total_cost;
     if (m.overloaded_joint > 0) out["overloaded_joint"] = m.overloaded_joint;
     return out;
 }

@@ -1,7 +1,9 @@
 #include <modsynth/output/build_sheet.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <modsynth/geometry/vec.h>
 #include <modsynth/kinematics/kinematics.h>
@@ -129,21 +131,62 @@ std::string modules_section(const synth::Solution& solution) {
     s += "Lightest allowed module per joint that carries the motion: peak |torque| within its "
          "peak torque, RMS torque within its continuous torque, |speed| within its top speed. "
          "Margin: rating minus load.\n\n"
-         "| joint | module | mass (kg) | peak torque (N m) | at t (s) | peak margin (N m) | RMS "
-         "torque (N m) | continuous margin (N m) | top speed (rad/s) | speed margin (rad/s) "
-         "|\n|---|---|---|---|---|---|---|---|---|---|\n";
+         "| joint | module | family | cost (USD) | mass (kg) | peak torque (N m) | at t (s) | "
+         "peak margin (N m) | RMS torque (N m) | continuous margin (N m) | top speed (rad/s) | "
+         "speed margin (rad/s) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (std::size_t k = 0; k < m.joints.size(); ++k) {
         const auto& j = m.joints[k];
         s += "| " + std::to_string(k + 1) + " | " + text::markdown_literal(j.module) +
-             (j.carries ? "" : " **(overloaded)**") + " | " + text::format("%.3f", j.mass) + " | " +
-             text::format("%.3f", j.load.peak_torque) + " | " +
-             text::format("%.3f", j.load.peak_time) + " | " + text::format("%.3f", j.peak_margin) +
-             " | " + text::format("%.3f", j.load.rms_torque) + " | " +
-             text::format("%.3f", j.continuous_margin) + " | " +
+             (j.carries ? "" : " **(overloaded)**") + " | " + text::markdown_literal(j.family) +
+             " | " + (j.cost ? text::format("%.2f", *j.cost) : std::string("unknown")) + " | " +
+             text::format("%.3f", j.mass) + " | " + text::format("%.3f", j.load.peak_torque) +
+             " | " + text::format("%.3f", j.load.peak_time) + " | " +
+             text::format("%.3f", j.peak_margin) + " | " + text::format("%.3f", j.load.rms_torque) +
+             " | " + text::format("%.3f", j.continuous_margin) + " | " +
              text::format("%.3f", j.load.max_speed) + " | " + text::format("%.3f", j.speed_margin) +
              " |\n";
     }
-    return s + "\nModules: " + text::format("%.3f", m.total_mass) + " kg in all.\n\n";
+    // The parts bill: one row per model, in joint order.
+    struct Row {
+        const hardware::JointChoice* choice;
+        int count;
+    };
+    std::vector<Row> rows;
+    for (const auto& j : m.joints) {
+        const auto r = std::find_if(rows.begin(), rows.end(),
+                                    [&](const Row& x) { return x.choice->module == j.module; });
+        if (r == rows.end()) {
+            rows.push_back({&j, 1});
+        } else {
+            ++r->count;
+        }
+    }
+    s += "\nModules to order:\n\n| module | family | count | unit cost (USD) | cost (USD) |\n"
+         "|---|---|---|---|---|\n";
+    double known = 0.0;
+    bool unknown = false;
+    for (const Row& r : rows) {
+        const auto& c = r.choice->cost;
+        s += "| " + text::markdown_literal(r.choice->module) + " | " +
+             text::markdown_literal(r.choice->family) + " | " + std::to_string(r.count) + " | " +
+             (c ? text::format("%.2f", *c) : std::string("unknown")) + " | " +
+             (c ? text::format("%.2f", r.count * *c) : std::string("unknown")) + " |\n";
+        if (c) {
+            known += r.count * *c;
+        } else {
+            unknown = true;
+        }
+    }
+    std::string total;
+    if (!unknown) {
+        total = text::format("total cost $%.2f", known);
+    } else if (known > 0.0) {
+        total = text::format("total cost $%.2f plus the modules of unknown cost", known);
+    } else {
+        total = "total cost unknown";
+    }
+    return s + "\nModules: " + text::format("%.3f", m.total_mass) + " kg in all; " + total +
+           ".\n\n";
 }
 
 std::string build_sheet(const task::Task& task, const synth::Solution& solution,

@@ -11,6 +11,7 @@
 #include <modsynth/hardware/catalog.h>
 #include <modsynth/hardware/dh_dynamics.h>
 #include <modsynth/hardware/select_dh_modules.h>
+#include <modsynth/hardware/select_modules.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/spatial_task_io.h>
 #include <modsynth/task/input_error.h>
@@ -51,11 +52,13 @@ TEST_CASE("spatial module choice: the lightest module that carries each joint", 
             const hardware::Actuator* chosen = catalog.actuator(j.module);
             REQUIRE(chosen);
             CHECK(j.carries);
-            for (const auto& a : catalog.actuators) {
-                if (a.mass >= chosen->mass) continue;
-                const bool carries = a.peak_torque >= j.load.peak_torque &&
-                                     a.continuous_torque >= j.load.rms_torque &&
-                                     a.max_speed >= j.load.max_speed;
+            // No lighter allowed module (the default family's) would do.
+            for (const hardware::Actuator* a :
+                 hardware::allowed_actuators(p.task.robot.modules, catalog)) {
+                if (a->mass >= chosen->mass) continue;
+                const bool carries = a->peak_torque >= j.load.peak_torque &&
+                                     a->continuous_torque >= j.load.rms_torque &&
+                                     a->max_speed >= j.load.max_speed;
                 CHECK_FALSE(carries);
             }
         }
@@ -124,4 +127,24 @@ TEST_CASE("spatial timing caps and limits follow the task", "[hardware]") {
     CHECK(limits.velocity == std::vector<double>{1.0, 2.0, 3.0});
     CHECK(limits.acceleration == std::vector<double>{4.0, 4.0, 4.0});
     CHECK_THROWS_AS(control::joint_limits_for(t, 4), task::InputError);
+}
+
+TEST_CASE("spatial module choice runs across the families named and totals the cost",
+          "[hardware]") {
+    const Catalog catalog = hardware::load_default_catalog();
+    Planted p = planted("s3-0001");
+    p.task.robot.modules = {"feetech", "dynamixel-x"};
+    const auto sel =
+        hardware::select_modules(p.task, *p.solution.dh_robot, p.solution.samples, catalog);
+    REQUIRE(sel.checked);
+    double total = 0.0;
+    for (const auto& j : sel.joints) {
+        CHECK((j.family == "feetech" || j.family == "dynamixel-x"));
+        REQUIRE(j.cost);
+        total += *j.cost;
+    }
+    REQUIRE(sel.total_cost);
+    CHECK(*sel.total_cost == Approx(total));
+    CHECK(sel.cost.find("cost: ") == 0);
+    CHECK(sel.cost.find(" total $") != std::string::npos);
 }

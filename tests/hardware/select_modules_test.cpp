@@ -92,11 +92,11 @@ TEST_CASE("a heavy payload in an upright plane needs stronger modules inward", "
     CHECK(c.actuator(sel.joints[0].module)->peak_torque >= sel.joints[0].load.peak_torque);
     CHECK(c.actuator(sel.joints[0].module)->mass >= c.actuator(sel.joints[1].module)->mass);
     // No lighter allowed module would do at joint 1.
-    for (const auto& a : c.actuators) {
-        if (a.mass < sel.joints[0].mass) {
-            CHECK((a.peak_torque < sel.joints[0].load.peak_torque ||
-                   a.continuous_torque < sel.joints[0].load.rms_torque ||
-                   a.max_speed < sel.joints[0].load.max_speed));
+    for (const Actuator* a : allowed_actuators(task.robot, c)) {
+        if (a->mass < sel.joints[0].mass) {
+            CHECK((a->peak_torque < sel.joints[0].load.peak_torque ||
+                   a->continuous_torque < sel.joints[0].load.rms_torque ||
+                   a->max_speed < sel.joints[0].load.max_speed));
         }
     }
 }
@@ -160,4 +160,92 @@ TEST_CASE("printed links' masses enter the choice in place of the tubes'", "[har
     CHECK(heavy.joints[0].load.peak_torque > tubes.joints[0].load.peak_torque);
     CHECK(c.actuator(heavy.joints[0].module)->peak_torque >
           c.actuator(tubes.joints[0].module)->peak_torque);
+}
+
+TEST_CASE("robot.modules names models or whole families", "[hardware]") {
+    const Catalog c = shipped();
+    const auto names = [&](const std::vector<std::string>& modules) {
+        std::vector<std::string> out;
+        for (const Actuator* a : allowed_actuators(modules, c)) out.push_back(a->name);
+        return out;
+    };
+    // A family brings all its models, lightest first.
+    const auto dynamixels = names({"dynamixel-x"});
+    REQUIRE(dynamixels.size() == 7);
+    CHECK(dynamixels.front() == "XL330-M288");
+    CHECK(dynamixels.back() == "XM540-W270");
+    // A model named beside its family is allowed once.
+    CHECK(names({"feetech", "STS3215"}) ==
+          std::vector<std::string>{"SCS0009", "STS3215", "STS3250"});
+    CHECK(names({"STS3215", "X5-1"}) == std::vector<std::string>{"STS3215", "X5-1"});
+    // Without robot.modules: the default family, the paper's HEBI modules.
+    const auto defaults = names({});
+    CHECK(defaults.size() == 6);
+    CHECK(defaults.front() == "X5-1");
+    try {
+        allowed_actuators(std::vector<std::string>{"X5-1", "dynamixel"}, c);
+        FAIL("an unknown name was allowed");
+    } catch (const modsynth::task::InputError& e) {
+        const std::string what = e.what();
+        CHECK(what.find("robot.modules[1]: the module catalog has no \"dynamixel\"; its "
+                        "families are dynamixel-x, feetech, hebi-x") == 0);
+        CHECK(what.find("XL330-M288") != std::string::npos);
+    }
+}
+
+TEST_CASE("the choice runs across families and totals the cost", "[hardware]") {
+    const Catalog c = shipped();
+    modsynth::task::Task task;
+    auto robot = arm();
+    robot.link_lengths = {0.20, 0.15};
+    // A light, slow swing: an 18 g XL330 carries what the lightest HEBI
+    // module (315 g) would.
+    task.robot.modules = {"hebi-x", "dynamixel-x"};
+    const auto sel = select_modules(task, robot, swing(0.3), c);
+    REQUIRE(sel.carried());
+    CHECK(sel.joints[1].module == "XL330-M288");
+    CHECK(sel.joints[1].family == "dynamixel-x");
+    REQUIRE(sel.joints[1].cost);
+    CHECK(*sel.joints[1].cost == Approx(23.90));
+    for (const auto& j : sel.joints) CHECK(j.family == "dynamixel-x");
+    REQUIRE(sel.total_cost);
+    CHECK(*sel.total_cost == Approx(*sel.joints[0].cost + *sel.joints[1].cost));
+    CHECK(sel.message.find("(dynamixel-x; ") != std::string::npos);
+    CHECK(sel.message.find("; cost: ") != std::string::npos);
+    CHECK(sel.cost.find("cost: ") == 0);
+    CHECK(sel.cost.find("XL330-M288 = $") != std::string::npos);
+    // Modules without a price are said to be so, and leave no total.
+    task.robot.modules = {"X5-1"};
+    const auto hebi = select_modules(task, robot, swing(0.3), c);
+    CHECK(hebi.cost == "cost: 2 x X5-1: cost unknown; total cost unknown");
+    CHECK_FALSE(hebi.total_cost);
+}
+
+TEST_CASE("the cost line groups the models and totals them", "[hardware]") {
+    const Catalog c = shipped();
+    const Actuator* xm = c.actuator("XM430-W350");
+    const Actuator* x5 = c.actuator("X5-1");
+    // choose_modules with loads every module carries: each joint gets the
+    // lightest allowed, so name one model per call.
+    const auto zero = [](const std::vector<const Actuator*>& m) {
+        return std::vector<JointLoad>(m.size());
+    };
+    const auto two = choose_modules(2, {xm}, zero);
+    CHECK(two.cost == "cost: 2 x XM430-W350 = $579.80; total $579.80");
+    REQUIRE(two.total_cost);
+    CHECK(*two.total_cost == Approx(579.80));
+    // Joint 1 needs 1 N m, more than an XL330 gives: an X5-1 it is, at no
+    // known cost; joint 2 needs nothing.
+    const Actuator* xl = c.actuator("XL330-M288");
+    const auto mixed = choose_modules(2, {xl, x5}, [](const std::vector<const Actuator*>& m) {
+        std::vector<JointLoad> loads(m.size());
+        loads[0].peak_torque = loads[0].rms_torque = 1.0;
+        return loads;
+    });
+    REQUIRE(mixed.carried());
+    CHECK(mixed.cost ==
+          "cost: 1 x X5-1: cost unknown, 1 x XL330-M288 = $23.90; total $23.90 plus the modules "
+          "of unknown cost");
+    CHECK_FALSE(mixed.total_cost);
+    CHECK(mixed.message.find("modules X5-1, XL330-M288 (hebi-x, dynamixel-x; ") == 0);
 }

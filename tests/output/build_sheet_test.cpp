@@ -178,19 +178,31 @@ TEST_CASE("the build sheet lists the chosen modules and warns of an overloaded j
     sel.joints[0].module = "X8-16";
     sel.joints[0].mass = 0.5;
     sel.joints[0].peak_margin = -3.25;
-    sel.joints[1].module = "X5-4";
+    sel.joints[0].family = "hebi-x";
+    sel.joints[1].module = "XM430-W350";
+    sel.joints[1].family = "dynamixel-x";
+    sel.joints[1].cost = 289.90;
     sel.joints[1].mass = 0.335;
     sel.joints[1].peak_margin = 1.5;
     sel.joints[1].carries = true;
     sel.total_mass = 0.835;
+    sel.cost =
+        "cost: 1 x X8-16: cost unknown, 1 x XM430-W350 = $289.90; total $289.90 plus the "
+        "modules of unknown cost";
     sel.overloaded_joint = 1;
     sel.message = "joint 1 is overloaded: no allowed module carries it";
     s.modules = sel;
     const std::string sheet = modsynth::output::build_sheet(task, s);
     CHECK(sheet.find("## Modules") != std::string::npos);
     CHECK(sheet.find("**Warning:** joint 1 is overloaded") != std::string::npos);
-    CHECK(sheet.find("| 1 | X8\\-16 **(overloaded)** | 0.500 |") != std::string::npos);
+    // Each module with its family and cost; the parts bill under the table.
+    CHECK(sheet.find("| 1 | X8\\-16 **(overloaded)** | hebi\\-x | unknown | 0.500 |") !=
+          std::string::npos);
     CHECK(sheet.find("| -3.250 |") != std::string::npos);
-    CHECK(sheet.find("| 2 | X5\\-4 | 0.335 |") != std::string::npos);
-    CHECK(sheet.find("0.835 kg in all") != std::string::npos);
+    CHECK(sheet.find("| 2 | XM430\\-W350 | dynamixel\\-x | 289.90 | 0.335 |") != std::string::npos);
+    CHECK(sheet.find("| X8\\-16 | hebi\\-x | 1 | unknown | unknown |") != std::string::npos);
+    CHECK(sheet.find("| XM430\\-W350 | dynamixel\\-x | 1 | 289.90 | 289.90 |") !=
+          std::string::npos);
+    CHECK(sheet.find("0.835 kg in all; total cost $289.90 plus the modules of unknown cost.") !=
+          std::string::npos);
 }

@@ -3,9 +3,12 @@
 // source tree, installed with the program): actuator modules with their
 // mass and ratings, tubes by mass per metre, adapters by mass. formats.md
 // ("Module catalog") describes the files.
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <modsynth/hardware/mounting.h>
 
 namespace modsynth::hardware {
 
@@ -17,11 +20,23 @@ struct Dimensions {
 
 struct Actuator {
     std::string name;                ///< "X8-9"
+    std::string family;              ///< the file's family, e.g. "hebi-x", "dynamixel-x"
     double mass = 0.0;               ///< kg
     double continuous_torque = 0.0;  ///< N m, what it gives indefinitely (compared with RMS)
     double peak_torque = 0.0;        ///< N m, what it gives for moments
     double max_speed = 0.0;          ///< rad/s at the output
     Dimensions dimensions;
+    /// Optional figures (formats.md "Module catalog"): the maker's stall
+    /// torque (N m) and no-load speed (rad/s) the ratings above are derived
+    /// from, the supply voltage they hold at (V), the list price (USD).
+    std::optional<double> stall_torque;
+    std::optional<double> no_load_speed;
+    std::optional<double> voltage;
+    std::optional<double> cost;
+    std::optional<Mounting> mounting;
+    /// From a file marked "default": a task that names no modules chooses
+    /// among these (among every actuator when no file is marked).
+    bool default_choice = false;
 };
 
 struct Tube {
@@ -42,6 +57,11 @@ struct Catalog {
 
     /// nullptr when no actuator has that name (names compare exactly).
     const Actuator* actuator(const std::string& name) const;
+    /// The actuators of a family, in catalog order (empty when there is no
+    /// such family).
+    std::vector<const Actuator*> family(const std::string& name) const;
+    /// The actuator families, in name order.
+    std::vector<std::string> families() const;
     /// The tube whose diameter is closest to `diameter`; throws
     /// std::runtime_error when the catalog has none.
     const Tube& tube_closest_to(double diameter) const;
@@ -64,8 +84,9 @@ public:
 void parse_catalog_file(const std::string& text, const std::string& file, Catalog& catalog);
 
 /// Reads every *.json file of a folder, in name order. Throws CatalogError
-/// when the folder cannot be read, a file is invalid, a name appears twice,
-/// or the folder holds no actuator.
+/// when the folder cannot be read, a file is invalid, a name appears twice
+/// (a family's name counts: it must not be a part's), or the folder holds
+/// no actuator.
 Catalog load_catalog(const std::string& folder);
 
 /// Where the catalog shipped with the program is: share/modsynth/catalog

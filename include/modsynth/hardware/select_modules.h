@@ -28,11 +28,13 @@ std::vector<JointLoad> joint_loads(
     int dof, const std::vector<control::Sample>& samples,
     const std::function<std::vector<double>(const control::Sample&)>& torques);
 
-/// The allowed actuators of a task (robot.modules, or every catalog
-/// actuator), lightest first. Throws task::InputError naming
-/// robot.modules[i] for a name the catalog does not have.
+/// The allowed actuators of a task, lightest first: those robot.modules
+/// names, each a model or a whole family ("dynamixel-x"), or without it
+/// those of the catalog's default families (every actuator when no file is
+/// marked "default"). Throws task::InputError naming robot.modules[i] for a
+/// name that is neither, listing the families and models.
 std::vector<const Actuator*> allowed_actuators(const task::RobotSpec& spec, const Catalog& catalog);
-/// The same from the names of robot.modules (empty: every actuator).
+/// The same from the names of robot.modules (empty: the default families).
 std::vector<const Actuator*> allowed_actuators(const std::vector<std::string>& names,
                                                const Catalog& catalog);
 

@@ -2,6 +2,7 @@
 // Which actuator module drives each joint, and how much room it has: what
 // selection (hardware/select_modules.h) answers for a solved motion, as
 // plain values for the console, the build sheet and the URDF.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,9 @@ struct JointLoad {
 /// negative when the module cannot carry it).
 struct JointChoice {
     std::string module;
-    double mass = 0.0;  ///< kg
+    std::string family;          ///< the module's catalog family ("dynamixel-x")
+    std::optional<double> cost;  ///< USD list price; none when the catalog gives none
+    double mass = 0.0;           ///< kg
     JointLoad load;
     double peak_torque_limit = 0.0;        ///< N m, the module's
     double continuous_torque_limit = 0.0;  ///< N m
@@ -46,7 +49,12 @@ struct ModuleSelection {
     /// every joint is carried.
     int overloaded_joint = 0;
     double total_mass = 0.0;  ///< kg of the chosen modules
-    std::string message;      ///< one line: the choice, or what overloads
+    /// USD of the chosen modules; none when a module's cost is unknown.
+    std::optional<double> total_cost;
+    /// The parts bill in one line: "cost: 2 x XM430-W350 = $579.80; total
+    /// $579.80" ("N x MODEL: cost unknown" for a module without a cost).
+    std::string cost;
+    std::string message;  ///< one line: the choice, or what overloads
 
     bool carried() const { return checked && overloaded_joint == 0; }
 };
