@@ -30,10 +30,24 @@ ModuleMount module_mount(const hardware::Actuator& actuator, const hardware::Dim
     out.name = actuator.name;
     const hardware::Dimensions& d = actuator.dimensions;
     out.body = d.length > 0.0 && d.width > 0.0 && d.height > 0.0 ? d : fallback;
-    // An actuator's own pattern (the catalog's "mounting" key) goes here
-    // when the catalog carries one.
-    out.mounting = provisional_mounting(out.body);
-    out.provisional = true;
+    if (!actuator.mounting) {
+        out.mounting = provisional_mounting(out.body);
+        out.provisional = true;
+        return out;
+    }
+    // The catalog measures from the output axis, x away from the housing's
+    // nearer end; the printed parts from the housing's centre, x towards
+    // that end.
+    const hardware::Mounting& c = *actuator.mounting;
+    Mounting& m = out.mounting;
+    m.horn_bolt_circle = c.horn_bolt_circle;
+    m.horn_holes = c.horn_holes;
+    m.horn_hole_diameter = c.horn_hole_diameter;
+    m.horn_diameter = c.horn_diameter;
+    m.body_hole_diameter = c.body_hole_diameter;
+    m.output_offset = out.body.length / 2.0 - c.output_offset;
+    for (const auto& [x, y] : c.body_holes) m.body_holes.emplace_back(m.output_offset - x, y);
+    out.provisional = false;
     return out;
 }
 

@@ -54,6 +54,30 @@ TEST_CASE("a module without dimensions takes the task's housing", "[parts]") {
     CHECK(module_mount(x5(), {0.2, 0.1, 0.05}).body.length == 0.110);
 }
 
+TEST_CASE("a catalog pattern is used in the printed parts' frame", "[parts]") {
+    Actuator a = x5();
+    modsynth::hardware::Mounting c;
+    c.horn_bolt_circle = 0.016;
+    c.horn_holes = 8;
+    c.horn_hole_diameter = 0.0022;
+    c.horn_diameter = 0.020;
+    c.body_hole_diameter = 0.0025;
+    c.output_offset = 0.0135;             // axis 13.5 mm from the housing's nearer end
+    c.body_holes = {{0.070, 0.02}, {0.0, -0.02}};  // from the axis, away from that end
+    a.mounting = c;
+    const ModuleMount m = module_mount(a, {});
+    CHECK_FALSE(m.provisional);
+    CHECK(m.mounting.horn_holes == 8);
+    CHECK(m.mounting.horn_bolt_circle == 0.016);
+    // From the housing's centre towards its nearer end: 55 - 13.5 mm.
+    CHECK(m.mounting.output_offset == Approx(0.0415));
+    REQUIRE(m.mounting.body_holes.size() == 2);
+    CHECK(m.mounting.body_holes[0].x() == Approx(0.0415 - 0.070));
+    CHECK(m.mounting.body_holes[0].y() == Approx(0.02));
+    // A hole on the axis stays on it.
+    CHECK(m.mounting.body_holes[1].x() == Approx(m.mounting.output_offset));
+}
+
 TEST_CASE("the beam carries the driving module's peak torque at the allowable stress", "[parts]") {
     const PrintSettings settings;
     CHECK(settings.allowable_stress() == Approx(40e6 / 3.0));

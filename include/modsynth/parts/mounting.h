@@ -1,8 +1,9 @@
 #pragma once
 // How a module is bolted to a printed part: the bolt pattern of its output
 // (the horn) and of its body. The fields mirror the catalog's optional
-// "mounting" key (formats.md, "Module catalog"); until an actuator carries
-// one, provisional_mounting derives a generic pattern from its dimensions.
+// "mounting" key (formats.md, "Module catalog") in the printed parts' frame;
+// for an actuator without one, provisional_mounting derives a generic
+// pattern from its dimensions.
 #include <string>
 #include <vector>
 
@@ -43,7 +44,9 @@ struct ModuleMount {
 Mounting provisional_mounting(const hardware::Dimensions& body);
 
 /// The module of `actuator`, its housing from its dimensions, or from
-/// `fallback` (the task's module size) where the catalog gives none.
+/// `fallback` (the task's module size) where the catalog gives none; its
+/// pattern the catalog's "mounting" when the entry has one (provisional
+/// false), else provisional_mounting's.
 ModuleMount module_mount(const hardware::Actuator& actuator, const hardware::Dimensions& fallback);
 
 }  // namespace modsynth::parts
