@@ -31,6 +31,7 @@
 #include <modsynth/synth/blockers.h>
 #include <modsynth/synth/design_choice.h>
 #include <modsynth/synth/initial_guess.h>
+#include <modsynth/synth/proximal_plan.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 #include <modsynth/verify/verifier.h>
@@ -168,6 +169,7 @@ private:
     double shortest_possible(int base_region, int dof);
     std::optional<Solution> refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
                                    SweptAttempt attempt);
+    std::optional<Solution> planned(kinematics::Robot& start);
     Verdict judge(const kinematics::Robot& robot);
     nlp::ArmProblem learn(nlp::ArmProblem problem, const Verdict& verdict,
                           const kinematics::Robot& robot) const;
@@ -582,13 +584,43 @@ std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int 
             text::format("  start: base (%.3f, %.3f), total length %.3f m", g.robot.base.x(),
                          g.robot.base.y(), g.robot.total_length()) +
                 text::format(", margin %.4f m", g.margin));
+        kinematics::Robot start = g.robot;
+        if (start.has_proximal_link()) {
+            if (auto s = planned(start)) return s;
+        }
         for (std::size_t i = 0; i < attempts.size(); ++i) {
-            if (auto s = refine(skeleton, g.robot, attempts[i])) return s;
+            if (auto s = refine(skeleton, start, attempts[i])) return s;
             failed_.insert(refinement_key(skeleton, g.robot, attempts[i]));
             if (i + 1 < attempts.size()) ++stats_.fallbacks;
         }
     }
     return std::nullopt;
+}
+
+// Three joints: with the start's design fixed, where the proximal link
+// stands along the path is a shortest path over (primitive, angle)
+// (proximal_plan.h), linear in the primitives. A plan the verifier
+// certifies is the answer; otherwise its angles start the refinement, which
+// then moves the design too.
+std::optional<Solution> Search::planned(kinematics::Robot& start) {
+    const run::Stopwatch t0;
+    const ProximalPlan plan = plan_proximal_angles(task_, start, opt_.proximal, deadline_);
+    stats_.refine_seconds += t0.seconds();
+    if (!plan.found) {
+        say(run::Stage::Search, text::format("    proximal plan: none (%s), %.3f s",
+                                             plan.message.c_str(), t0.seconds()));
+        return std::nullopt;
+    }
+    say(run::Stage::Search,
+        text::format("    proximal plan: %d move(s), margin %.4f m, %.3f s", plan.moves,
+                     plan.margin, t0.seconds()));
+    start.proximal_angles = plan.angles;
+    Verdict verdict = judge(start);
+    if (!verdict.solution) return std::nullopt;
+    stats_.certified_by = "proximal plan";
+    if (stats_.first_certified_by.empty()) stats_.first_certified_by = stats_.certified_by;
+    certified_seconds_ = t0.seconds();
+    return std::move(verdict.solution);
 }
 
 std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
@@ -774,6 +806,7 @@ bool SynthesisOptions::IsValid(std::string* error) const {
         .nested("front", front)
         .nested("verify", verify)
         .nested("guesses", guesses)
+        .nested("proximal", proximal)
         .nested("branch_and_bound", branch_and_bound)
         .within("branch_and_bound_share", branch_and_bound_share, 0.0, 1.0)
         .greater("point_spacing", point_spacing, 0.0)
