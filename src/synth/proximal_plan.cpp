@@ -80,6 +80,7 @@ bool ProximalPlanOptions::IsValid(std::string* error) const {
         .at_least("margin", margin, 0.0)
         .at_least("wanted_clearance", wanted_clearance, 0.0)
         .at_least("clearance_weight", clearance_weight, 0.0)
+        .at_least("guesses", guesses, 0)
         .ok();
 }
 

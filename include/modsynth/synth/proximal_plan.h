@@ -34,6 +34,11 @@ struct ProximalPlanOptions {
     /// motion.
     double wanted_clearance = 0.01;
     double clearance_weight = 10.0;
+    /// Initial guesses (designs) a skeleton's plans are tried for before any
+    /// of them is refined: a plan costs tens of milliseconds where a
+    /// refinement of a long path costs seconds, and the guesses are scored
+    /// on a coarser model of the motion than the plan.
+    int guesses = 8;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;
