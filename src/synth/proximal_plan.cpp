@@ -34,8 +34,8 @@ double pose_margin(const task::Task& task, const kinematics::Robot& robot, const
     if (!ik) return 0.0;
     const kinematics::ClearanceRule rule{robot.link_diameter};
     const Vec2 e = origin + a * geometry::unit(ik->phi1);
-    worst = std::min(worst, std::abs(geometry::cross(e - origin, p - origin)) / a -
-                                rule.self_distance());
+    worst = std::min(worst,
+                     std::abs(geometry::cross(e - origin, p - origin)) / a - rule.self_distance());
     worst = std::min(worst, rule.self_margin(p, robot.base, origin));
     for (const auto& ob : task.obstacles)
         worst = std::min({worst, rule.link_margin(ob, robot.base, origin),
@@ -164,10 +164,10 @@ ProximalPlan plan_proximal_angles(const task::Task& task, const kinematics::Robo
         }
         end.swap(last);
         if (!any)
-            return blocked(j, any_trace ? "no transition into " + task::part_name(task, j) +
-                                              " keeps the links clear"
-                                        : "no proximal angle traces " + task::part_name(task, j) +
-                                              " clear");
+            return blocked(
+                j, any_trace
+                       ? "no transition into " + task::part_name(task, j) + " keeps the links clear"
+                       : "no proximal angle traces " + task::part_name(task, j) + " clear");
     }
     int k = static_cast<int>(std::min_element(best.begin(), best.end()) - best.begin());
     plan.angles.assign(m, 0.0);
@@ -186,9 +186,10 @@ ProximalPlan plan_proximal_angles(const task::Task& task, const kinematics::Robo
             int d = std::abs(along(prev) - along(k));
             if (cut[j] < 0) d = std::min(d, A - d);
             if (2 * d >= A)
-                return blocked(j, "the proximal link would turn half a turn or more in the "
-                                  "transition into " +
-                                      task::part_name(task, j));
+                return blocked(j,
+                               "the proximal link would turn half a turn or more in the "
+                               "transition into " +
+                                   task::part_name(task, j));
         }
         k = prev;
     }

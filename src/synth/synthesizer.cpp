@@ -621,11 +621,10 @@ std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int 
         if (remaining() <= 0.0) return std::nullopt;
         // A plan is a function of the design: one planned before is not again.
         if (!planned_.insert(design_key(guesses[i].robot)).second) continue;
-        say(run::Stage::Search,
-            text::format("  design: base (%.3f, %.3f), total length %.3f m",
-                         guesses[i].robot.base.x(), guesses[i].robot.base.y(),
-                         guesses[i].robot.total_length()) +
-                text::format(", margin %.4f m", guesses[i].margin));
+        say(run::Stage::Search, text::format("  design: base (%.3f, %.3f), total length %.3f m",
+                                             guesses[i].robot.base.x(), guesses[i].robot.base.y(),
+                                             guesses[i].robot.total_length()) +
+                                    text::format(", margin %.4f m", guesses[i].margin));
         if (auto s = planned(starts[i])) {
             certified_seconds_ = started.seconds();
             return s;
@@ -667,9 +666,8 @@ std::optional<Solution> Search::planned(kinematics::Robot& start) {
                                              plan.message.c_str(), t0.seconds()));
         return std::nullopt;
     }
-    say(run::Stage::Search,
-        text::format("    proximal plan: %d move(s), margin %.4f m, %.3f s", plan.moves,
-                     plan.margin, t0.seconds()));
+    say(run::Stage::Search, text::format("    proximal plan: %d move(s), margin %.4f m, %.3f s",
+                                         plan.moves, plan.margin, t0.seconds()));
     start.proximal_angles = plan.angles;
     Verdict verdict = judge(start);
     if (!verdict.solution) return std::nullopt;

@@ -21,8 +21,8 @@ task::Task loop_round_post(int n) {
     const Vec2 c(0.6, 0.0);
     for (int k = 0; k < n; ++k) {
         const double a = geometry::kTau * k / n, b = geometry::kTau * (k + 1) / n;
-        t.trajectory.push_back(geometry::make_line(c + 0.3 * geometry::unit(a),
-                                                   c + 0.3 * geometry::unit(b)));
+        t.trajectory.push_back(
+            geometry::make_line(c + 0.3 * geometry::unit(a), c + 0.3 * geometry::unit(b)));
     }
     t.obstacles.push_back({c, 0.05});
     t.base_regions.push_back({Vec2(-0.01, -0.01), Vec2(0.01, 0.01)});
