@@ -154,6 +154,7 @@ bool InitialGuessOptions::IsValid(std::string* error) const {
         .at_least("max_proximal_points", max_proximal_points, 4)
         .at_least("hopeless_margin", hopeless_margin, 0.0)
         .at_least("distinct_distance", distinct_distance, 0.0)
+        .at_least("coarse_primitives", coarse_primitives, 1)
         .ok();
 }
 
@@ -254,6 +255,34 @@ std::vector<ScoredRobot> choose_candidates(std::vector<ScoredRobot> all, int cou
     return all;
 }
 
+// The path as chords through every k-th end of each stroke's primitives,
+// at most `most` a stroke (the stroke's own end always included); `chord`
+// gets the chord each primitive of `task` starts on.
+task::Task coarse_path(const task::Task& task, int most, std::vector<int>& chord) {
+    task::Task coarse = task;
+    coarse.trajectory.clear();
+    coarse.stroke_starts.clear();
+    chord.assign(task.trajectory.size(), 0);
+    for (int s = 0; s < task::stroke_count(task); ++s) {
+        const int first = task::stroke_first(task, s), last = task::stroke_last(task, s);
+        const int n = last - first + 1;
+        const int k = (n + most - 1) / most;
+        if (task::has_strokes(task))
+            coarse.stroke_starts.push_back(static_cast<int>(coarse.trajectory.size()));
+        for (int i = 0; i < n; i += k) {
+            const int to = std::min(n, i + k) - 1;
+            for (int j = i; j <= to; ++j)
+                chord[first + j] = static_cast<int>(coarse.trajectory.size());
+            const Vec2 a = geometry::point_at(task.trajectory[first + i], 0.0);
+            const Vec2 b = task.trajectory[first + to].end;
+            // A closed primitive (a circle) stays itself: its chord is a point.
+            coarse.trajectory.push_back((b - a).norm() > 1e-9 ? geometry::make_line(a, b)
+                                                              : task.trajectory[first + i]);
+        }
+    }
+    return coarse;
+}
+
 std::vector<ScoredRobot> three_link_guesses(const task::Task& task, const smt::Skeleton& skeleton,
                                             int count, unsigned seed, run::Deadline deadline,
                                             const InitialGuessOptions& options) {
@@ -325,8 +354,23 @@ std::vector<ScoredRobot> initial_guesses(const task::Task& task, const smt::Skel
                                          int count, unsigned seed, run::Deadline deadline,
                                          const InitialGuessOptions& options) {
     text::require_valid(options);
-    if (kinematics::has_proximal_link(skeleton.dof))
-        return three_link_guesses(task, skeleton, count, seed, deadline, options);
+    if (kinematics::has_proximal_link(skeleton.dof)) {
+        bool long_stroke = false;
+        for (int s = 0; s < task::stroke_count(task); ++s)
+            long_stroke = long_stroke || task::stroke_last(task, s) - task::stroke_first(task, s) >=
+                                             options.coarse_primitives;
+        if (!long_stroke) return three_link_guesses(task, skeleton, count, seed, deadline, options);
+        std::vector<int> chord;
+        const task::Task coarse = coarse_path(task, options.coarse_primitives, chord);
+        auto guesses = three_link_guesses(coarse, skeleton, count, seed, deadline, options);
+        for (ScoredRobot& g : guesses) {
+            std::vector<double> angles(task.trajectory.size());
+            for (std::size_t j = 0; j < angles.size(); ++j)
+                angles[j] = g.robot.proximal_angles.at(chord[j]);
+            g.robot.proximal_angles = std::move(angles);
+        }
+        return guesses;
+    }
     const auto pts = path_points(task, options.scoring_spacing, options);
     const double lo = task.robot.min_link_length, hi = task.robot.max_link_length;
     Vec2 bmin, bmax;

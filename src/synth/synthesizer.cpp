@@ -31,6 +31,8 @@
 #include <modsynth/synth/blockers.h>
 #include <modsynth/synth/design_choice.h>
 #include <modsynth/synth/initial_guess.h>
+#include <modsynth/synth/proximal_plan.h>
+#include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 #include <modsynth/verify/verifier.h>
@@ -111,6 +113,10 @@ void add_critical_points(const task::Task& task, const kinematics::Robot& robot,
     }
 }
 
+/// How the statistics name a robot certified with its planned proximal
+/// angles, unrefined.
+constexpr const char* kPlanned = "proximal plan";
+
 /// What planning and certifying one candidate robot came to: a certified
 /// answer, or what the next refinement must take in (counterexample-guided).
 struct Verdict {
@@ -132,6 +138,13 @@ public:
           deadline_(run::Deadline::in(std::max(0.0, options.time_limit))),
           motion_(motion_options_for(task, options)) {
         motion_.deadline = deadline_;
+        // Where refinements of three joints fail or crawl: a stroke longer
+        // than the guesses score whole, or a loop round an obstacle, round
+        // which link 1 must be carried from one transition to the next.
+        for (int s = 0; s < task::stroke_count(task) && !plan_first_; ++s)
+            plan_first_ = task::stroke_last(task, s) - task::stroke_first(task, s) >=
+                          options.guesses.coarse_primitives;
+        plan_first_ = plan_first_ || prove::loop_around_obstacle(task).has_value();
     }
 
     Solution run();
@@ -162,12 +175,14 @@ private:
     }
     // Each step takes values and gives values: skeleton -> refined robot ->
     // verdict on its motion -> (certified solution | the next problem).
-    std::optional<Solution> try_skeleton(const smt::Skeleton& skeleton, int guesses, unsigned seed);
+    std::optional<Solution> try_skeleton(const smt::Skeleton& skeleton, int guesses, unsigned seed,
+                                         bool refine_too = true);
     std::optional<Solution> retry(const std::vector<smt::Skeleton>& skeletons);
     Solution shorten(const smt::Skeleton& found, Solution first);
     double shortest_possible(int base_region, int dof);
     std::optional<Solution> refine(const smt::Skeleton& skeleton, const kinematics::Robot& start,
                                    SweptAttempt attempt);
+    std::optional<Solution> planned(kinematics::Robot& start);
     Verdict judge(const kinematics::Robot& robot);
     nlp::ArmProblem learn(nlp::ArmProblem problem, const Verdict& verdict,
                           const kinematics::Robot& robot) const;
@@ -183,6 +198,13 @@ private:
     /// robot: a refinement is a function of these, so it is never repeated
     /// (the shortening pass and the retries would otherwise redo them).
     std::set<std::vector<double>> failed_;
+    /// Designs whose proximal angles were planned (three joints).
+    std::set<std::vector<double>> planned_;
+    /// Three joints: each guess's proximal angles are planned along the
+    /// path, and certified as they are, before any refinement
+    /// (proximal_plan.h). Elsewhere the refinement alone, as it finds
+    /// shorter links.
+    bool plan_first_ = false;
     std::string stage_ = "before the front stage";  ///< the last stage said, for an unknown answer
     /// Seconds the refinement of the last certified robot took, all rounds.
     double certified_seconds_ = 0.0;
@@ -515,7 +537,10 @@ Solution Search::shorten(const smt::Skeleton& found, Solution first) {
             say(run::Stage::Shortening,
                 text::format("%d joints: shorter robot with elbow %+d, base region %d?", found.dof,
                              elbow, region));
-            auto candidate = try_skeleton(variant, opt_.guesses_per_variant, opt_.seed);
+            // A robot the plan found alone is compared with the plans of the
+            // variants: a refinement of a long path costs many plans.
+            auto candidate = try_skeleton(variant, opt_.guesses_per_variant, opt_.seed,
+                                          stats_.first_certified_by != kPlanned);
             if (!candidate) continue;
             const double length = candidate->robot.total_length();
             if (length < shortest - 1e-6)
@@ -552,6 +577,13 @@ double Search::shortest_possible(int base_region, int dof) {
     return std::max(it->second, dof * task_.robot.min_link_length);
 }
 
+// The design a proximal plan is a function of.
+std::vector<double> design_key(const kinematics::Robot& robot) {
+    std::vector<double> key{static_cast<double>(robot.elbow), robot.base.x(), robot.base.y()};
+    key.insert(key.end(), robot.link_lengths.begin(), robot.link_lengths.end());
+    return key;
+}
+
 // What a refinement is a function of (the time left aside): the skeleton's
 // discrete choices, the swept-volume model and the start robot.
 std::vector<double> refinement_key(const smt::Skeleton& skeleton, const kinematics::Robot& start,
@@ -569,9 +601,38 @@ std::vector<double> refinement_key(const smt::Skeleton& skeleton, const kinemati
 }
 
 std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int count,
-                                             unsigned seed) {
-    const auto guesses = initial_guesses(task_, skeleton, count, seed, deadline_, opt_.guesses);
-    for (const auto& g : guesses) {
+                                             unsigned seed, bool refine_too) {
+    const run::Stopwatch started;
+    // Three joints: the plans of several guesses come before any refinement,
+    // which costs far more than a plan on a long path. Without refinements
+    // (a variant of a robot its plan found) the guesses get what the robot
+    // found took, times shorten_reserve: scored whole where few are clear,
+    // they took seconds on a 100-segment loop.
+    const bool plan = plan_first_ && kinematics::has_proximal_link(skeleton.dof);
+    const run::Deadline guessing =
+        refine_too ? deadline_
+                   : deadline_.within(opt_.shorten_reserve * std::max(certified_seconds_, 0.1));
+    const auto guesses = initial_guesses(
+        task_, skeleton, plan && refine_too ? std::max(count, opt_.proximal.guesses) : count, seed,
+        guessing, opt_.guesses);
+    std::vector<kinematics::Robot> starts;
+    for (const auto& g : guesses) starts.push_back(g.robot);
+    for (std::size_t i = 0; plan && i < guesses.size(); ++i) {
+        if (remaining() <= 0.0) return std::nullopt;
+        // A plan is a function of the design: one planned before is not again.
+        if (!planned_.insert(design_key(guesses[i].robot)).second) continue;
+        say(run::Stage::Search, text::format("  design: base (%.3f, %.3f), total length %.3f m",
+                                             guesses[i].robot.base.x(), guesses[i].robot.base.y(),
+                                             guesses[i].robot.total_length()) +
+                                    text::format(", margin %.4f m", guesses[i].margin));
+        if (auto s = planned(starts[i])) {
+            certified_seconds_ = started.seconds();
+            return s;
+        }
+    }
+    if (!refine_too) return std::nullopt;
+    for (std::size_t n = 0; n < guesses.size() && static_cast<int>(n) < count; ++n) {
+        const ScoredRobot& g = guesses[n];
         if (remaining() <= 0.0) return std::nullopt;
         auto attempts = swept_attempts(opt_.swept, task_, skeleton, g.robot);
         std::erase_if(attempts, [&](const SweptAttempt& a) {
@@ -583,12 +644,37 @@ std::optional<Solution> Search::try_skeleton(const smt::Skeleton& skeleton, int 
                          g.robot.base.y(), g.robot.total_length()) +
                 text::format(", margin %.4f m", g.margin));
         for (std::size_t i = 0; i < attempts.size(); ++i) {
-            if (auto s = refine(skeleton, g.robot, attempts[i])) return s;
+            if (auto s = refine(skeleton, starts[n], attempts[i])) return s;
             failed_.insert(refinement_key(skeleton, g.robot, attempts[i]));
             if (i + 1 < attempts.size()) ++stats_.fallbacks;
         }
     }
     return std::nullopt;
+}
+
+// Three joints: with the start's design fixed, where the proximal link
+// stands along the path is a shortest path over (primitive, angle)
+// (proximal_plan.h), linear in the primitives. A plan the verifier
+// certifies is the answer; otherwise its angles start the refinement, which
+// then moves the design too.
+std::optional<Solution> Search::planned(kinematics::Robot& start) {
+    const run::Stopwatch t0;
+    const ProximalPlan plan = plan_proximal_angles(task_, start, opt_.proximal, deadline_);
+    stats_.refine_seconds += t0.seconds();
+    if (!plan.found) {
+        say(run::Stage::Search, text::format("    proximal plan: none (%s), %.3f s",
+                                             plan.message.c_str(), t0.seconds()));
+        return std::nullopt;
+    }
+    say(run::Stage::Search, text::format("    proximal plan: %d move(s), margin %.4f m, %.3f s",
+                                         plan.moves, plan.margin, t0.seconds()));
+    start.proximal_angles = plan.angles;
+    Verdict verdict = judge(start);
+    if (!verdict.solution) return std::nullopt;
+    stats_.certified_by = kPlanned;
+    if (stats_.first_certified_by.empty()) stats_.first_certified_by = stats_.certified_by;
+    certified_seconds_ = t0.seconds();
+    return std::move(verdict.solution);
 }
 
 std::optional<Solution> Search::refine(const smt::Skeleton& skeleton,
@@ -774,6 +860,7 @@ bool SynthesisOptions::IsValid(std::string* error) const {
         .nested("front", front)
         .nested("verify", verify)
         .nested("guesses", guesses)
+        .nested("proximal", proximal)
         .nested("branch_and_bound", branch_and_bound)
         .within("branch_and_bound_share", branch_and_bound_share, 0.0, 1.0)
         .greater("point_spacing", point_spacing, 0.0)

@@ -59,6 +59,12 @@ struct InitialGuessOptions {
     /// m: candidates whose bases and every link length differ by less than
     /// this count as one start (a second start near the first adds little).
     double distinct_distance = 0.02;
+    /// Three joints: a stroke of more primitives than this is scored as the
+    /// chords through every k-th primitive end, at most this many: the
+    /// guesses need the path's shape, and scoring every transition of a
+    /// 512-segment loop took seconds a candidate. The proximal angles of
+    /// each chord go to the primitives it spans.
+    int coarse_primitives = 48;
 
     /// False (with `error` naming the field) when some value is out of range.
     bool IsValid(std::string* error) const;

@@ -10,6 +10,7 @@
 #include <modsynth/run/progress.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/initial_guess.h>
+#include <modsynth/synth/proximal_plan.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/synth/swept_choice.h>
 #include <modsynth/task/task.h>
@@ -35,6 +36,9 @@ struct SynthesisOptions {
     verify::VerifyOptions verify;
     /// How the initial guesses of the refinement are searched for.
     InitialGuessOptions guesses;
+    /// Three joints: how the proximal angles of each initial guess are
+    /// planned along the path before its refinement (proximal_plan.h).
+    ProximalPlanOptions proximal;
     /// The branch and bound tried on tasks that allow 2 joints only, when
     /// neither a wall nor a detour proves them infeasible. Its time_limit
     /// is further capped at branch_and_bound_share of the run's, and so is
