@@ -2,7 +2,7 @@
 // A build sheet in Markdown for a spatial arm (a DH chain): the parts to
 // get, each tube's cut length, the bracket each twist needs
 // (hardware/dh_stack.h), the modules that carry the motion, where the base
-// goes and the joint angles of the start pose.
+// goes and the joint angles of the start pose; without an arm, why not.
 #include <string>
 
 #include <modsynth/synth/solution.h>
@@ -11,7 +11,8 @@
 namespace modsynth::output {
 
 /// The sheet for a solved spatial solution (solution.dh_robot); sizes come
-/// from task.robot.
+/// from task.robot. For an infeasible or unknown one, why there is no arm:
+/// the explanation's message, its core and a wall's obstacles.
 std::string build_sheet(const task::SpatialTask& task, const synth::Solution& solution);
 
 }  // namespace modsynth::output
