@@ -170,7 +170,7 @@ std::string enclosure_data(const prove::EnclosureWitness& w) {
     std::string walls;
     for (const prove::Enclosure& e : w.walls) {
         std::string runs;
-        const auto at = [&](int i, int j, int k) {
+        const auto at = [&](int i, int j, int k) -> Vec3 {
             return e.grid.origin + e.grid.cell * Vec3(i, j, k);
         };
         for (const prove::CellRun& r : e.cells) {

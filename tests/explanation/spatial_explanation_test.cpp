@@ -85,8 +85,8 @@ TEST_CASE("explain solves a feasible spatial task instead", "[explain][spatial]"
 
 TEST_CASE("explain opens a wall in space: an obstacle removed or moved, the path moved",
           "[explain][spatial]") {
-    const task::SpatialTask task = io::load_spatial_task(
-        testing::source_path("tasks/spatial/infeasible/walled.task.json"));
+    const task::SpatialTask task =
+        io::load_spatial_task(testing::source_path("tasks/spatial/infeasible/walled.task.json"));
     const auto proof = explanation::prove_infeasible(task, 10.0);
     REQUIRE(proof.proved);
     REQUIRE(proof.enclosure);
@@ -102,7 +102,8 @@ TEST_CASE("explain opens a wall in space: an obstacle removed or moved, the path
         changes.push_back(r.change);
         REQUIRE(std::holds_alternative<task::SpatialTask>(r.relaxed));
         // Re-checked: no proof holds on the changed task.
-        CHECK_FALSE(explanation::prove_infeasible(std::get<task::SpatialTask>(r.relaxed), 5.0).proved);
+        CHECK_FALSE(
+            explanation::prove_infeasible(std::get<task::SpatialTask>(r.relaxed), 5.0).proved);
     }
     const auto starts = [&](const std::string& head) {
         return std::any_of(changes.begin(), changes.end(),

@@ -297,8 +297,7 @@ TEST_CASE("a written solution file is the JSON document's text", "[output]") {
     std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("a wall in space's witness round-trips, and a bad one is refused by name",
-          "[output]") {
+TEST_CASE("a wall in space's witness round-trips, and a bad one is refused by name", "[output]") {
     Solution a;
     a.task_name = "walled";
     a.status = Status::Infeasible;

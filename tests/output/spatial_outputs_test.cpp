@@ -381,13 +381,14 @@ TEST_CASE("write_exports writes every output of a spatial solution", "[output]")
     CHECK(lines_of(read(paths.csv)).size() == c.solution.samples.size() + 1);
     CHECK(has(read(paths.build_sheet), "A spatial arm with 3 joints"));
     CHECK(has(read(paths.joint_trajectory), "joint_names: [joint_1, joint_2, joint_3]"));
-    // Without a robot, only the report.
+    // Without a robot, only the report and the build sheet saying why.
     synth::Solution none;
     none.status = synth::Status::Unknown;
     none.explanation.message = "gave up";
     fs::remove(paths.urdf);
     const auto skipped = output::write_exports(c.task, none, paths, {});
-    CHECK(skipped.size() == 4);
+    CHECK(skipped.size() == 3);
+    CHECK(has(read(paths.build_sheet), "No arm to build"));
     CHECK(has(skipped[0], "--urdf"));
     CHECK(has(skipped[0], "so there is no robot"));
     CHECK_FALSE(fs::exists(paths.urdf));
