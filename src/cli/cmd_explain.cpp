@@ -92,7 +92,7 @@ int run_explain(const ExplainArgs& a, const TaskT& task, const run::Stopwatch& c
         out["status"] = synth::to_string(e.status);
         out["message"] = e.message;
         out["core"] = task::to_strings(e.core);
-        io::add_witnesses({e.message, e.core, e.separation, e.geodesic}, out);
+        io::add_witnesses({e.message, e.core, e.separation, e.geodesic, e.enclosure}, out);
     };
     const double time_limit = std::max(0.0, a.time_limit - clock.seconds());
     Watchdog watchdog(time_limit + kWatchdogMargin, [&] {

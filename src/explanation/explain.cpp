@@ -49,6 +49,7 @@ Explanation explain_flow(const TaskT& task, const ExplainOptions& options, Solve
         out.core = s.explanation.core;
         out.separation = s.explanation.separation;
         out.geodesic = s.explanation.geodesic;
+        out.enclosure = s.explanation.enclosure;
         return out;
     }
     out.proved = true;
@@ -57,6 +58,7 @@ Explanation explain_flow(const TaskT& task, const ExplainOptions& options, Solve
     out.core = proof.core;
     out.separation = proof.separation;
     out.geodesic = proof.geodesic;
+    out.enclosure = proof.enclosure;
     if (options.proved) options.proved(out);
     say(run::Stage::Explanation, "looking for the smallest changes");
     out.suggestions = suggest_relaxations(task, proof.core, options.solve_seconds, left());

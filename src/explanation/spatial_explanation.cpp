@@ -3,13 +3,20 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <type_traits>
 #include <utility>
+#include <variant>
 
+#include <modsynth/geometry/curve_distance.h>
+#include <modsynth/geometry/obstacle3.h>
+#include <modsynth/geometry/primitive3.h>
 #include <modsynth/geometry/vec.h>
+#include <modsynth/prove/spatial_enclosure.h>
 #include <modsynth/run/deadline.h>
 #include <modsynth/smt/spatial_front_stage.h>
 #include <modsynth/synth/spatial_reach_proof.h>
 #include <modsynth/synth/spatial_synthesizer.h>
+#include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
@@ -42,6 +49,9 @@ std::string joint_counts(const std::vector<int>& dof) {
 bool conflict_free(const task::SpatialTask& task, double check_seconds,
                    const run::Deadline& deadline) {
     if (synth::spatial_out_of_reach_core(task)) return false;
+    prove::EnclosureOptions walls;
+    walls.minimise = false;  // only whether one holds
+    if (prove::prove_spatial_enclosure(task, deadline.within(check_seconds), walls)) return false;
     for (int dof : task.robot.dof) {
         smt::SpatialFrontStageOptions o;
         o.time_limit = check_seconds;
@@ -80,7 +90,30 @@ public:
     void more_joints(const TaskPart& part);
     void other_twists(const TaskPart& part);
     void grown_region(const TaskPart& part);
+    void moved_path(const TaskPart& part);
+
+    /// For a wall's obstacles: the first whose removal opens it, and the
+    /// least move of one of them outwards that does.
+    void obstacle_changes();
+
+private:
+    /// Whether a changed task is out of the conflict, for a bisection: when
+    /// a wall proves the task infeasible, whether the wall opens (cheap:
+    /// offer() re-checks every proof before a change is printed), else
+    /// whether the conflict is gone.
+    bool opens(const task::SpatialTask& t);
+
+    std::optional<bool> walled_;
+    bool moved_path_done_ = false;
 };
+
+bool SpatialRelaxers::opens(const task::SpatialTask& t) {
+    prove::EnclosureOptions quick;
+    quick.minimise = false;
+    if (!walled_) walled_ = prove::prove_spatial_enclosure(task_, deadline_, quick).has_value();
+    if (*walled_) return !prove::prove_spatial_enclosure(t, deadline_, quick);
+    return free(t);
+}
 
 struct SpatialRelaxer {
     TaskPart::Kind kind;
@@ -94,9 +127,71 @@ const SpatialRelaxer kSpatialRelaxers[] = {
     {TaskPart::Kind::Robot, RobotKey::Twists, &SpatialRelaxers::other_twists},
     {TaskPart::Kind::BaseRegions, std::nullopt, &SpatialRelaxers::grown_region},
     {TaskPart::Kind::BaseRegion, std::nullopt, &SpatialRelaxers::grown_region},
+    {TaskPart::Kind::Primitive, std::nullopt, &SpatialRelaxers::moved_path},
 };
 
+/// m: how close a moved path or obstacle may come to the other and still
+/// count as off it (the reader refuses a path that touches an obstacle).
+constexpr double kClear = 1e-3;
+/// How many obstacles of a wall are tried for a removal, and for a move
+/// (each a bisection).
+constexpr std::size_t kObstacleTries = 8;
+constexpr std::size_t kMoveTries = 3;
+
+/// Whether the path keeps kClear off every obstacle (a task a reader
+/// accepts).
+bool path_clear(const task::SpatialTask& task) {
+    for (const auto& o : task.obstacles) {
+        const auto gap = [&](const geometry::Vec3& p) {
+            return std::max(0.0, geometry::point_gap(p, o));
+        };
+        for (const auto& p : task.trajectory)
+            if (geometry::comes_within(p, gap, kClear)) return false;
+    }
+    return true;
+}
+
+std::string vec_text(const geometry::Vec3& p) {
+    return text::format("(%.3f, %.3f, %.3f)", p.x(), p.y(), p.z());
+}
+
+geometry::Obstacle3 moved(const geometry::Obstacle3& o, const geometry::Vec3& by) {
+    return std::visit(
+        [&](const auto& x) -> geometry::Obstacle3 {
+            auto m = x;
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, geometry::Sphere>) {
+                m.center += by;
+            } else if constexpr (std::is_same_v<T, geometry::Capsule>) {
+                m.a += by;
+                m.b += by;
+            } else {
+                m.min += by;
+                m.max += by;
+            }
+            return m;
+        },
+        o);
+}
+
+std::string size_text(const geometry::Obstacle3& o) {
+    return std::visit(
+        [](const auto& x) -> std::string {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, geometry::Box3>) {
+                const geometry::Vec3 d = x.max - x.min;
+                return text::format("a box of %.3f x %.3f x %.3f m", d.x(), d.y(), d.z());
+            } else if constexpr (std::is_same_v<T, geometry::Sphere>) {
+                return text::format("a sphere of radius %.3f m", x.radius);
+            } else {
+                return text::format("a capsule of radius %.3f m", x.radius);
+            }
+        },
+        o);
+}
+
 std::vector<Relaxation> SpatialRelaxers::run() {
+    obstacle_changes();
     for (const TaskPart& part : core_) {
         if (deadline_.expired()) break;
         for (const SpatialRelaxer& r : kSpatialRelaxers) {
@@ -175,6 +270,101 @@ void SpatialRelaxers::grown_region(const TaskPart& part) {
           g);
 }
 
+void SpatialRelaxers::obstacle_changes() {
+    std::vector<int> ids;
+    for (const TaskPart& p : core_)
+        if (p.kind() == TaskPart::Kind::Obstacle && p.index() >= 0 &&
+            p.index() < static_cast<int>(task_.obstacles.size()))
+            ids.push_back(p.index());
+    if (ids.empty()) return;
+    // Outwards: away from the middle of the wall's obstacles.
+    geometry::Vec3 middle = geometry::Vec3::Zero();
+    for (int i : ids)
+        middle += geometry::bounding_sphere(task_.obstacles[static_cast<std::size_t>(i)]).center;
+    middle /= static_cast<double>(ids.size());
+    // The smallest first: the least to take away or carry.
+    std::stable_sort(ids.begin(), ids.end(), [&](int a, int b) {
+        return geometry::bounding_sphere(task_.obstacles[static_cast<std::size_t>(a)]).radius <
+               geometry::bounding_sphere(task_.obstacles[static_cast<std::size_t>(b)]).radius;
+    });
+    if (ids.size() > kObstacleTries) ids.resize(kObstacleTries);
+    for (int i : ids) {
+        if (deadline_.expired()) return;
+        task::SpatialTask t = task_;
+        t.obstacles.erase(t.obstacles.begin() + i);
+        if (!opens(t)) continue;
+        const auto& o = task_.obstacles[static_cast<std::size_t>(i)];
+        if (offer(TaskPart::obstacle(i),
+                  "remove " + task::to_string(TaskPart::obstacle(i)) + " (" + size_text(o) + ")",
+                  t))
+            break;
+    }
+    const double farthest = std::min(options_.farthest_move, 2.0);
+    if (ids.size() > kMoveTries) ids.resize(kMoveTries);
+    for (int i : ids) {
+        if (deadline_.expired()) return;
+        const auto& o = task_.obstacles[static_cast<std::size_t>(i)];
+        geometry::Vec3 dir = geometry::bounding_sphere(o).center - middle;
+        if (dir.norm() < 1e-9) continue;
+        dir.normalize();
+        const auto shifted = [&](double d) {
+            task::SpatialTask t = task_;
+            t.obstacles[static_cast<std::size_t>(i)] = moved(o, d * dir);
+            return t;
+        };
+        const auto v = smallest(0.0, farthest, options_.length_tolerance, [&](double d) {
+            const task::SpatialTask t = shifted(d);
+            return path_clear(t) && opens(t);
+        });
+        if (!v) continue;
+        const double d = std::ceil(*v * 100.0) / 100.0;
+        const task::SpatialTask t = shifted(d);
+        if (!path_clear(t)) continue;
+        if (offer(TaskPart::obstacle(i),
+                  "move " + task::to_string(TaskPart::obstacle(i)) +
+                      text::format(" %.2f m outwards, by ", d) + vec_text(d * dir) +
+                      ": the wall opens",
+                  t))
+            break;
+    }
+}
+
+// The whole path (so it stays connected) towards the base region nearest
+// to the wall's point, or to this primitive; once for all primitives.
+void SpatialRelaxers::moved_path(const TaskPart& part) {
+    if (moved_path_done_ || task_.base_regions.empty()) return;
+    moved_path_done_ = true;
+    std::optional<int> j;
+    for (int k = 0; k < static_cast<int>(task_.trajectory.size()); ++k)
+        if (task::primitive_part(task_, k) == part) j = k;
+    if (!j) return;
+    const auto& prim = task_.trajectory[static_cast<std::size_t>(*j)];
+    const geometry::Vec3 from = geometry::point_at(prim, geometry::length(prim) / 2);
+    geometry::Vec3 target = task_.base_regions.front().center();
+    for (const auto& r : task_.base_regions)
+        if ((r.center() - from).norm() < (target - from).norm()) target = r.center();
+    const double distance = (target - from).norm();
+    if (distance < 1e-9) return;
+    const geometry::Vec3 dir = (target - from) / distance;
+    const auto shifted = [&](double d) {
+        task::SpatialTask m = task_;
+        for (auto& p : m.trajectory) p = geometry::translate(p, d * dir);
+        return m;
+    };
+    const auto v = smallest(0.0, distance, options_.length_tolerance, [&](double d) {
+        const task::SpatialTask m = shifted(d);
+        return path_clear(m) && opens(m);
+    });
+    if (!v) return;
+    const double d = std::min(distance, std::ceil(*v * 100.0) / 100.0);
+    const task::SpatialTask m = shifted(d);
+    if (!path_clear(m)) return;
+    offer(part,
+          "move the path" + text::format(" %.2f m towards ", d) + vec_text(target) + ", by " +
+              vec_text(d * dir),
+          m);
+}
+
 }  // namespace
 
 InfeasibilityProof prove_infeasible(const task::SpatialTask& task, double time_limit) {
@@ -184,6 +374,14 @@ InfeasibilityProof prove_infeasible(const task::SpatialTask& task, double time_l
         proof.proved = true;
         proof.message = synth::describe_spatial_reach(task, *core);
         proof.core = std::move(*core);
+        return proof;
+    }
+    // The same proofs in the same order as solve's: both name one core.
+    if (auto wall = prove::prove_spatial_enclosure(task, deadline)) {
+        proof.proved = true;
+        proof.message = std::move(wall->message);
+        proof.core = std::move(wall->core);
+        proof.enclosure = std::move(wall->enclosure);
         return proof;
     }
     // Every joint count's minimal core; the core is their union, as solve's.

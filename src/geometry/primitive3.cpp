@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include <modsynth/geometry/distance3.h>
 #include <modsynth/geometry/vec.h>
@@ -232,6 +233,25 @@ Arc3 make_arc3(const Vec3& start, const Vec3& end, const Vec3& center, const Vec
 Helix3 make_helix3(const Vec3& start, const Vec3& center, const Vec3& axis, bool ccw, double pitch,
                    double turns) {
     return Helix3{make_turn(start, center, axis, ccw), pitch, turns};
+}
+
+Primitive3 translate(const Primitive3& p, const Vec3& offset) {
+    Primitive3 moved = p;
+    std::visit(
+        [&](auto& x) {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, Line3>) {
+                x.start += offset;
+                x.end += offset;
+            } else {
+                // The turn's frame (axis, u, v, radius, offset) moves with it.
+                x.turn.start += offset;
+                x.turn.center += offset;
+                if constexpr (std::is_same_v<T, Arc3>) x.end += offset;
+            }
+        },
+        moved);
+    return moved;
 }
 
 const char* type_name(const Primitive3& p) {

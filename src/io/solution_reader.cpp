@@ -136,6 +136,66 @@ prove::SeparationWitness parse_separation(const json& j, const std::string& part
     return w;
 }
 
+geometry::Vec3 parse_point3(const json& j, const std::string& part) {
+    require_array(j, part, "3 numbers");
+    if (j.size() != 3)
+        throw InputError(part, "expected [x, y, z], got " + std::to_string(j.size()) + " numbers");
+    return {finite_number(j[0], element(part, 0)), finite_number(j[1], element(part, 1)),
+            finite_number(j[2], element(part, 2))};
+}
+
+prove::EnclosureWitness parse_enclosure(const json& j, const std::string& part) {
+    require_object(j, part);
+    prove::EnclosureWitness w;
+    const std::string wp = member(part, "walls");
+    const json& walls = required(j, part, "walls");
+    require_array(walls, wp, "walls");
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+        const std::string p = element(wp, k);
+        const json& x = walls[k];
+        require_object(x, p);
+        prove::Enclosure e;
+        e.base_region = index(required(x, p, "base_region"), member(p, "base_region"));
+        e.primitive = index(required(x, p, "primitive"), member(p, "primitive"));
+        e.point = parse_point3(required(x, p, "point"), member(p, "point"));
+        const std::string op = member(p, "obstacles");
+        const json& obstacles = required(x, p, "obstacles");
+        require_array(obstacles, op, "obstacle indices");
+        for (std::size_t i = 0; i < obstacles.size(); ++i)
+            e.obstacles.push_back(index(obstacles[i], element(op, i)));
+        const std::string gp = member(p, "grid");
+        const json& grid = required(x, p, "grid");
+        require_object(grid, gp);
+        e.grid.origin = parse_point3(required(grid, gp, "origin"), member(gp, "origin"));
+        e.grid.cell = finite_number(required(grid, gp, "cell"), member(gp, "cell"));
+        if (!(e.grid.cell > 0.0)) throw InputError(member(gp, "cell"), "expected a positive size");
+        const std::string sp = member(gp, "size");
+        const json& size = required(grid, gp, "size");
+        require_array(size, sp, "3 whole numbers");
+        if (size.size() != 3) throw InputError(sp, "expected 3 whole numbers");
+        for (int a = 0; a < 3; ++a)
+            e.grid.size[static_cast<std::size_t>(a)] =
+                integer(size[static_cast<std::size_t>(a)], element(sp, a), 1, 1 << 20);
+        const std::string inside = text(required(x, p, "inside"), member(p, "inside"));
+        if (inside != "base_region" && inside != "point")
+            throw InputError(member(p, "inside"), "expected \"base_region\" or \"point\"");
+        e.base_inside = inside == "base_region";
+        const std::string cp = member(p, "cells");
+        const json& cells = required(x, p, "cells");
+        require_array(cells, cp, "runs of cells");
+        for (std::size_t i = 0; i < cells.size(); ++i) {
+            const std::string rp = element(cp, i);
+            require_array(cells[i], rp, "[j, k, i0, i1]");
+            if (cells[i].size() != 4) throw InputError(rp, "expected [j, k, i0, i1]");
+            e.cells.push_back(
+                {index(cells[i][0], element(rp, 0)), index(cells[i][1], element(rp, 1)),
+                 index(cells[i][2], element(rp, 2)), index(cells[i][3], element(rp, 3))});
+        }
+        w.walls.push_back(std::move(e));
+    }
+    return w;
+}
+
 prove::GeodesicWitness parse_geodesic(const json& j, const std::string& part) {
     require_object(j, part);
     prove::GeodesicWitness w;
@@ -197,6 +257,8 @@ synth::Explanation parse_explanation(const json& doc) {
         out.separation = parse_separation(*s, member(part, "separation"));
     if (const json* g = optional(e, "geodesic"))
         out.geodesic = parse_geodesic(*g, member(part, "geodesic"));
+    if (const json* w = optional(e, "enclosure"))
+        out.enclosure = parse_enclosure(*w, member(part, "enclosure"));
     return out;
 }
 

@@ -28,6 +28,25 @@ nlohmann::json to_json(const prove::SeparationWitness& w) {
     return {{"walls", walls}};
 }
 
+nlohmann::json to_json(const prove::EnclosureWitness& w) {
+    const auto point3 = [](const geometry::Vec3& p) { return nlohmann::json{p.x(), p.y(), p.z()}; };
+    nlohmann::json walls = nlohmann::json::array();
+    for (const auto& x : w.walls) {
+        nlohmann::json cells = nlohmann::json::array();
+        for (const auto& r : x.cells) cells.push_back({r.j, r.k, r.i0, r.i1});
+        walls.push_back(
+            {{"base_region", x.base_region},
+             {"primitive", x.primitive},
+             {"point", point3(x.point)},
+             {"obstacles", x.obstacles},
+             {"grid",
+              {{"origin", point3(x.grid.origin)}, {"cell", x.grid.cell}, {"size", x.grid.size}}},
+             {"inside", x.base_inside ? "base_region" : "point"},
+             {"cells", cells}});
+    }
+    return {{"walls", walls}};
+}
+
 nlohmann::json to_json(const prove::GeodesicWitness& w) {
     nlohmann::json detours = nlohmann::json::array();
     for (const auto& d : w.detours) {
@@ -90,6 +109,7 @@ nlohmann::json to_json(const kinematics::DhChain& chain) {
 void add_witnesses(const synth::Explanation& e, nlohmann::json& out) {
     if (e.separation) out["separation"] = to_json(*e.separation);
     if (e.geodesic) out["geodesic"] = to_json(*e.geodesic);
+    if (e.enclosure) out["enclosure"] = to_json(*e.enclosure);
 }
 
 namespace {

@@ -10,6 +10,8 @@
 #include <modsynth/output/build_sheet.h>
 #include <modsynth/output/parts_export.h>
 #include <modsynth/output/recertify.h>
+#include <modsynth/task/part.h>
+#include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/markdown.h>
 
@@ -155,10 +157,52 @@ std::string start_pose_section(const synth::Solution& solution) {
            ") m, the start of the path.\n";
 }
 
+std::string index_list(const std::vector<int>& ids) {
+    std::string s;
+    for (std::size_t i = 0; i < ids.size(); ++i) s += (i ? ", " : "") + std::to_string(ids[i]);
+    return s;
+}
+
+// Nothing is built, so the sheet says why: a person holding it wants the
+// reason and what to change, not an empty file.
+std::string no_arm_sheet(const task::SpatialTask& task, const synth::Solution& solution) {
+    const synth::Explanation& e = solution.explanation;
+    const std::string status = synth::to_string(solution.status);
+    std::string s = "# Build sheet: " +
+                    (task.name.empty() ? std::string("task") : text::markdown_literal(task.name)) +
+                    "\n\nNo arm to build: the task is " + status +
+                    (solution.status == synth::Status::Infeasible
+                         ? " (no arm of the allowed kind can do it, proved below)."
+                         : " (no arm was found, and none was proved impossible).") +
+                    "\n\n## Why\n\n" +
+                    (e.message.empty() ? std::string("No explanation was given.")
+                                       : text::markdown_literal(e.message)) +
+                    "\n";
+    if (!e.core.empty()) {
+        s += "\n## The parts that conflict\n\nChanging any one of them can remove the "
+             "conflict (`modsynth explain` says by how much):\n\n";
+        for (const task::TaskPart& p : e.core) s += "- `" + task::to_string(p) + "`\n";
+    }
+    if (e.enclosure) {
+        s += "\n## The wall\n\n";
+        for (const prove::Enclosure& w : e.enclosure->walls) {
+            const std::string region = "base_regions[" + std::to_string(w.base_region) + "]";
+            const std::string point =
+                task::part_name(task, w.primitive) + " at (" +
+                text::format("%.3f, %.3f, %.3f", w.point.x(), w.point.y(), w.point.z()) + ") m";
+            s += "- Obstacles " + index_list(w.obstacles) + " close a shell round " +
+                 (w.base_inside ? region + "; " + point : point + "; " + region) +
+                 " lies outside it.\n";
+        }
+    }
+    return s;
+}
+
 }  // namespace
 
 std::string build_sheet(const task::SpatialTask& task, const synth::Solution& solution,
                         const parts::PrintedParts* printed) {
+    if (solution.status != synth::Status::Solved) return no_arm_sheet(task, solution);
     if (!solution.dh_robot || solution.samples.empty())
         throw std::invalid_argument("build_sheet: the solution has no DH robot or no motion");
     const kinematics::DhChain& chain = *solution.dh_robot;

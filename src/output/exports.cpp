@@ -21,6 +21,8 @@ void write_text_file(const std::string& path, const std::string& text) {
 
 namespace {
 
+const std::string kNone;  ///< no path: the output is not asked for
+
 struct RobotOutput {
     const std::string& path;
     const char* option;
@@ -66,11 +68,15 @@ std::vector<std::string> write_exports(const task::SpatialTask& task,
                                        const ReportFigures& figures,
                                        const parts::PrintedParts* printed) {
     if (!paths.report.empty()) write_text_file(paths.report, html_report(task, solution, figures));
+    // A spatial sheet without an arm says why there is none.
+    if (!paths.build_sheet.empty() && solution.status != synth::Status::Solved)
+        write_text_file(paths.build_sheet, build_sheet(task, solution));
     return write_robot_outputs(
         solution,
         {{paths.urdf, "--urdf", [&] { return robot_urdf(task, solution); }},
          {paths.csv, "--csv", [&] { return trajectory_csv(solution); }},
-         {paths.build_sheet, "--build-sheet", [&] { return build_sheet(task, solution, printed); }},
+         {solution.status == synth::Status::Solved ? paths.build_sheet : kNone, "--build-sheet",
+          [&] { return build_sheet(task, solution, printed); }},
          {paths.joint_trajectory, "--joint-trajectory",
           [&] { return joint_trajectory_yaml(solution); }}});
 }

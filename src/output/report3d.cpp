@@ -164,9 +164,37 @@ std::string motion_data(const task::SpatialTask& task, const synth::Solution& s,
            ",\"pr\":" + list(pr, "%.0f") + "}";
 }
 
+/// A wall's witness (formats.md "explanation.enclosure"): each run of
+/// enclosed cells as a box [min, max].
+std::string enclosure_data(const prove::EnclosureWitness& w) {
+    std::string walls;
+    for (const prove::Enclosure& e : w.walls) {
+        std::string runs;
+        const auto at = [&](int i, int j, int k) -> Vec3 {
+            return e.grid.origin + e.grid.cell * Vec3(i, j, k);
+        };
+        for (const prove::CellRun& r : e.cells) {
+            const Vec3 lo = at(r.i0, r.j, r.k), hi = at(r.i1 + 1, r.j + 1, r.k + 1);
+            runs += std::string(runs.empty() ? "" : ",") + "[" + num(lo.x()) + "," + num(lo.y()) +
+                    "," + num(lo.z()) + "," + num(hi.x()) + "," + num(hi.y()) + "," + num(hi.z()) +
+                    "]";
+        }
+        std::string ids;
+        for (int i : e.obstacles) ids += (ids.empty() ? "" : ",") + std::to_string(i);
+        walls += std::string(walls.empty() ? "" : ",") + "{\"inside\":\"" +
+                 (e.base_inside ? "base_region" : "point") +
+                 "\",\"base_region\":" + std::to_string(e.base_region) +
+                 ",\"point\":" + vec(e.point) + ",\"obstacles\":[" + ids + "],\"runs\":[" + runs +
+                 "]}";
+    }
+    return ",\"enclosure\":[" + walls + "]";
+}
+
 std::string scene_data(const task::SpatialTask& task, const synth::Solution& s) {
     Bounds b;
     std::string out = "{" + task_data(task, s, b);
+    if (s.status != synth::Status::Solved && s.explanation.enclosure)
+        out += enclosure_data(*s.explanation.enclosure);
     const bool solved = s.status == synth::Status::Solved && s.dh_robot && !s.samples.empty();
     out += solved ? motion_data(task, s, b) : ",\"robot\":null,\"motion\":null";
     std::string names;
@@ -306,6 +334,11 @@ std::string html_report(const task::SpatialTask& task, const synth::Solution& so
         "<p class=\"note\" id=\"view-caption\">Red: obstacles (translucent); dashed boxes: "
         "base regions; the grid is the task's xy-plane (z = 0, or lower when the scene is), "
         "with the task frame's axes (x red, y green, z blue) at its origin." +
+        std::string(!solved && solution.explanation.enclosure
+                        ? " The proof's wall: its obstacles red and outlined, the free space "
+                          "it encloses (round the base region or round a path point) green, "
+                          "and a black ring at the path point it keeps apart."
+                        : "") +
         std::string(solved ? " The arm: the chain's segments as capsules of the link "
                              "diameter (the tool dark), module housings red at the joints; "
                              "black: the end-effector's trail."

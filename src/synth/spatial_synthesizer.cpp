@@ -11,6 +11,7 @@
 #include <modsynth/control/path_corners.h>
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/nlp/solver.h>
+#include <modsynth/prove/spatial_enclosure.h>
 #include <modsynth/run/deadline.h>
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/synth/design_choice.h>
@@ -27,6 +28,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using geometry::Vec3;
 using run::Stage;
+
+/// s: the most the proof of a wall in space may take of a run.
+constexpr double kEnclosureSeconds = 1.0;
 
 double seconds_since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
@@ -135,6 +139,17 @@ Solution Search::run() {
         out.explanation.message = "Proved infeasible: " + describe_spatial_reach(task_, *core);
         out.explanation.core = *core;
         say(Stage::Proofs, "reach: " + out.explanation.message);
+        return out;
+    }
+    // Walls in space: milliseconds where no obstacle comes near a shell,
+    // within a second otherwise.
+    if (auto wall = prove::prove_spatial_enclosure(task_, deadline_.within(kEnclosureSeconds))) {
+        stats_.front_seconds += seconds_since(t_reach);
+        out.status = Status::Infeasible;
+        out.explanation.message = "Proved infeasible: " + wall->message;
+        out.explanation.core = std::move(wall->core);
+        out.explanation.enclosure = std::move(wall->enclosure);
+        say(Stage::Proofs, "walls: " + out.explanation.message);
         return out;
     }
     stats_.front_seconds += seconds_since(t_reach);

@@ -82,3 +82,34 @@ TEST_CASE("explain solves a feasible spatial task instead", "[explain][spatial]"
     CHECK(e.message == "No conflict: a 3-joint robot does this task (run solve).");
     CHECK(e.suggestions.empty());
 }
+
+TEST_CASE("explain opens a wall in space: an obstacle removed or moved, the path moved",
+          "[explain][spatial]") {
+    const task::SpatialTask task =
+        io::load_spatial_task(testing::source_path("tasks/spatial/infeasible/walled.task.json"));
+    const auto proof = explanation::prove_infeasible(task, 10.0);
+    REQUIRE(proof.proved);
+    REQUIRE(proof.enclosure);
+    // The wall's parts only: the obstacles and the path.
+    std::vector<task::TaskPart> core;
+    for (const auto& p : proof.core)
+        if (p.kind() == task::TaskPart::Kind::Obstacle ||
+            p.kind() == task::TaskPart::Kind::Primitive)
+            core.push_back(p);
+    const auto suggestions = explanation::suggest_relaxations(task, core, 0.5, 60.0);
+    std::vector<std::string> changes;
+    for (const auto& r : suggestions) {
+        changes.push_back(r.change);
+        REQUIRE(std::holds_alternative<task::SpatialTask>(r.relaxed));
+        // Re-checked: no proof holds on the changed task.
+        CHECK_FALSE(
+            explanation::prove_infeasible(std::get<task::SpatialTask>(r.relaxed), 5.0).proved);
+    }
+    const auto starts = [&](const std::string& head) {
+        return std::any_of(changes.begin(), changes.end(),
+                           [&](const std::string& c) { return c.rfind(head, 0) == 0; });
+    };
+    CHECK(starts("remove obstacles["));
+    CHECK(starts("move obstacles["));
+    CHECK(starts("move the path "));
+}

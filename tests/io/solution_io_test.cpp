@@ -296,3 +296,39 @@ TEST_CASE("a written solution file is the JSON document's text", "[output]") {
     }
     std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("a wall in space's witness round-trips, and a bad one is refused by name", "[output]") {
+    Solution a;
+    a.task_name = "walled";
+    a.status = Status::Infeasible;
+    a.explanation.message = "walled";
+    modsynth::prove::Enclosure w;
+    w.base_region = 0;
+    w.primitive = 1;
+    w.point = {0.6, 0.1, 0.2};
+    w.obstacles = {0, 2, 5};
+    w.grid = {{-0.3125, -0.25, 0.0}, 0.015625, {40, 30, 20}};
+    w.base_inside = false;
+    w.cells = {{3, 4, 5, 9}, {4, 4, 6, 6}};
+    a.explanation.enclosure = modsynth::prove::EnclosureWitness{{w}};
+    const json doc = to_json(a);
+    const auto b = parse_solution(doc).solution.explanation.enclosure;
+    REQUIRE(b);
+    REQUIRE(b->walls.size() == 1);
+    const auto& v = b->walls[0];
+    CHECK(v.primitive == 1);
+    CHECK(v.point == w.point);
+    CHECK(v.obstacles == w.obstacles);
+    CHECK(v.grid.origin == w.grid.origin);
+    CHECK(v.grid.cell == w.grid.cell);
+    CHECK(v.grid.size == w.grid.size);
+    CHECK_FALSE(v.base_inside);
+    REQUIRE(v.cells.size() == 2);
+    CHECK(v.cells[0].i1 == 9);
+    json bad = doc;
+    bad["explanation"]["enclosure"]["walls"][0]["inside"] = "elsewhere";
+    CHECK(part_of(bad) == "explanation.enclosure.walls[0].inside");
+    bad = doc;
+    bad["explanation"]["enclosure"]["walls"][0]["cells"][1] = json::array({1, 2});
+    CHECK(part_of(bad) == "explanation.enclosure.walls[0].cells[1]");
+}

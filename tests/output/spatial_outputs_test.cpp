@@ -30,6 +30,7 @@
 #include <modsynth/output/report3d.h>
 #include <modsynth/synth/spatial_module_choice.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/markdown.h>
 
 #include "output_fixtures.h"
 #include "spatial_fixtures.h"
@@ -162,6 +163,74 @@ TEST_CASE("spatial report of an infeasible task names the core and draws no arm"
     CHECK(has(html, "trajectory[0] &lt;is&gt; out of reach"));
     CHECK_FALSE(has(html, "id=\"play\""));
     CHECK_FALSE(has(html, "id=\"timing\""));
+}
+
+namespace {
+
+/// An infeasible solution of s3-0001 with a made-up wall witness of two
+/// runs of cells round its base region, behind obstacle 0.
+synth::Solution walled_solution(const task::SpatialTask& task) {
+    synth::Solution s;
+    s.task_name = task.name;
+    s.status = synth::Status::Infeasible;
+    s.explanation.message = "obstacles 0 close a shell round base_regions[0]";
+    s.explanation.core = {modsynth::task::TaskPart::trajectory(0),
+                          modsynth::task::TaskPart::obstacle(0),
+                          modsynth::task::TaskPart::base_regions()};
+    prove::Enclosure w;
+    w.point = geometry::Vec3(0.5, 0.25, 0.125);
+    w.obstacles = {0};
+    w.grid = {geometry::Vec3(-1.0, -1.0, -1.0), 0.25, {8, 8, 8}};
+    w.base_inside = true;
+    w.cells = {{3, 3, 2, 4}, {4, 3, 3, 3}};
+    s.explanation.enclosure = prove::EnclosureWitness{{w}};
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("spatial report of a walled task draws the wall and the enclosed cells", "[output]") {
+    testing::SpatialCase c = testing::planted_case("s3-0001");
+    const synth::Solution s = walled_solution(c.task);
+    const std::string html = output::html_report(c.task, s, {});
+    check_self_contained(html);
+    const auto data = scene_data(html);
+    REQUIRE(data["enclosure"].size() == 1);
+    const auto& w = data["enclosure"][0];
+    CHECK(w["inside"] == "base_region");
+    CHECK(w["obstacles"] == nlohmann::json::array({0}));
+    // Run (j 3, k 3, i 2-4): x from -1 + 2 * 0.25 to -1 + 5 * 0.25.
+    REQUIRE(w["runs"].size() == 2);
+    const std::vector<double> run0 = w["runs"][0];
+    CHECK(run0 == std::vector<double>{-0.5, -0.25, -0.25, 0.25, 0.0, 0.0});
+    CHECK(data["task"]["obstacles"][0]["core"] == true);
+    CHECK(has(html, "The proof's wall"));
+}
+
+TEST_CASE("the build sheet of an infeasible spatial task says why, and export writes it",
+          "[output]") {
+    testing::SpatialCase c = testing::planted_case("s3-0001");
+    const synth::Solution s = walled_solution(c.task);
+    const std::string sheet = output::build_sheet(c.task, s);
+    CHECK(has(sheet, "No arm to build: the task is infeasible"));
+    CHECK(has(sheet, "## Why\n\n" + text::markdown_literal(s.explanation.message)));
+    CHECK(has(sheet, "- `obstacles[0]`"));
+    CHECK(has(sheet, "- Obstacles 0 close a shell round base_regions[0]"));
+    // Unknown: said so, without claiming a proof.
+    synth::Solution u;
+    u.status = synth::Status(synth::Status::Kind::Unknown);
+    u.explanation.message = "time limit";
+    CHECK(has(output::build_sheet(c.task, u), "none was proved impossible"));
+    // export writes it (no line saying it was skipped); the URDF is not.
+    const auto dir = testing::scratch_dir("spatial_walled_exports");
+    output::ExportPaths paths;
+    paths.build_sheet = (dir / "sheet.md").string();
+    paths.urdf = (dir / "arm.urdf").string();
+    const auto skipped = output::write_exports(c.task, s, paths, {});
+    CHECK(fs::exists(dir / "sheet.md"));
+    CHECK_FALSE(fs::exists(dir / "arm.urdf"));
+    REQUIRE(skipped.size() == 1);
+    CHECK(has(skipped[0], "--urdf"));
 }
 
 TEST_CASE("spatial report of an edited motion says it is not certified", "[output]") {
@@ -312,13 +381,14 @@ TEST_CASE("write_exports writes every output of a spatial solution", "[output]")
     CHECK(lines_of(read(paths.csv)).size() == c.solution.samples.size() + 1);
     CHECK(has(read(paths.build_sheet), "A spatial arm with 3 joints"));
     CHECK(has(read(paths.joint_trajectory), "joint_names: [joint_1, joint_2, joint_3]"));
-    // Without a robot, only the report.
+    // Without a robot, only the report and the build sheet saying why.
     synth::Solution none;
     none.status = synth::Status::Unknown;
     none.explanation.message = "gave up";
     fs::remove(paths.urdf);
     const auto skipped = output::write_exports(c.task, none, paths, {});
-    CHECK(skipped.size() == 4);
+    CHECK(skipped.size() == 3);
+    CHECK(has(read(paths.build_sheet), "No arm to build"));
     CHECK(has(skipped[0], "--urdf"));
     CHECK(has(skipped[0], "so there is no robot"));
     CHECK_FALSE(fs::exists(paths.urdf));

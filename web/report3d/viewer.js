@@ -64,6 +64,50 @@ function taskObjects(task, scene, size) {
   }
 }
 
+/// A wall's witness: the enclosed cells (runs of grid cells, as boxes) in
+/// translucent green, the wall's obstacles outlined in black, and the side
+/// kept out marked by a black ring round the path point or the base region.
+function enclosureObjects(walls, task, scene, size) {
+  const cellMat = new THREE.MeshBasicMaterial({ color: 0x1a9850, transparent: true, opacity: 0.18, depthWrite: false });
+  let shown = 0;
+  for (const w of walls) {
+    const boxes = new THREE.InstancedMesh(new THREE.BoxGeometry(1, 1, 1), cellMat, w.runs.length);
+    const m = new THREE.Matrix4();
+    w.runs.forEach((r, i) => {
+      const lo = v3(r.slice(0, 3)), hi = v3(r.slice(3, 6));
+      m.makeScale(hi.x - lo.x, hi.y - lo.y, hi.z - lo.z);
+      m.setPosition(lo.clone().add(hi).multiplyScalar(0.5));
+      boxes.setMatrixAt(i, m);
+    });
+    boxes.userData.enclosure = w.inside;
+    scene.add(boxes);
+    shown += w.runs.length;
+    for (const i of w.obstacles) {
+      const o = task.obstacles[i];
+      let geometry, at;
+      if (o.type === "sphere") {
+        geometry = new THREE.SphereGeometry(o.r, 12, 6);
+        at = v3(o.c);
+      } else if (o.type === "box") {
+        const lo = v3(o.min), hi = v3(o.max);
+        geometry = new THREE.BoxGeometry(hi.x - lo.x, hi.y - lo.y, hi.z - lo.z);
+        at = lo.clone().add(hi).multiplyScalar(0.5);
+      } else {
+        continue;  // a capsule's core colour says enough
+      }
+      const edges = new THREE.LineSegments(new THREE.EdgesGeometry(geometry),
+        new THREE.LineBasicMaterial({ color: 0x000000, transparent: true, opacity: 0.35 }));
+      edges.position.copy(at);
+      scene.add(edges);
+    }
+    const mark = new THREE.Mesh(new THREE.TorusGeometry(size * 0.02, size * 0.003, 8, 32),
+      new THREE.MeshBasicMaterial({ color: 0x000000 }));
+    mark.position.copy(v3(w.point));
+    scene.add(mark);
+  }
+  state.enclosureRuns = shown;
+}
+
 // ------------------------------------------------------------------ the view
 
 function start() {
@@ -105,6 +149,7 @@ function start() {
   scene.add(axes);
 
   taskObjects(data.task, scene, size);
+  if (data.enclosure) enclosureObjects(data.enclosure, data.task, scene, size);
 
   const camera = new THREE.PerspectiveCamera(40, width / height, size / 500, size * 100);
   camera.up.set(0, 0, 1);

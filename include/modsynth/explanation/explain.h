@@ -32,6 +32,8 @@ struct Explanation {
     /// ".geodesic"), when the task was proved infeasible that way.
     std::optional<prove::SeparationWitness> separation;
     std::optional<prove::GeodesicWitness> geodesic;
+    /// A spatial task's closed shell ("explanation.enclosure").
+    std::optional<prove::EnclosureWitness> enclosure;
     /// When proved infeasible: the smallest changes of one part each that
     /// remove the conflict, each re-checked with the full pipeline.
     std::vector<Relaxation> suggestions;

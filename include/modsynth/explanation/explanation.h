@@ -27,6 +27,7 @@ struct InfeasibilityProof {
     std::string message;
     std::optional<prove::SeparationWitness> separation;
     std::optional<prove::GeodesicWitness> geodesic;
+    std::optional<prove::EnclosureWitness> enclosure;
 };
 
 /// The provers of solve (provers.h), in the same order, then the front

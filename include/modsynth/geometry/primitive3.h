@@ -74,6 +74,8 @@ Helix3 make_helix3(const Vec3& start, const Vec3& center, const Vec3& axis, bool
 
 /// "line", "arc", "circle" or "helix", as in the task document.
 const char* type_name(const Primitive3& p);
+/// The primitive moved by `offset` (every point given, the rest as it was).
+Primitive3 translate(const Primitive3& p, const Vec3& offset);
 double length(const Primitive3& p);
 Vec3 start_point(const Primitive3& p);
 /// The point at the primitive's full length (an arc's turn at its sweep).

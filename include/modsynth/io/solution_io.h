@@ -42,7 +42,9 @@ nlohmann::json to_json(const kinematics::DhChain& chain);
 /// "explanation.geodesic" (formats.md).
 nlohmann::json to_json(const prove::SeparationWitness& witness);
 nlohmann::json to_json(const prove::GeodesicWitness& witness);
-/// Adds to `out` the keys "separation" and "geodesic" that `e` carries.
+nlohmann::json to_json(const prove::EnclosureWitness& witness);
+/// Adds to `out` the keys "separation", "geodesic" and "enclosure" that `e`
+/// carries.
 void add_witnesses(const synth::Explanation& e, nlohmann::json& out);
 /// Writes the document atomically; throws std::runtime_error naming the
 /// path on failure.

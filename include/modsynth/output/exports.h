@@ -40,7 +40,8 @@ std::vector<std::string> write_exports(const task::Task& task, const synth::Solu
                                        const parts::PrintedParts* printed = nullptr);
 /// The same for a spatial task: the 3-D report (report3d.h), the DH arm's
 /// URDF (dh_urdf.h) and build sheet (dh_build_sheet.h), and the CSV and
-/// joint trajectory, which are the plane's.
+/// joint trajectory, which are the plane's. The build sheet of an unsolved
+/// spatial solution is written too: it says why there is no arm.
 std::vector<std::string> write_exports(const task::SpatialTask& task,
                                        const synth::Solution& solution, const ExportPaths& paths,
                                        const ReportFigures& figures,

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/prove/enclosure_witness.h>
 #include <modsynth/prove/wall_witness.h>
 #include <modsynth/task/part.h>
 
@@ -22,6 +23,8 @@ struct Proof {
     bool minimal = true;
     std::optional<SeparationWitness> separation;
     std::optional<GeodesicWitness> geodesic;
+    /// A spatial task's closed shell (spatial_enclosure.h).
+    std::optional<EnclosureWitness> enclosure;
 };
 
 }  // namespace modsynth::prove

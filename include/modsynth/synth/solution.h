@@ -8,6 +8,7 @@
 #include <modsynth/hardware/selection.h>
 #include <modsynth/kinematics/dh_chain.h>
 #include <modsynth/kinematics/robot.h>
+#include <modsynth/prove/enclosure_witness.h>
 #include <modsynth/prove/wall_witness.h>
 #include <modsynth/synth/status.h>
 #include <modsynth/task/part.h>
@@ -22,6 +23,9 @@ struct Explanation {
     /// that way (formats.md, "explanation.separation", ".geodesic").
     std::optional<prove::SeparationWitness> separation;
     std::optional<prove::GeodesicWitness> geodesic;
+    /// A spatial task's closed shell (formats.md "Spatial tasks",
+    /// "explanation.enclosure").
+    std::optional<prove::EnclosureWitness> enclosure;
 };
 
 struct Solution {
