@@ -140,8 +140,7 @@ TEST_CASE("the shortening pass skips the variants that cannot be shorter", "[syn
     CHECK(best.robot.total_length() < 0.56);
 }
 
-TEST_CASE("a long path out of reach is proved infeasible within a 30 s limit",
-          "[synth][slow]") {
+TEST_CASE("a long path out of reach is proved infeasible within a 30 s limit", "[synth][slow]") {
     // 640 segments round a ring of radius about 0.5 m about a base region at
     // its centre, arms of at most 3 x 0.15 m. Each segment alone is within
     // reach of the region's side nearest to it (the region is 0.16 m wide),
