@@ -90,7 +90,8 @@ PY
         cmp -s "$f" "$tmp/again/$(basename "$f")" || fail "export wrote another $(basename "$f")"
     done
     # A spatial arm: a printed link for each link with a common normal, its
-    # axes at a_k in the mesh.
+    # axes at a_k in the mesh, its mass in the dynamics the sheet's module
+    # choice carries.
     spatial=$root/tasks/spatial/glue-box-edges.json
     expect_exit 0 "spatial solve --parts" "$bin" solve "$spatial" -o "$tmp/s.json" \
         --parts "$tmp/sparts" --build-sheet "$tmp/ssheet.md" -q
@@ -108,6 +109,7 @@ for k, row in enumerate(rows, 1):
     assert os.path.getsize(scad[:-5] + ".stl") > 0, "link %d: no STL" % k
 PY
     grep -q "mm apart in the mesh" "$tmp/ssheet.md" || fail "the spatial build sheet lacks the spacing checks"
+    grep -q "Printed link masses" "$tmp/ssheet.md" || fail "the spatial build sheet lacks the printed masses"
     grep -q "a check failed" "$tmp/ssheet.md" && fail "spatial: $(grep 'a check failed' "$tmp/ssheet.md")"
 fi
 finish "parts ($mode)"

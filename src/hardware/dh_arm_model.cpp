@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include <modsynth/geometry/vec.h>
 #include <modsynth/hardware/dh_stack.h>
 
 namespace modsynth::hardware {
@@ -50,10 +51,18 @@ const Adapter& mount_part(const Catalog& catalog, bool bracket) {
 }
 
 DhArmModel dh_arm_model(const task::SpatialRobotSpec& spec, const kinematics::DhChain& chain,
-                        const Catalog& catalog, const std::vector<const Actuator*>& modules) {
+                        const Catalog& catalog, const std::vector<const Actuator*>& modules,
+                        const std::vector<PrintedDhLink>& printed) {
     const int n = chain.dof();
     if (static_cast<int>(modules.size()) != n)
         throw std::invalid_argument("dh_arm_model: one module per joint");
+    std::vector<bool> is_printed(static_cast<std::size_t>(n), false);
+    for (const PrintedDhLink& p : printed) {
+        if (p.link < 0 || p.link >= n ||
+            chain.rows[static_cast<std::size_t>(p.link)].a == 0.0)
+            throw std::invalid_argument("dh_arm_model: a printed link on a link without an a part");
+        is_printed[static_cast<std::size_t>(p.link)] = true;
+    }
     DhArmModel model;
     model.chain = chain;
     model.gravity = spec.gravity;
@@ -68,6 +77,9 @@ DhArmModel dh_arm_model(const task::SpatialRobotSpec& spec, const kinematics::Dh
     };
     for (const DhTube& t : stack.tubes) {
         RigidBody& body = model.links[static_cast<std::size_t>(t.link)];
+        // The printed link bolts to the horn and to the next housing (or
+        // the bracket): no tube, no adapters.
+        if (!t.along_axis && is_printed[static_cast<std::size_t>(t.link)]) continue;
         const Vec3 u = (t.to - t.from).normalized();
         if (t.cut_length > 0.0) {
             const Vec3 a = t.from + t.proximal_allowance * u;
@@ -86,6 +98,19 @@ DhArmModel dh_arm_model(const task::SpatialRobotSpec& spec, const kinematics::Dh
         if (!t.last && !to_corner && t.link + 1 < n &&
             stack.mounts[static_cast<std::size_t>(t.link)].kind == DhMountKind::TubeAdapter)
             add_part(body, adapter, t.to - (t.distal_allowance - spec.adapter_length / 2.0) * u);
+    }
+    for (const PrintedDhLink& p : printed) {
+        const kinematics::DhRow& r = chain.rows[static_cast<std::size_t>(p.link)];
+        // The part is drawn along +x from the horn, standing on it along
+        // +z. A negative a turns it about the axis; below a module (d < 0)
+        // it hangs from the output, turned over about x. Like every part of
+        // the model it sits on the chain's lines: the horn's face on the a
+        // segment, where the tube ran.
+        Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+        if (r.a < 0.0) R = Eigen::AngleAxisd(geometry::kPi, Vec3::UnitZ()) * R;
+        if (r.d < 0.0) R = R * Eigen::AngleAxisd(geometry::kPi, Vec3::UnitX());
+        add_part(model.links[static_cast<std::size_t>(p.link)], p.part.mass,
+                 R * p.part.com + Vec3(0.0, 0.0, r.d), R * p.part.inertia * R.transpose());
     }
     for (int k : stack.corners) {
         const kinematics::DhRow& r = chain.rows[static_cast<std::size_t>(k)];

@@ -17,7 +17,7 @@ std::vector<JointLoad> joint_loads(const DhArmModel& model,
 
 ModuleSelection select_modules(const task::SpatialTask& task, const kinematics::DhChain& chain,
                                const std::vector<control::Sample>& samples,
-                               const Catalog& catalog) {
+                               const Catalog& catalog, const std::vector<PrintedDhLink>& printed) {
     const std::vector<const Actuator*> allowed = allowed_actuators(task.robot.modules, catalog);
     const int n = chain.dof();
     const bool timed =
@@ -31,7 +31,7 @@ ModuleSelection select_modules(const task::SpatialTask& task, const kinematics::
         return out;
     }
     return choose_modules(n, allowed, [&](const std::vector<const Actuator*>& modules) {
-        return joint_loads(dh_arm_model(task.robot, chain, catalog, modules), samples);
+        return joint_loads(dh_arm_model(task.robot, chain, catalog, modules, printed), samples);
     });
 }
 

@@ -1,7 +1,9 @@
 #include <modsynth/output/parts_export.h>
 
 #include <filesystem>
+#include <functional>
 
+#include <modsynth/hardware/select_dh_modules.h>
 #include <modsynth/hardware/select_modules.h>
 #include <modsynth/text/format.h>
 
@@ -54,58 +56,24 @@ std::vector<const hardware::Actuator*> modules_to_print(
     return modules;
 }
 
-}  // namespace
-
-std::optional<parts::PrintedParts> export_parts(const task::SpatialTask& task,
-                                                const std::optional<hardware::Catalog>& catalog,
-                                                synth::Solution& solution,
-                                                const std::string& folder,
-                                                std::vector<std::string>& notes) {
-    const std::vector<const hardware::Actuator*> modules =
-        modules_to_print(catalog, solution, folder, notes);
-    if (modules.empty()) return std::nullopt;
-    const parts::PrintSettings settings;
-    std::vector<std::string> layout;
-    const std::vector<parts::LinkDesign> links =
-        parts::dh_links(task.robot, *solution.dh_robot, modules, settings, layout);
-    parts::PrintedParts printed = parts::write_printed_parts(
-        links,
-        parts::module_mount(*modules.front(), {task.robot.module_length, task.robot.module_width,
-                                               task.robot.module_height}),
-        task.robot.ee_rod_diameter, folder, "modsynth: " + task.name, settings);
-    // The spatial arm's dynamics keep the tubes (dh_arm_model.h): the
-    // printed links span only the a parts of the chain.
-    printed.bodies.clear();
-    layout.push_back(
-        "the spatial arm's dynamics keep the tubes' masses: the printed links span "
-        "only the a parts of the chain");
-    printed.notes.insert(printed.notes.begin(), layout.begin(), layout.end());
-    for (const auto& n : printed.notes) notes.push_back("--parts: " + n);
-    return printed;
-}
-
-std::optional<parts::PrintedParts> export_parts(const task::Task& task,
-                                                const std::optional<hardware::Catalog>& catalog,
-                                                synth::Solution& solution,
-                                                const std::string& folder,
-                                                std::vector<std::string>& notes) {
-    std::vector<const hardware::Actuator*> modules =
-        modules_to_print(catalog, solution, folder, notes);
-    if (modules.empty()) return std::nullopt;
-    const parts::PrintSettings settings;
-    const hardware::Dimensions housing{task.robot.module_length, task.robot.module_width,
-                                       task.robot.module_height};
+/// Prints the parts for `modules`, chooses the modules again with the
+/// printed links in the dynamics and prints again for the new choice, until
+/// it holds or kPartsRounds have run: a link sized for a stronger module is
+/// heavier, which may call for a stronger module inwards. Without rendered
+/// links (no masses) the tubes' choice stands.
+std::optional<parts::PrintedParts> print_and_choose(
+    std::vector<const hardware::Actuator*> modules, const hardware::Catalog& catalog,
+    synth::Solution& solution, const std::string& folder, std::vector<std::string>& notes,
+    const std::function<parts::PrintedParts(const std::vector<const hardware::Actuator*>&)>&
+        print,
+    const std::function<hardware::ModuleSelection(const parts::PrintedParts&)>& choose) {
     std::optional<parts::PrintedParts> printed;
     for (int round = 0; round < kPartsRounds; ++round) {
-        printed = parts::write_printed_parts(
-            parts::planar_links(task.robot, solution.robot, modules, settings),
-            parts::module_mount(*modules.front(), housing), task.robot.ee_rod_diameter, folder,
-            "modsynth: " + task.name, settings);
+        printed = print(modules);
         if (printed->bodies.empty()) break;
-        solution.modules = hardware::select_modules(task, solution.robot, solution.samples,
-                                                    *catalog, printed->bodies);
-        const std::vector<const hardware::Actuator*> again = chosen(*solution.modules, *catalog);
-        if (names(again) == names(modules)) break;
+        solution.modules = choose(*printed);
+        const std::vector<const hardware::Actuator*> again = chosen(*solution.modules, catalog);
+        if (again.empty() || names(again) == names(modules)) break;
         if (round + 1 == kPartsRounds) {
             notes.push_back(
                 format("--parts %s: the modules the printed links call for changed in "
@@ -117,6 +85,63 @@ std::optional<parts::PrintedParts> export_parts(const task::Task& task,
     }
     for (const auto& n : printed->notes) notes.push_back("--parts: " + n);
     return printed;
+}
+
+}  // namespace
+
+std::optional<parts::PrintedParts> export_parts(const task::SpatialTask& task,
+                                                const std::optional<hardware::Catalog>& catalog,
+                                                synth::Solution& solution,
+                                                const std::string& folder,
+                                                std::vector<std::string>& notes) {
+    const std::vector<const hardware::Actuator*> modules =
+        modules_to_print(catalog, solution, folder, notes);
+    if (modules.empty()) return std::nullopt;
+    const parts::PrintSettings settings;
+    const auto print = [&](const std::vector<const hardware::Actuator*>& m) {
+        std::vector<std::string> layout;
+        const std::vector<parts::LinkDesign> links =
+            parts::dh_links(task.robot, *solution.dh_robot, m, settings, layout);
+        parts::PrintedParts printed = parts::write_printed_parts(
+            links,
+            parts::module_mount(*m.front(), {task.robot.module_length, task.robot.module_width,
+                                             task.robot.module_height}),
+            task.robot.ee_rod_diameter, folder, "modsynth: " + task.name, settings);
+        printed.notes.insert(printed.notes.begin(), layout.begin(), layout.end());
+        return printed;
+    };
+    const auto choose = [&](const parts::PrintedParts& printed) {
+        std::vector<hardware::PrintedDhLink> bodies;
+        for (std::size_t i = 0; i < printed.solids.size(); ++i)
+            bodies.push_back({printed.links[i].index - 1, printed.solids[i]});
+        return hardware::select_modules(task, *solution.dh_robot, solution.samples, *catalog,
+                                        bodies);
+    };
+    return print_and_choose(modules, *catalog, solution, folder, notes, print, choose);
+}
+
+std::optional<parts::PrintedParts> export_parts(const task::Task& task,
+                                                const std::optional<hardware::Catalog>& catalog,
+                                                synth::Solution& solution,
+                                                const std::string& folder,
+                                                std::vector<std::string>& notes) {
+    const std::vector<const hardware::Actuator*> modules =
+        modules_to_print(catalog, solution, folder, notes);
+    if (modules.empty()) return std::nullopt;
+    const parts::PrintSettings settings;
+    const hardware::Dimensions housing{task.robot.module_length, task.robot.module_width,
+                                       task.robot.module_height};
+    const auto print = [&](const std::vector<const hardware::Actuator*>& m) {
+        return parts::write_printed_parts(
+            parts::planar_links(task.robot, solution.robot, m, settings),
+            parts::module_mount(*m.front(), housing), task.robot.ee_rod_diameter, folder,
+            "modsynth: " + task.name, settings);
+    };
+    const auto choose = [&](const parts::PrintedParts& printed) {
+        return hardware::select_modules(task, solution.robot, solution.samples, *catalog,
+                                        printed.bodies);
+    };
+    return print_and_choose(modules, *catalog, solution, folder, notes, print, choose);
 }
 
 std::string printed_parts_section(const parts::PrintedParts& p) {
@@ -147,7 +172,7 @@ std::string printed_parts_section(const parts::PrintedParts& p) {
             "which the module choice above carries in place of the tubes':",
             ps.material.density, ps.solid_fraction);
         for (std::size_t k = 0; k < p.bodies.size(); ++k)
-            s += format(" link %zu %.0f g%s", k + 1, p.bodies[k].mass * 1000.0,
+            s += format(" link %d %.0f g%s", p.links[k].index, p.bodies[k].mass * 1000.0,
                         k + 1 < p.bodies.size() ? "," : ".\n");
     }
     bool provisional = false;

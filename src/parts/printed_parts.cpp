@@ -94,6 +94,16 @@ hardware::PrintedLink link_body(const Mesh& mesh_mm, const PrintSettings& settin
     return body;
 }
 
+hardware::RigidBody link_solid(const Mesh& mesh_mm, const PrintSettings& settings) {
+    const MassProperties p = mass_properties(mesh_mm);
+    const double density = settings.printed_density();
+    hardware::RigidBody body;
+    body.mass = p.volume * 1e-9 * density;
+    body.com = p.centroid / 1000.0;
+    body.inertia = p.inertia * 1e-15 * density;
+    return body;
+}
+
 namespace {
 
 void write_source(const std::string& path, const std::string& text) {
@@ -131,6 +141,7 @@ void render_and_check(PartFile& f, const LinkDesign* link, PrintedParts& parts, 
         found.push_back(s.message);
         ok = ok && s.ok;
         parts.bodies.push_back(link_body(mesh, parts.settings));
+        parts.solids.push_back(link_solid(mesh, parts.settings));
         found.push_back(text::format("%.0f g", parts.bodies.back().mass * 1000.0));
     }
     f.checks_ok = ok;
@@ -179,7 +190,10 @@ PrintedParts write_printed_parts(const std::vector<LinkDesign>& links, const Mod
         parts.rendered = parts.rendered && !f.stl.empty();
         parts.checks_ok = parts.checks_ok && f.checks_ok;
     }
-    if (parts.bodies.size() != links.size()) parts.bodies.clear();
+    if (parts.bodies.size() != links.size()) {
+        parts.bodies.clear();
+        parts.solids.clear();
+    }
     return parts;
 }
 

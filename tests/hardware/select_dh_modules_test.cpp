@@ -148,3 +148,96 @@ TEST_CASE("spatial module choice runs across the families named and totals the c
     CHECK(sel.cost.find("cost: ") == 0);
     CHECK(sel.cost.find(" total $") != std::string::npos);
 }
+
+namespace {
+
+/// A printed link of `mass` kg whose centre is `com` in the frame it is
+/// drawn in, with a small inertia of its own.
+hardware::PrintedDhLink printed_link(int link, double mass, const geometry::Vec3& com) {
+    hardware::PrintedDhLink p;
+    p.link = link;
+    p.part.mass = mass;
+    p.part.com = com;
+    p.part.inertia = mass * 1e-3 * Eigen::Matrix3d::Identity();
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("a spatial arm model carries the printed links in place of the a tubes",
+          "[hardware][parts]") {
+    const Catalog catalog = hardware::load_default_catalog();
+    const hardware::Actuator* x5 = catalog.actuator("X5-1");
+    REQUIRE(x5);
+    const std::vector<const hardware::Actuator*> modules{x5, x5};
+    task::SpatialRobotSpec spec;
+    kinematics::DhChain chain;
+    chain.link_diameter = spec.link_diameter;
+    chain.rows = {{0.30, 0.0, 0.0}, {0.25, 0.0, 0.0}};
+    const geometry::Vec3 c(0.14, 0.002, 0.009);
+    // Link 1 is only its a part: the printed link (its tube and both
+    // adapters gone) and module 2's housing on o_1.
+    const auto model = hardware::dh_arm_model(spec, chain, catalog, modules,
+                                              {printed_link(0, 0.2, c)});
+    const hardware::RigidBody& body = model.links[0];
+    CHECK(body.mass == Approx(0.2 + x5->mass));
+    const geometry::Vec3 centre = (0.2 * c + x5->mass * geometry::Vec3(0.30, 0.0, 0.0)) /
+                                  (0.2 + x5->mass);
+    CHECK((body.com - centre).norm() < 1e-12);
+    // Unprinted, the link weighs its tube and adapters too.
+    const auto tubes = hardware::dh_arm_model(spec, chain, catalog, modules);
+    CHECK(tubes.links[0].mass > x5->mass + catalog.adapter().mass);
+    CHECK(tubes.links[1].mass == Approx(model.links[1].mass));
+
+    // Where a link also has d and a twist, the d tube and the brackets
+    // stay: what a heavier print adds is its own mass, at its centre placed
+    // in the joint frame (d < 0: hanging from the output, turned over; a <
+    // 0: turned about the axis).
+    for (const double a : {0.30, -0.30}) {
+        chain.rows = {{a, geometry::kPi / 2, -0.05}, {0.25, 0.0, 0.0}};
+        const auto light = hardware::dh_arm_model(spec, chain, catalog, modules,
+                                                  {printed_link(0, 0.1, c)});
+        const auto heavy = hardware::dh_arm_model(spec, chain, catalog, modules,
+                                                  {printed_link(0, 0.6, c)});
+        const auto& l = light.links[0];
+        const auto& h = heavy.links[0];
+        CHECK(h.mass - l.mass == Approx(0.5));
+        const double s = a < 0.0 ? -1.0 : 1.0;
+        const geometry::Vec3 placed(s * c.x(), -s * c.y(), -0.05 - c.z());
+        CHECK(((h.mass * h.com - l.mass * l.com) / 0.5 - placed).norm() < 1e-12);
+        // More than the printed links: the d tube and the corner bracket.
+        CHECK(l.mass > 0.1 + x5->mass + hardware::mount_part(catalog, true).mass);
+    }
+    chain.rows = {{0.0, geometry::kPi / 2, 0.3}, {0.25, 0.0, 0.0}};
+    CHECK_THROWS_AS(hardware::dh_arm_model(spec, chain, catalog, modules,
+                                           {printed_link(0, 0.1, c)}),
+                    std::invalid_argument);
+}
+
+TEST_CASE("printed links' masses enter the spatial choice in place of the tubes'",
+          "[hardware][parts]") {
+    const Catalog catalog = hardware::load_default_catalog();
+    Planted p = planted("s3-0001");
+    const auto& chain = *p.solution.dh_robot;
+    const auto tubes = hardware::select_modules(p.task, chain, p.solution.samples, catalog);
+    REQUIRE(tubes.carried());
+    // Light printed links lower the shoulder's load (joint 2, about a
+    // horizontal axis); heavy ones (3 kg at each a part's middle) raise it
+    // past what the tubes needed.
+    const auto with = [&](double mass) {
+        std::vector<hardware::PrintedDhLink> printed;
+        for (int k = 0; k < chain.dof(); ++k) {
+            const double a = chain.rows[static_cast<std::size_t>(k)].a;
+            if (std::abs(a) > 0.001)
+                printed.push_back(printed_link(k, mass, geometry::Vec3(std::abs(a) / 2, 0.0, 0.01)));
+        }
+        REQUIRE(printed.size() == 2);
+        return hardware::select_modules(p.task, chain, p.solution.samples, catalog, printed);
+    };
+    const auto light = with(0.05);
+    const auto heavy = with(3.0);
+    CHECK(light.joints[1].load.peak_torque < tubes.joints[1].load.peak_torque);
+    CHECK(heavy.joints[1].load.peak_torque > tubes.joints[1].load.peak_torque);
+    CHECK(catalog.actuator(heavy.joints[1].module)->peak_torque >
+          catalog.actuator(tubes.joints[1].module)->peak_torque);
+}

@@ -133,6 +133,15 @@ TEST_CASE("a link's mass is its mesh's volume at the printed density", "[parts]"
     CHECK(body.mass == Approx(20e-6 * 1240.0 * 0.7));
     CHECK(body.com == Approx(0.05));
     CHECK(body.inertia == Approx(body.mass * (0.1 * 0.1 + 0.02 * 0.02) / 12.0));
+    // As a solid, in m in the frame it is drawn in: the centre off the bed,
+    // the whole tensor, its moment about z the same.
+    const auto solid = link_solid(m, s);
+    CHECK(solid.mass == Approx(body.mass));
+    CHECK((solid.com - Vec3(0.05, 0.0, 0.005)).norm() < 1e-12);
+    CHECK(solid.inertia(2, 2) == Approx(body.inertia));
+    CHECK(solid.inertia(0, 0) == Approx(body.mass * (0.02 * 0.02 + 0.01 * 0.01) / 12.0));
+    CHECK(solid.inertia(1, 1) == Approx(body.mass * (0.1 * 0.1 + 0.01 * 0.01) / 12.0));
+    CHECK(std::abs(solid.inertia(0, 1)) < 1e-12);
 }
 
 TEST_CASE("admesh's report is read, and anything it fixed fails the check", "[parts]") {

@@ -40,13 +40,28 @@ struct DhArmModel {
     geometry::Vec3 gravity = geometry::Vec3(0.0, 0.0, -9.81);  ///< m/s^2, task frame
 };
 
+/// A link printed in one piece for the a part of a DH link (parts/): what
+/// its mesh weighs, in the frame the part is drawn in (parts/scad_writer.h,
+/// in m): the origin on the horn's axis at the face the horn bolts to, z
+/// along that axis away from the module, x towards the next axis.
+struct PrintedDhLink {
+    int link = 0;  ///< 0-based: the a part of link link + 1
+    RigidBody part;
+};
+
 /// The model of `chain` built from `modules` (one per joint, module k at
 /// joint k). Tubes are the catalog's closest to the link diameter, the tool
 /// a rod of the one closest to `ee_rod_diameter` over `tool_length`; the
-/// payload sits at the EE. Throws std::invalid_argument when the module
-/// count is not the joint count.
+/// payload sits at the EE. With `printed` (`modsynth solve --parts`), a
+/// printed link's part replaces the a tube of its link and that tube's
+/// adapters (it bolts straight to the modules); it lies along a_k with the
+/// horn's face at the height d_k where the tube ran (turned over below a
+/// module, d_k < 0), and the d tubes, brackets and housings stay. Throws std::invalid_argument when the module
+/// count is not the joint count, or a printed link names no link with an
+/// a part.
 DhArmModel dh_arm_model(const task::SpatialRobotSpec& spec, const kinematics::DhChain& chain,
-                        const Catalog& catalog, const std::vector<const Actuator*>& modules);
+                        const Catalog& catalog, const std::vector<const Actuator*>& modules,
+                        const std::vector<PrintedDhLink>& printed = {});
 
 /// The catalog's part for a mount or corner bracket of that kind (the
 /// tube adapter, else the right-angle bracket, whose mass stands in for a

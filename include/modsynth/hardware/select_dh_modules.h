@@ -25,9 +25,11 @@ std::vector<JointLoad> joint_loads(const DhArmModel& model,
 
 /// Unchecked (selection.checked false, `message` says why) when a sample
 /// lacks qd or qdd. Throws task::InputError naming robot.modules[i] for a
-/// name the catalog does not have.
+/// name the catalog does not have. With `printed`, those links' a parts are
+/// the printed parts (dh_arm_model).
 ModuleSelection select_modules(const task::SpatialTask& task, const kinematics::DhChain& chain,
-                               const std::vector<control::Sample>& samples, const Catalog& catalog);
+                               const std::vector<control::Sample>& samples, const Catalog& catalog,
+                               const std::vector<PrintedDhLink>& printed = {});
 
 /// The modules a spatial arm is drawn and described with when none were
 /// chosen for a load: the strongest allowed (by peak torque) at every joint.

@@ -2,7 +2,8 @@
 // `--parts DIR` of solve and export: the printed parts of a solved arm
 // (parts/printed_parts.h) written for the modules chosen for it, and the
 // modules chosen again with the printed links' masses in the dynamics in
-// place of the tubes' (hardware/arm_model.h), until the choice holds.
+// place of the tubes' (hardware/arm_model.h, hardware/dh_arm_model.h), until
+// the choice holds.
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,8 +31,9 @@ std::optional<parts::PrintedParts> export_parts(const task::Task& task,
                                                 const std::string& folder,
                                                 std::vector<std::string>& notes);
 
-/// The same for a solved spatial solution (parts::dh_links); its modules
-/// stay as chosen with the tubes, whose masses the spatial dynamics keep.
+/// The same for a solved spatial solution (parts::dh_links): each printed
+/// link replaces the tube of its link's a part in the dynamics
+/// (hardware/dh_arm_model.h); the d tubes and the brackets stay.
 std::optional<parts::PrintedParts> export_parts(const task::SpatialTask& task,
                                                 const std::optional<hardware::Catalog>& catalog,
                                                 synth::Solution& solution,

@@ -10,6 +10,7 @@
 
 #include <modsynth/hardware/arm_model.h>
 #include <modsynth/hardware/catalog.h>
+#include <modsynth/hardware/dh_arm_model.h>
 #include <modsynth/kinematics/dh_chain.h>
 #include <modsynth/kinematics/robot.h>
 #include <modsynth/parts/link_design.h>
@@ -37,6 +38,9 @@ struct PrintedParts {
     /// One per link, from its mesh (kg, m, kg m^2 about the joint axis);
     /// empty when the links were not rendered.
     std::vector<hardware::PrintedLink> bodies;
+    /// The same meshes as solids (link_solid), for a spatial arm's
+    /// dynamics; empty when bodies is.
+    std::vector<hardware::RigidBody> solids;
     bool rendered = false;           ///< every file has its STL
     bool checks_ok = false;          ///< rendered, and every check passed
     std::vector<std::string> notes;  ///< warnings: no openscad, a check that failed
@@ -80,5 +84,9 @@ PrintedParts write_printed_parts(const std::vector<LinkDesign>& links, const Mod
 /// volume times the printed density, its centre of mass along the link,
 /// its moment about the joint axis through that centre.
 hardware::PrintedLink link_body(const Mesh& mesh_mm, const PrintSettings& settings);
+
+/// The same link as a solid in m, in the frame the source draws it in
+/// (scad_writer.h): its mass, centre of mass and inertia tensor about it.
+hardware::RigidBody link_solid(const Mesh& mesh_mm, const PrintSettings& settings);
 
 }  // namespace modsynth::parts
