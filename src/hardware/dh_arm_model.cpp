@@ -58,8 +58,7 @@ DhArmModel dh_arm_model(const task::SpatialRobotSpec& spec, const kinematics::Dh
         throw std::invalid_argument("dh_arm_model: one module per joint");
     std::vector<bool> is_printed(static_cast<std::size_t>(n), false);
     for (const PrintedDhLink& p : printed) {
-        if (p.link < 0 || p.link >= n ||
-            chain.rows[static_cast<std::size_t>(p.link)].a == 0.0)
+        if (p.link < 0 || p.link >= n || chain.rows[static_cast<std::size_t>(p.link)].a == 0.0)
             throw std::invalid_argument("dh_arm_model: a printed link on a link without an a part");
         is_printed[static_cast<std::size_t>(p.link)] = true;
     }

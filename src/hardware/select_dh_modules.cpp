@@ -16,8 +16,8 @@ std::vector<JointLoad> joint_loads(const DhArmModel& model,
 }
 
 ModuleSelection select_modules(const task::SpatialTask& task, const kinematics::DhChain& chain,
-                               const std::vector<control::Sample>& samples,
-                               const Catalog& catalog, const std::vector<PrintedDhLink>& printed) {
+                               const std::vector<control::Sample>& samples, const Catalog& catalog,
+                               const std::vector<PrintedDhLink>& printed) {
     const std::vector<const Actuator*> allowed = allowed_actuators(task.robot.modules, catalog);
     const int n = chain.dof();
     const bool timed =

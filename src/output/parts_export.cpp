@@ -64,8 +64,7 @@ std::vector<const hardware::Actuator*> modules_to_print(
 std::optional<parts::PrintedParts> print_and_choose(
     std::vector<const hardware::Actuator*> modules, const hardware::Catalog& catalog,
     synth::Solution& solution, const std::string& folder, std::vector<std::string>& notes,
-    const std::function<parts::PrintedParts(const std::vector<const hardware::Actuator*>&)>&
-        print,
+    const std::function<parts::PrintedParts(const std::vector<const hardware::Actuator*>&)>& print,
     const std::function<hardware::ModuleSelection(const parts::PrintedParts&)>& choose) {
     std::optional<parts::PrintedParts> printed;
     for (int round = 0; round < kPartsRounds; ++round) {

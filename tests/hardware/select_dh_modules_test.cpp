@@ -177,12 +177,12 @@ TEST_CASE("a spatial arm model carries the printed links in place of the a tubes
     const geometry::Vec3 c(0.14, 0.002, 0.009);
     // Link 1 is only its a part: the printed link (its tube and both
     // adapters gone) and module 2's housing on o_1.
-    const auto model = hardware::dh_arm_model(spec, chain, catalog, modules,
-                                              {printed_link(0, 0.2, c)});
+    const auto model =
+        hardware::dh_arm_model(spec, chain, catalog, modules, {printed_link(0, 0.2, c)});
     const hardware::RigidBody& body = model.links[0];
     CHECK(body.mass == Approx(0.2 + x5->mass));
-    const geometry::Vec3 centre = (0.2 * c + x5->mass * geometry::Vec3(0.30, 0.0, 0.0)) /
-                                  (0.2 + x5->mass);
+    const geometry::Vec3 centre =
+        (0.2 * c + x5->mass * geometry::Vec3(0.30, 0.0, 0.0)) / (0.2 + x5->mass);
     CHECK((body.com - centre).norm() < 1e-12);
     // Unprinted, the link weighs its tube and adapters too.
     const auto tubes = hardware::dh_arm_model(spec, chain, catalog, modules);
@@ -195,10 +195,10 @@ TEST_CASE("a spatial arm model carries the printed links in place of the a tubes
     // 0: turned about the axis).
     for (const double a : {0.30, -0.30}) {
         chain.rows = {{a, geometry::kPi / 2, -0.05}, {0.25, 0.0, 0.0}};
-        const auto light = hardware::dh_arm_model(spec, chain, catalog, modules,
-                                                  {printed_link(0, 0.1, c)});
-        const auto heavy = hardware::dh_arm_model(spec, chain, catalog, modules,
-                                                  {printed_link(0, 0.6, c)});
+        const auto light =
+            hardware::dh_arm_model(spec, chain, catalog, modules, {printed_link(0, 0.1, c)});
+        const auto heavy =
+            hardware::dh_arm_model(spec, chain, catalog, modules, {printed_link(0, 0.6, c)});
         const auto& l = light.links[0];
         const auto& h = heavy.links[0];
         CHECK(h.mass - l.mass == Approx(0.5));
@@ -209,9 +209,9 @@ TEST_CASE("a spatial arm model carries the printed links in place of the a tubes
         CHECK(l.mass > 0.1 + x5->mass + hardware::mount_part(catalog, true).mass);
     }
     chain.rows = {{0.0, geometry::kPi / 2, 0.3}, {0.25, 0.0, 0.0}};
-    CHECK_THROWS_AS(hardware::dh_arm_model(spec, chain, catalog, modules,
-                                           {printed_link(0, 0.1, c)}),
-                    std::invalid_argument);
+    CHECK_THROWS_AS(
+        hardware::dh_arm_model(spec, chain, catalog, modules, {printed_link(0, 0.1, c)}),
+        std::invalid_argument);
 }
 
 TEST_CASE("printed links' masses enter the spatial choice in place of the tubes'",
@@ -229,7 +229,8 @@ TEST_CASE("printed links' masses enter the spatial choice in place of the tubes'
         for (int k = 0; k < chain.dof(); ++k) {
             const double a = chain.rows[static_cast<std::size_t>(k)].a;
             if (std::abs(a) > 0.001)
-                printed.push_back(printed_link(k, mass, geometry::Vec3(std::abs(a) / 2, 0.0, 0.01)));
+                printed.push_back(
+                    printed_link(k, mass, geometry::Vec3(std::abs(a) / 2, 0.0, 0.01)));
         }
         REQUIRE(printed.size() == 2);
         return hardware::select_modules(p.task, chain, p.solution.samples, catalog, printed);

@@ -56,9 +56,8 @@ struct PrintedDhLink {
 /// printed link's part replaces the a tube of its link and that tube's
 /// adapters (it bolts straight to the modules); it lies along a_k with the
 /// horn's face at the height d_k where the tube ran (turned over below a
-/// module, d_k < 0), and the d tubes, brackets and housings stay. Throws std::invalid_argument when the module
-/// count is not the joint count, or a printed link names no link with an
-/// a part.
+/// module, d_k < 0), and the d tubes, brackets and housings stay. Throws std::invalid_argument when
+/// the module count is not the joint count, or a printed link names no link with an a part.
 DhArmModel dh_arm_model(const task::SpatialRobotSpec& spec, const kinematics::DhChain& chain,
                         const Catalog& catalog, const std::vector<const Actuator*>& modules,
                         const std::vector<PrintedDhLink>& printed = {});
