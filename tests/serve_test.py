@@ -779,6 +779,40 @@ def test_hostile_imports_and_slow_bodies():
         s.stop()
 
 
+def test_connection_burst():
+    """200 connections opened at once, each with a whole request, are all
+    answered: the listen queue takes the burst rather than leaving it to
+    SYN cookies, which reset some connections the client thinks open."""
+    with Server() as s:
+        socks = []
+        for _ in range(200):
+            sock = socket.socket()
+            sock.setblocking(False)
+            sock.connect_ex(("127.0.0.1", s.port))
+            socks.append(sock)
+        statuses = []
+        try:
+            for sock in socks:
+                sock.setblocking(True)
+                sock.settimeout(20)
+                try:
+                    sock.sendall(b"GET /api/info HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n")
+                    reply = b""
+                    while len(reply) < 12:
+                        chunk = sock.recv(4096)
+                        if not chunk:
+                            break
+                        reply += chunk
+                    statuses.append(reply[9:12].decode(errors="replace") or "closed")
+                except OSError as e:
+                    statuses.append(type(e).__name__)
+        finally:
+            for sock in socks:
+                sock.close()
+        counts = {k: statuses.count(k) for k in sorted(set(statuses))}
+        check(counts == {"200": 200}, "a burst of 200 connections is answered on each: %s" % counts)
+
+
 def test_slow_body_keeps_alive():
     """A body sent in pieces, slower than a worker would wait between reads
     but within the body's deadline, is read whole; a chunked one too; and a
@@ -816,7 +850,7 @@ def main():
              test_chunked_body_limit, test_host_rule, test_port_in_use, test_media_type,
              test_whole_replies, test_slow_clients, test_solves_hold_no_sockets,
              test_shutdown_kills_solves, test_import_drawing, test_hostile_imports_and_slow_bodies,
-             test_slow_body_keeps_alive]
+             test_slow_body_keeps_alive, test_connection_burst]
     for t in tests:
         started = time.monotonic()
         try:

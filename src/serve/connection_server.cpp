@@ -36,6 +36,10 @@ constexpr std::size_t kLingerBytes = 8u << 20;
 constexpr std::size_t kLargestBody = 64u << 20;
 constexpr std::size_t kChunkFraming = 64u << 10;
 constexpr std::size_t kLongestChunkLine = 1024;
+// Connections the kernel completes before they are accepted: more than the
+// connection limit, so that a burst up to it is never left to SYN cookies
+// (the kernel caps this at net.core.somaxconn).
+constexpr int kListenBacklog = 1024;
 
 Clock::time_point after(double seconds) {
     return Clock::now() +
@@ -304,6 +308,12 @@ ConnectionServer::~ConnectionServer() {
     for (auto& c : incoming_) close(c);
     for (auto& c : ready_) close(c);
     ::close(wake_fd_);
+}
+
+bool ConnectionServer::listen_after_bind() {
+    // listen() again on a listening socket only sets its backlog.
+    if (svr_sock_ != INVALID_SOCKET) ::listen(svr_sock_, kListenBacklog);
+    return httplib::Server::listen_after_bind();
 }
 
 bool ConnectionServer::process_and_close_socket(socket_t sock) {

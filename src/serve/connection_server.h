@@ -42,6 +42,12 @@ public:
 
     const ConnectionLimits& limits() const { return limits_; }
 
+    /// httplib's, with a listen backlog that takes a burst of connections:
+    /// its own backlog of 5 overflows when dozens connect at once, and the
+    /// kernel then answers with SYN cookies, a failed one of which resets a
+    /// connection the client already thinks open.
+    bool listen_after_bind();
+
 private:
     using Clock = std::chrono::steady_clock;
     struct Connection {
