@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # scripts/loop-tasks: a closed polygon of 128 segments round a post (the
-# issue's loop) and a square of 256 drawn by a seed are solved with 3 joints
-# (2 are proved impossible by the loop round the post), each well within its
-# time limit, and the shared grader passes the solutions.
+# issue's loop), a square of 256 drawn by a seed and the loop as one circle
+# primitive are solved with 3 joints (2 are proved impossible by the loop
+# round the post), each well within its time limit, and the shared grader
+# passes the solutions.
 # Arguments: modsynth, source root, shared folder (default:
 # MODSYNTH_SHARED_DIR, else beside the source root).
 set -u
@@ -15,7 +16,10 @@ python3 "$gen" --out "$tmp/a" --shape polygon --segments 128 >"$tmp/gen" 2>&1 ||
     fail "generator exit $?: $(tail -3 "$tmp/gen")"
 python3 "$gen" --out "$tmp/a" --shape square --segments 256 --seed 5 >>"$tmp/gen" 2>&1 ||
     fail "generator exit $?: $(tail -3 "$tmp/gen")"
-for task in "$tmp/a/polygon-128.task.json" "$tmp/a/square-256-s5-0.task.json"; do
+python3 "$gen" --out "$tmp/a" --shape circle >>"$tmp/gen" 2>&1 ||
+    fail "generator exit $?: $(tail -3 "$tmp/gen")"
+for task in "$tmp/a/polygon-128.task.json" "$tmp/a/square-256-s5-0.task.json" \
+    "$tmp/a/circle-1.task.json"; do
     name=$(basename "$task" .task.json)
     # A few seconds on one loaded core; the limit leaves room.
     "$bin" solve "$task" -o "$tmp/sol.json" --time-limit 60 >"$tmp/out" 2>&1

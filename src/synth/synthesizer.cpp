@@ -32,6 +32,7 @@
 #include <modsynth/synth/design_choice.h>
 #include <modsynth/synth/initial_guess.h>
 #include <modsynth/synth/proximal_plan.h>
+#include <modsynth/synth/split_circles.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -353,8 +354,9 @@ bool Search::ruled_out(int dof, FrontStageVerdicts& verdicts) {
     stats_.front_seconds += t0.seconds();
     if (!loop) return false;
     const std::string why = prove::describe_loop(task_, *loop) +
-                            ", and modsynth's motions keep the first " + std::to_string(dof - 2) +
-                            (dof == 3 ? " link" : " links") + " still along a primitive";
+                            ", and modsynth's motions keep the first " +
+                            (dof == 3 ? std::string("link") : std::to_string(dof - 2) + " links") +
+                            " still along a primitive";
     say(run::Stage::Search, std::to_string(dof) + " joints: not searched: " + why);
     tried_.push_back(std::to_string(dof) + " joints not searched (" + why + ")");
     verdicts.all_unsat = false;
@@ -902,12 +904,66 @@ verify::VerifyOptions verify_options_for(const task::Task& task, const Synthesis
     return verify::options_for(motion_options_for(task, options), options.verify);
 }
 
+namespace {
+
+// A circle that winds round an obstacle is out of reach of modsynth's
+// motions as it stands (Search::ruled_out): cut into arcs, it is searched
+// again with what is left of the time, fewer arcs first (each cut is one
+// more place where the first link may turn, and one more transition to
+// plan). The motion found is read back as one of the circle and certified
+// against the task as written.
+Solution through_arcs(const task::Task& task, const SynthesisOptions& options,
+                      SynthesisStats& stats, Solution unknown, const run::Stopwatch& clock) {
+    const auto loop = prove::loop_around_obstacle(task, 1);
+    if (!loop || *std::max_element(task.robot.dof.begin(), task.robot.dof.end()) < 3)
+        return unknown;
+    std::vector<std::string> tried;
+    for (const int arcs : {8, 16, 32}) {
+        const double left = options.time_limit - clock.seconds();
+        if (left < 0.1) break;
+        const SplitTask split = split_circles(task, arcs);
+        SynthesisOptions o = options;
+        o.time_limit = left;
+        const double before = clock.seconds();
+        if (options.progress)
+            o.progress = [&](const run::ProgressEvent& e) {
+                options.progress({e.stage, e.message, before + e.elapsed});
+            };
+        const std::string cut =
+            text::format("%s cut into %d arcs", task::part_name(task, loop->first).c_str(), arcs);
+        if (o.progress)
+            o.progress(
+                {run::Stage::Search, cut + ", so that the first link may turn inside it", 0.0});
+        Solution found = Search(split.task, o, stats).run();
+        if (found.status != Status::Solved) {
+            tried.push_back(cut + ": " + to_string(found.status.kind));
+            continue;
+        }
+        found.samples = join_arcs(task, split, std::move(found.samples));
+        found.certificate =
+            verify::certify(task, found.robot, found.samples, verify_options_for(task, options));
+        if (found.certificate.ok) return found;
+        tried.push_back(cut + ": its motion read back as one of the circle failed verification (" +
+                        (found.certificate.violations.empty()
+                             ? std::string("no reason given")
+                             : found.certificate.violations.front().message) +
+                        ")");
+    }
+    if (!tried.empty()) unknown.explanation.message += " Then " + join(tried, "; ") + ".";
+    return unknown;
+}
+
+}  // namespace
+
 Solution synthesize(const task::Task& task, const SynthesisOptions& options,
                     SynthesisStats* stats) {
     text::require_valid(options);
     SynthesisStats local;
-    Search search(task, options, stats ? *stats : local);
-    return search.run();
+    SynthesisStats& s = stats ? *stats : local;
+    const run::Stopwatch clock;
+    Solution out = Search(task, options, s).run();
+    if (out.status != Status::Unknown) return out;
+    return through_arcs(task, options, s, std::move(out), clock);
 }
 
 }  // namespace modsynth::synth
