@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
+#include <unordered_map>
 
 #include <modsynth/drawing/biarc_fit.h>
+#include <modsynth/geometry/distance.h>
 
 namespace modsynth::drawing {
 
@@ -145,10 +149,357 @@ std::optional<Replacement> candidate(const std::vector<Primitive>& chain, std::s
     return r;
 }
 
+
+/// The drawing a chain was fitted to, as a polyline whose points are at
+/// most an eighth of the tolerance apart, filed in a grid of cells a bit
+/// wider than the tolerance: how near a point lies to the drawing, and
+/// which of its points lie near a place, without a pass over all of it.
+class Drawn {
+public:
+    Drawn(std::span<const Curve> curves, double tolerance) : cell_(1.25 * tolerance) {
+        const double step = tolerance / 8.0;
+        for (const Curve& curve : curves) {
+            bool first = true;
+            for (const Segment& seg : curve.segments) {
+                double rough = 0.0;
+                Vec2 last = point(seg, 0.0);
+                for (int k = 1; k <= 64; ++k) {
+                    const Vec2 q = point(seg, k / 64.0);
+                    rough += (q - last).norm();
+                    last = q;
+                }
+                // The coarse length is short of the true one by at most a
+                // few per cent on the curves drawings hold; twice as many
+                // points keep them within the step.
+                const int n = int(std::clamp(2.0 * rough / step, 64.0, 200000.0));
+                for (int k = first ? 0 : 1; k <= n; ++k) {
+                    pts_.push_back(point(seg, double(k) / n));
+                    joined_.push_back(!(first && k == 0));
+                }
+                first = false;
+            }
+        }
+        for (std::uint32_t k = 0; k < pts_.size(); ++k) grid_[key(pts_[k])].push_back(k);
+    }
+
+    /// The distance from q to the drawing when it is within the tolerance
+    /// (and somewhat beyond); infinity when the drawing is farther.
+    double distance(const Vec2& q) const {
+        double best = std::numeric_limits<double>::infinity();
+        near(q, [&](std::uint32_t k) {
+            // Curves are not joined to each other: the segment before a
+            // curve's first point is none.
+            if (k + 1 < pts_.size() && joined_[k + 1])
+                best = std::min(best, geometry::point_segment(q, pts_[k], pts_[k + 1]));
+            if (joined_[k]) best = std::min(best, geometry::point_segment(q, pts_[k - 1], pts_[k]));
+            best = std::min(best, (q - pts_[k]).norm());
+        });
+        return best;
+    }
+
+    /// Calls f with the index of every point of the drawing within the
+    /// tolerance of q (and some a little farther).
+    template <class F>
+    void near(const Vec2& q, F f) const {
+        const auto [ix, iy] = cell(q);
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+            for (std::int64_t dy = -1; dy <= 1; ++dy) {
+                const auto it = grid_.find(combine(ix + dx, iy + dy));
+                if (it == grid_.end()) continue;
+                for (const std::uint32_t k : it->second) f(k);
+            }
+        }
+    }
+
+    const Vec2& at(std::uint32_t k) const { return pts_[k]; }
+
+private:
+    std::pair<std::int64_t, std::int64_t> cell(const Vec2& q) const {
+        return {std::int64_t(std::floor(q.x() / cell_)), std::int64_t(std::floor(q.y() / cell_))};
+    }
+    static std::int64_t combine(std::int64_t ix, std::int64_t iy) {
+        return (ix << 32) ^ (iy & 0xffffffff);
+    }
+    std::int64_t key(const Vec2& q) const {
+        const auto [ix, iy] = cell(q);
+        return combine(ix, iy);
+    }
+
+    double cell_;
+    std::vector<Vec2> pts_;
+    std::vector<bool> joined_;  ///< whether pts_[k] continues the curve of pts_[k - 1]
+    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> grid_;
+};
+
+/// How far the chain with chain[r.first..r.last] replaced by r.pieces
+/// strays from the drawing there, both ways: the new pieces from the
+/// drawing, and the drawing's points that the replaced pieces passed
+/// within the tolerance of from the new pieces and their neighbours (four
+/// each side).
+double strays(const Drawn& drawn, const std::vector<Primitive>& chain, const Replacement& r,
+              double tolerance) {
+    double worst = 0.0;
+    std::vector<Primitive> local(r.pieces);
+    for (std::size_t k = r.first >= 4 ? r.first - 4 : 0; k < r.first; ++k) local.push_back(chain[k]);
+    for (std::size_t k = r.last + 1; k < chain.size() && k <= r.last + 4; ++k)
+        local.push_back(chain[k]);
+    for (const Primitive& p : r.pieces) {
+        const double len = geometry::length(p);
+        for (int i = 0; i <= kSamples; ++i) {
+            worst = std::max(worst, drawn.distance(geometry::point_at(p, len * i / kSamples)));
+            if (worst > tolerance) return worst;
+        }
+    }
+    // The grid's neighbourhood of a point reaches past the tolerance by a
+    // quarter of it: samples that far apart find every drawing point
+    // within the tolerance of a piece.
+    std::vector<std::uint32_t> covered;
+    for (std::size_t k = r.first; k <= r.last; ++k) {
+        const Primitive& p = chain[k];
+        const double len = geometry::length(p);
+        const int n = 1 + int(std::ceil(len / (0.25 * tolerance)));
+        for (int i = 0; i <= n; ++i) {
+            drawn.near(geometry::point_at(p, len * i / n), [&](std::uint32_t m) {
+                if (geometry::nearest(p, drawn.at(m)).distance <= tolerance) covered.push_back(m);
+            });
+        }
+    }
+    std::sort(covered.begin(), covered.end());
+    covered.erase(std::unique(covered.begin(), covered.end()), covered.end());
+    for (const std::uint32_t m : covered) {
+        worst = std::max(worst, distance_to(local, drawn.at(m)));
+        if (worst > tolerance) return worst;
+    }
+    return worst;
+}
+
+/// How far the points of `from` (on samples of each piece) lie from `to`.
+double reach(const std::vector<Primitive>& from, const std::vector<Primitive>& to) {
+    double worst = 0.0;
+    for (const Primitive& p : from) {
+        const double len = geometry::length(p);
+        for (int i = 0; i <= kSamples; ++i)
+            worst = std::max(worst, distance_to(to, geometry::point_at(p, len * i / kSamples)));
+    }
+    return worst;
+}
+
+/// Shorter than the tolerance: a circle too, which the fit makes of a
+/// small loop inside a stroke.
+bool is_short(const Primitive& p, double tolerance) { return geometry::length(p) < tolerance; }
+
+/// Whether `fresh` may stand in a chain: no piece of no length or that
+/// closes on itself, and none shorter than the tolerance unless it is the
+/// whole stroke in one piece.
+bool usable(const std::vector<Primitive>& fresh, double tolerance, bool whole) {
+    for (const Primitive& q : fresh) {
+        if (q.kind == PrimitiveKind::Circle || !(geometry::length(q) >= kMinPiece)) return false;
+        if (geometry::length(q) < tolerance && !(whole && fresh.size() == 1)) return false;
+    }
+    return true;
+}
+
+/// Where the lines through a (direction da) and b (direction db) meet;
+/// none when they are nearly parallel.
+std::optional<Vec2> meet(const Vec2& a, const Vec2& da, const Vec2& b, const Vec2& db) {
+    const double d = geometry::cross(da, db);
+    if (std::abs(d) < 1e-9) return std::nullopt;
+    return a + da * (geometry::cross(b - a, db) / d);
+}
+
+/// The replacements of the run of short pieces chain[i..j] (with, for
+/// some, a window of a neighbour), each with how far it strays from what it
+/// replaces; the caller keeps the nearest within the tolerance.
+std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std::size_t i,
+                                        std::size_t j, double tolerance) {
+    std::vector<Replacement> out;
+    const std::size_t n = chain.size();
+    const std::vector<Primitive> run(chain.begin() + i, chain.begin() + j + 1);
+    const Vec2 from = run.front().start, to = run.back().end;
+    const bool at_start = i == 0, at_end = j + 1 == n;
+    // Dropped at a stroke's end: the stroke ends where its neighbour does
+    // (a short line past a corner ends at the corner). What stays is part
+    // of what was, so only the run's distance from it counts.
+    if (at_end && !at_start) out.push_back({i, j, {}, reach(run, {chain[i - 1]})});
+    if (at_start && !at_end) out.push_back({i, j, {}, reach(run, {chain[j + 1]})});
+    // A closed feature smaller than the tolerance (a loop or a small
+    // circle inside a stroke) collapses to the point it sits at.
+    if (!at_start && !at_end && (to - from).norm() <= 1e-9) {
+        double far = 0.0;
+        for (const Primitive& p : run) {
+            const double len = geometry::length(p);
+            for (int k = 0; k <= kSamples; ++k)
+                far = std::max(far, (geometry::point_at(p, len * k / kSamples) - from).norm());
+        }
+        out.push_back({i, j, {}, far});
+    }
+    // One line over the whole run.
+    if ((to - from).norm() >= kMinPiece) {
+        const std::vector<Primitive> line{geometry::make_line(from, to)};
+        if (usable(line, tolerance, at_start && at_end)) {
+            out.push_back({i, j, line, apart(run, line)});
+        }
+    }
+    // The neighbours' lines extended (or trimmed) to meet, the run dropped.
+    if (!at_start && !at_end && chain[i - 1].kind == PrimitiveKind::Line &&
+        chain[j + 1].kind == PrimitiveKind::Line) {
+        const Primitive &a = chain[i - 1], &b = chain[j + 1];
+        if (const auto x = meet(a.start, end_tangent(a), b.end, start_tangent(b))) {
+            const std::vector<Primitive> fresh{geometry::make_line(a.start, *x),
+                                               geometry::make_line(*x, b.end)};
+            if (usable(fresh, tolerance, false)) {
+                std::vector<Primitive> old = run;
+                old.insert(old.begin(), a);
+                old.push_back(b);
+                out.push_back({i - 1, j + 1, fresh, apart(old, fresh)});
+            }
+        }
+    }
+    // Folded with a window of a neighbour into one piece that keeps the
+    // neighbour's tangent at its far end (an arc, or a line when straight:
+    // a neighbour extended or trimmed), or into one line.
+    for (const double s : {tolerance, 2.0 * tolerance, 4.0 * tolerance}) {
+        if (!at_start && chain[i - 1].kind != PrimitiveKind::Circle) {
+            const Cut a = cut_end(chain[i - 1], s, tolerance);
+            std::vector<Primitive> old = run;
+            old.insert(old.begin(), a.window);
+            const bool whole = !a.kept && i == 1 && at_end;
+            for (const Primitive& q : {arc_through(a.window.start, start_tangent(a.window), to),
+                                       geometry::make_line(a.window.start, to)}) {
+                const std::vector<Primitive> fresh{q};
+                if (!usable(fresh, tolerance, whole)) continue;
+                Replacement r{i - 1, j, {}, apart(old, fresh)};
+                if (a.kept) r.pieces.push_back(*a.kept);
+                r.pieces.push_back(q);
+                out.push_back(std::move(r));
+            }
+        }
+        if (!at_end && chain[j + 1].kind != PrimitiveKind::Circle) {
+            const Cut b = cut_start(chain[j + 1], s, tolerance);
+            std::vector<Primitive> old = run;
+            old.push_back(b.window);
+            const bool whole = !b.kept && at_start && j + 2 == n;
+            for (const Primitive& q : {arc_into(from, b.window.end, end_tangent(b.window)),
+                                       geometry::make_line(from, b.window.end)}) {
+                const std::vector<Primitive> fresh{q};
+                if (!usable(fresh, tolerance, whole)) continue;
+                Replacement r{i, j + 1, fresh, apart(old, fresh)};
+                if (b.kept) r.pieces.push_back(*b.kept);
+                out.push_back(std::move(r));
+            }
+        }
+        if (!at_start && !at_end && chain[i - 1].kind != PrimitiveKind::Circle &&
+            chain[j + 1].kind != PrimitiveKind::Circle) {
+            const Cut a = cut_end(chain[i - 1], s, tolerance);
+            const Cut b = cut_start(chain[j + 1], s, tolerance);
+            std::vector<Primitive> old = run;
+            old.insert(old.begin(), a.window);
+            old.push_back(b.window);
+            std::vector<std::vector<Primitive>> options{
+                {geometry::make_line(a.window.start, b.window.end)}};
+            if (auto arcs = biarc(a.window.start, start_tangent(a.window), b.window.end,
+                                  end_tangent(b.window)))
+                options.push_back(std::move(*arcs));
+            for (const auto& fresh : options) {
+                if (!usable(fresh, tolerance, false)) continue;
+                Replacement r{i - 1, j + 1, {}, apart(old, fresh)};
+                if (a.kept) r.pieces.push_back(*a.kept);
+                r.pieces.insert(r.pieces.end(), fresh.begin(), fresh.end());
+                if (b.kept) r.pieces.push_back(*b.kept);
+                out.push_back(std::move(r));
+            }
+        }
+    }
+    return out;
+}
+
+/// chain[i..k] for the largest k <= j (k > i) that one line or one arc
+/// leaving chain[i] with its tangent replaces within the tolerance of the
+/// drawing (or of the chain, beside `deviation`); `far` is that distance; none when no
+/// such stretch reaches the tolerance's length. Stretches are tried in
+/// order of length, up to the first that strays too far.
+std::optional<Replacement> longest_stretch(const std::vector<Primitive>& chain, std::size_t i,
+                                           std::size_t j, double tolerance, double deviation,
+                                           const Drawn* drawn) {
+    std::optional<Replacement> best;
+    const Vec2 from = chain[i].start;
+    const Vec2 t = start_tangent(chain[i]);
+    const bool whole_from_start = i == 0;
+    for (std::size_t k = i + 1; k <= j; ++k) {
+        const std::vector<Primitive> old(chain.begin() + i, chain.begin() + k + 1);
+        const Vec2 to = chain[k].end;
+        if (!((to - from).norm() >= kMinPiece)) continue;
+        const bool whole = whole_from_start && k + 1 == chain.size();
+        bool near = false;
+        for (const Primitive& q : {geometry::make_line(from, to), arc_through(from, t, to)}) {
+            const std::vector<Primitive> fresh{q};
+            Replacement r{i, k, fresh, 0.0};
+            const double far =
+                drawn ? strays(*drawn, chain, r, tolerance) : deviation + apart(old, fresh);
+            if (far > tolerance) continue;
+            near = true;
+            if (usable(fresh, tolerance, whole)) {
+                best = Replacement{i, k, fresh, far};
+                break;
+            }
+        }
+        if (!near) break;
+    }
+    return best;
+}
+
+/// What merging piece by piece leaves: runs of short pieces (a small
+/// rounded corner fitted as several slivers, a tiny loop, a short line
+/// past a corner at a stroke's end), each replaced as a whole by the
+/// nearest of run_candidates within what the tolerance leaves.
+double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviation,
+                  const Drawn* drawn) {
+    double worst = deviation;
+    for (std::size_t i = 0; i < chain.size() && chain.size() > 1; ++i) {
+        if (!is_short(chain[i], tolerance)) continue;
+        std::size_t j = i;
+        while (j + 1 < chain.size() && is_short(chain[j + 1], tolerance)) ++j;
+        double stroke_length = 0.0;
+        for (const Primitive& p : chain) stroke_length += geometry::length(p);
+        // A stroke that short as a whole may keep its pieces.
+        if (stroke_length < tolerance) return worst;
+        std::optional<Replacement> best;
+        // A long run is a curve drawn in short pieces, which no one piece
+        // over all of it follows: it goes straight to the stretches below.
+        const bool long_run = j - i >= 8;
+        for (Replacement& r : long_run ? std::vector<Replacement>{}
+                                       : run_candidates(chain, i, j, tolerance)) {
+            // Measured against the drawing itself where it is at hand: the
+            // fitting leaves little of the tolerance to add to.
+            if (drawn) r.far = strays(*drawn, chain, r, tolerance);
+            else r.far += deviation;
+            if (r.far <= tolerance && (!best || r.far < best->far)) best = std::move(r);
+        }
+        // A run that no one piece replaces (a curve drawn as a polyline of
+        // short lines) is replaced from its start by the longest stretch
+        // one line, or one arc leaving as it did, stays close to.
+        if (!best) best = longest_stretch(chain, i, j, tolerance, deviation, drawn);
+        // Else the rest of the run may still be replaced from its next piece.
+        if (!best) continue;
+        worst = std::max(worst, best->far);
+        chain.erase(chain.begin() + best->first, chain.begin() + best->last + 1);
+        chain.insert(chain.begin() + best->first, best->pieces.begin(), best->pieces.end());
+        // The pieces before may now end in a shorter run: look again from
+        // the first piece changed.
+        i = best->first == 0 ? std::size_t(-1) : best->first - 1;
+    }
+    return worst;
+}
+
 }  // namespace
 
-double merge_slivers(std::vector<Primitive>& chain, double tolerance, double deviation) {
-    double worst = deviation;
+double merge_slivers(std::vector<Primitive>& chain, double tolerance, double deviation,
+                     std::span<const Curve> drawing) {
+    std::optional<Drawn> drawn;
+    if (!drawing.empty()) drawn.emplace(drawing, tolerance);
+    // Whole runs first, where a closed one is still whole (a small loop
+    // that merging piece by piece would leave open).
+    double worst = drawn ? merge_runs(chain, tolerance, deviation, &*drawn) : deviation;
     for (std::size_t i = 0; i < chain.size() && chain.size() > 1; ++i) {
         const Primitive& p = chain[i];
         if (p.kind == PrimitiveKind::Circle || geometry::length(p) >= tolerance) continue;
@@ -178,6 +529,21 @@ double merge_slivers(std::vector<Primitive>& chain, double tolerance, double dev
         chain.erase(chain.begin() + best->first, chain.begin() + best->last + 1);
         chain.insert(chain.begin() + best->first, best->pieces.begin(), best->pieces.end());
         i = best->first + best->pieces.size() - 1;
+    }
+    return merge_runs(chain, tolerance, worst, drawn ? &*drawn : nullptr);
+}
+
+double merge_stroke_slivers(std::vector<std::vector<Primitive>>& strokes, double tolerance,
+                            double deviation, std::span<const Curve> drawing) {
+    double worst = deviation;
+    std::optional<Drawn> drawn;
+    for (std::vector<Primitive>& stroke : strokes) {
+        if (stroke.size() < 2 || std::none_of(stroke.begin(), stroke.end(), [&](const Primitive& p) {
+                return is_short(p, tolerance);
+            }))
+            continue;
+        if (!drawn) drawn.emplace(drawing, tolerance);
+        worst = std::max(worst, merge_runs(stroke, tolerance, deviation, &*drawn));
     }
     return worst;
 }
