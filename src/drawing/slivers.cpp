@@ -149,7 +149,6 @@ std::optional<Replacement> candidate(const std::vector<Primitive>& chain, std::s
     return r;
 }
 
-
 /// The drawing a chain was fitted to, as a polyline whose points are at
 /// most an eighth of the tolerance apart, filed in a grid of cells a bit
 /// wider than the tolerance: how near a point lies to the drawing, and
@@ -240,7 +239,8 @@ double strays(const Drawn& drawn, const std::vector<Primitive>& chain, const Rep
               double tolerance) {
     double worst = 0.0;
     std::vector<Primitive> local(r.pieces);
-    for (std::size_t k = r.first >= 4 ? r.first - 4 : 0; k < r.first; ++k) local.push_back(chain[k]);
+    for (std::size_t k = r.first >= 4 ? r.first - 4 : 0; k < r.first; ++k)
+        local.push_back(chain[k]);
     for (std::size_t k = r.last + 1; k < chain.size() && k <= r.last + 4; ++k)
         local.push_back(chain[k]);
     for (const Primitive& p : r.pieces) {
@@ -467,12 +467,14 @@ double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviat
         // A long run is a curve drawn in short pieces, which no one piece
         // over all of it follows: it goes straight to the stretches below.
         const bool long_run = j - i >= 8;
-        for (Replacement& r : long_run ? std::vector<Replacement>{}
-                                       : run_candidates(chain, i, j, tolerance)) {
+        for (Replacement& r :
+             long_run ? std::vector<Replacement>{} : run_candidates(chain, i, j, tolerance)) {
             // Measured against the drawing itself where it is at hand: the
             // fitting leaves little of the tolerance to add to.
-            if (drawn) r.far = strays(*drawn, chain, r, tolerance);
-            else r.far += deviation;
+            if (drawn)
+                r.far = strays(*drawn, chain, r, tolerance);
+            else
+                r.far += deviation;
             if (r.far <= tolerance && (!best || r.far < best->far)) best = std::move(r);
         }
         // A run that no one piece replaces (a curve drawn as a polyline of
@@ -538,9 +540,9 @@ double merge_stroke_slivers(std::vector<std::vector<Primitive>>& strokes, double
     double worst = deviation;
     std::optional<Drawn> drawn;
     for (std::vector<Primitive>& stroke : strokes) {
-        if (stroke.size() < 2 || std::none_of(stroke.begin(), stroke.end(), [&](const Primitive& p) {
-                return is_short(p, tolerance);
-            }))
+        if (stroke.size() < 2 ||
+            std::none_of(stroke.begin(), stroke.end(),
+                         [&](const Primitive& p) { return is_short(p, tolerance); }))
             continue;
         if (!drawn) drawn.emplace(drawing, tolerance);
         worst = std::max(worst, merge_runs(stroke, tolerance, deviation, &*drawn));

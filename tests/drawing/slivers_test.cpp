@@ -69,8 +69,8 @@ void check_joined(const std::vector<Primitive>& chain) {
 /// the strokes.
 std::vector<Chain> import_checked(const std::string& path) {
     const std::string svg =
-        R"(<svg xmlns="http://www.w3.org/2000/svg"><path fill="none" stroke="black" d=")" +
-        path + R"("/></svg>)";
+        R"(<svg xmlns="http://www.w3.org/2000/svg"><path fill="none" stroke="black" d=")" + path +
+        R"("/></svg>)";
     ImportOptions o;
     o.placement.scale = 1e-3;
     o.placement.at = Vec2(0.3, 0.0);
@@ -138,8 +138,8 @@ TEST_CASE("Slivers: a run of tiny arcs rounding a corner between two arcs", "[dr
 TEST_CASE("Slivers: a loop smaller than the tolerance collapses to the point it sits at",
           "[drawing][slivers]") {
     // A circle of 20 um radius drawn within a stroke, touching it at (10, 0).
-    const auto strokes = import_checked(
-        "M 0 0 L 10 0 A 0.02 0.02 0 0 1 10 -0.04 A 0.02 0.02 0 0 1 10 0 L 20 3");
+    const auto strokes =
+        import_checked("M 0 0 L 10 0 A 0.02 0.02 0 0 1 10 -0.04 A 0.02 0.02 0 0 1 10 0 L 20 3");
     REQUIRE(strokes.size() == 1);
     CHECK(strokes[0].size() == 2);
 }
@@ -149,15 +149,12 @@ TEST_CASE("Slivers: a short line past a corner at a stroke's end", "[drawing][sl
         const auto strokes = import_checked("M 0 0 A 5 5 0 0 1 10 0 L 10 0.05");
         REQUIRE(strokes.size() == 1);
     }
-    SECTION("after a line, at a sharp corner") {
-        import_checked("M 0 0 L 10 0 L 9.95 0.04");
-    }
-    SECTION("at the stroke's start") {
-        import_checked("M 0 0.06 L 0 0 A 5 5 0 0 0 10 0");
-    }
+    SECTION("after a line, at a sharp corner") { import_checked("M 0 0 L 10 0 L 9.95 0.04"); }
+    SECTION("at the stroke's start") { import_checked("M 0 0.06 L 0 0 A 5 5 0 0 0 10 0"); }
 }
 
-TEST_CASE("Slivers: a stroke shorter than the tolerance may stay that short", "[drawing][slivers]") {
+TEST_CASE("Slivers: a stroke shorter than the tolerance may stay that short",
+          "[drawing][slivers]") {
     std::vector<Primitive> chain{geometry::make_line(Vec2(0.3, 0.0), Vec2(0.30003, 0.0)),
                                  geometry::make_line(Vec2(0.30003, 0.0), Vec2(0.30003, 3e-5))};
     const std::vector<Primitive> before = chain;
