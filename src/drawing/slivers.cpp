@@ -170,7 +170,7 @@ public:
                 // The coarse length is short of the true one by at most a
                 // few per cent on the curves drawings hold; twice as many
                 // points keep them within the step.
-                const int n = int(std::clamp(2.0 * rough / step, 64.0, 200000.0));
+                const int n = int(std::clamp(std::ceil(2.0 * rough / step), 8.0, 200000.0));
                 for (int k = first ? 0 : 1; k <= n; ++k) {
                     pts_.push_back(point(seg, double(k) / n));
                     joined_.push_back(!(first && k == 0));
