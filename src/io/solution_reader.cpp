@@ -106,33 +106,43 @@ int index(const json& j, const std::string& part) {
     return integer(j, part, 0, std::numeric_limits<int>::max());
 }
 
+/// Reads each element of the array under `key` of `obj` with
+/// read(element, its part name); `what` says what the array holds.
+template <class Read>
+void each_element(const json& obj, const std::string& part, const char* key, const char* what,
+                  Read read) {
+    const std::string p = member(part, key);
+    const json& a = required(obj, part, key);
+    require_array(a, p, what);
+    for (std::size_t i = 0; i < a.size(); ++i) read(a[i], element(p, i));
+}
+
+/// The obstacle (or other) indices listed under `key` of `obj`.
+std::vector<int> indices(const json& obj, const std::string& part, const char* key) {
+    std::vector<int> out;
+    each_element(obj, part, key, "obstacle indices",
+                 [&](const json& x, const std::string& p) { out.push_back(index(x, p)); });
+    return out;
+}
+
 prove::SeparationWitness parse_separation(const json& j, const std::string& part) {
     require_object(j, part);
     prove::SeparationWitness w;
-    const std::string wp = member(part, "walls");
-    const json& walls = required(j, part, "walls");
-    require_array(walls, wp, "walls");
-    for (std::size_t k = 0; k < walls.size(); ++k) {
-        const std::string p = element(wp, k);
-        const json& x = walls[k];
+    each_element(j, part, "walls", "walls", [&](const json& x, const std::string& p) {
         require_object(x, p);
         prove::Wall wall;
         wall.base_region = index(required(x, p, "base_region"), member(p, "base_region"));
         wall.primitive = index(required(x, p, "primitive"), member(p, "primitive"));
         wall.point = parse_point(required(x, p, "point"), member(p, "point"));
-        const json& cycle = required(x, p, "cycle");
-        require_array(cycle, member(p, "cycle"), "obstacle indices");
-        for (std::size_t i = 0; i < cycle.size(); ++i)
-            wall.cycle.push_back(index(cycle[i], element(member(p, "cycle"), i)));
-        const json& overlaps = required(x, p, "overlaps");
-        require_array(overlaps, member(p, "overlaps"), "numbers");
-        for (std::size_t i = 0; i < overlaps.size(); ++i)
-            wall.overlaps.push_back(finite_number(overlaps[i], element(member(p, "overlaps"), i)));
+        wall.cycle = indices(x, p, "cycle");
+        each_element(x, p, "overlaps", "numbers", [&](const json& o, const std::string& op) {
+            wall.overlaps.push_back(finite_number(o, op));
+        });
         if (wall.overlaps.size() != wall.cycle.size())
             throw InputError(member(p, "overlaps"),
                              "expected one overlap per obstacle of the cycle");
         w.walls.push_back(std::move(wall));
-    }
+    });
     return w;
 }
 
@@ -147,22 +157,13 @@ geometry::Vec3 parse_point3(const json& j, const std::string& part) {
 prove::EnclosureWitness parse_enclosure(const json& j, const std::string& part) {
     require_object(j, part);
     prove::EnclosureWitness w;
-    const std::string wp = member(part, "walls");
-    const json& walls = required(j, part, "walls");
-    require_array(walls, wp, "walls");
-    for (std::size_t k = 0; k < walls.size(); ++k) {
-        const std::string p = element(wp, k);
-        const json& x = walls[k];
+    each_element(j, part, "walls", "walls", [&](const json& x, const std::string& p) {
         require_object(x, p);
         prove::Enclosure e;
         e.base_region = index(required(x, p, "base_region"), member(p, "base_region"));
         e.primitive = index(required(x, p, "primitive"), member(p, "primitive"));
         e.point = parse_point3(required(x, p, "point"), member(p, "point"));
-        const std::string op = member(p, "obstacles");
-        const json& obstacles = required(x, p, "obstacles");
-        require_array(obstacles, op, "obstacle indices");
-        for (std::size_t i = 0; i < obstacles.size(); ++i)
-            e.obstacles.push_back(index(obstacles[i], element(op, i)));
+        e.obstacles = indices(x, p, "obstacles");
         const std::string gp = member(p, "grid");
         const json& grid = required(x, p, "grid");
         require_object(grid, gp);
@@ -192,7 +193,7 @@ prove::EnclosureWitness parse_enclosure(const json& j, const std::string& part) 
                  index(cells[i][2], element(rp, 2)), index(cells[i][3], element(rp, 3))});
         }
         w.walls.push_back(std::move(e));
-    }
+    });
     return w;
 }
 

@@ -72,13 +72,12 @@ std::vector<std::string> write_exports(const task::SpatialTask& task,
     if (!paths.build_sheet.empty() && solution.status != synth::Status::Solved)
         write_text_file(paths.build_sheet, build_sheet(task, solution));
     return write_robot_outputs(
-        solution,
-        {{paths.urdf, "--urdf", [&] { return robot_urdf(task, solution); }},
-         {paths.csv, "--csv", [&] { return trajectory_csv(solution); }},
-         {solution.status == synth::Status::Solved ? paths.build_sheet : kNone, "--build-sheet",
-          [&] { return build_sheet(task, solution, printed); }},
-         {paths.joint_trajectory, "--joint-trajectory",
-          [&] { return joint_trajectory_yaml(solution); }}});
+        solution, {{paths.urdf, "--urdf", [&] { return robot_urdf(task, solution); }},
+                   {paths.csv, "--csv", [&] { return trajectory_csv(solution); }},
+                   {solution.status == synth::Status::Solved ? paths.build_sheet : kNone,
+                    "--build-sheet", [&] { return build_sheet(task, solution, printed); }},
+                   {paths.joint_trajectory, "--joint-trajectory",
+                    [&] { return joint_trajectory_yaml(solution); }}});
 }
 
 }  // namespace modsynth::output

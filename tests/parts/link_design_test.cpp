@@ -62,7 +62,7 @@ TEST_CASE("a catalog pattern is used in the printed parts' frame", "[parts]") {
     c.horn_hole_diameter = 0.0022;
     c.horn_diameter = 0.020;
     c.body_hole_diameter = 0.0025;
-    c.output_offset = 0.0135;             // axis 13.5 mm from the housing's nearer end
+    c.output_offset = 0.0135;                      // axis 13.5 mm from the housing's nearer end
     c.body_holes = {{0.070, 0.02}, {0.0, -0.02}};  // from the axis, away from that end
     a.mounting = c;
     const ModuleMount m = module_mount(a, {});

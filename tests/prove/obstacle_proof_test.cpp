@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
-#include <chrono>
 #include <filesystem>
 #include <random>
 
@@ -64,17 +63,11 @@ task::Task walled(double half, double max_link) {
     return t;
 }
 
-double seconds(const std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
 TEST_CASE("a ring of posts around the path is a closed wall", "[walls]") {
     const task::Task t = load("ring-around-path");
-    const auto t0 = std::chrono::steady_clock::now();
     const auto proof = prove::prove_obstacle_infeasible(t);
-    const double took = seconds(t0);
     REQUIRE(proof);
     REQUIRE(proof->separation);
     CHECK_FALSE(proof->geodesic);
@@ -88,7 +81,6 @@ TEST_CASE("a ring of posts around the path is a closed wall", "[walls]") {
         proof->message.rfind(
             "obstacles 0-11 form a closed wall around trajectory[0]; the base region is outside it",
             0) == 0);
-    CHECK(took < 0.05);
     // A base region that reaches across the wall, where only the post's no-go
     // disc covers its inner part: still separated, cell by cell.
     task::Task across = t;
@@ -119,9 +111,7 @@ TEST_CASE("an open sieve whose gaps are narrower than the tube is a closed wall"
 
 TEST_CASE("a long wall whose way around is beyond reach", "[walls]") {
     const task::Task t = load("long-wall");
-    const auto t0 = std::chrono::steady_clock::now();
     const auto proof = prove::prove_obstacle_infeasible(t);
-    const double took = seconds(t0);
     REQUIRE(proof);
     REQUIRE(proof->geodesic);
     CHECK_FALSE(proof->separation);
@@ -136,8 +126,6 @@ TEST_CASE("a long wall whose way around is beyond reach", "[walls]") {
     CHECK(std::find(proof->core.begin(), proof->core.end(),
                     task::TaskPart::robot(task::RobotKey::MaxLinkLength)) != proof->core.end());
     CHECK(proof->message.find("3 links of at most 1.00 m reach 3.00 m") != std::string::npos);
-    // Measured on a machine shared with other work: a generous bound.
-    CHECK(took < 0.25);
 }
 
 TEST_CASE("removing any obstacle of a core breaks its proof", "[walls]") {
