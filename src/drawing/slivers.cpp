@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <string>
 #include <unordered_map>
 
 #include <modsynth/drawing/biarc_fit.h>
@@ -63,9 +64,15 @@ Cut cut_start(const Primitive& b, double s, double tolerance) {
     return {part(b, s, len), part(b, 0.0, s)};
 }
 
-double distance_to(const std::vector<Primitive>& ps, const Vec2& q) {
+/// The distance from q to the nearest of ps; as soon as one piece lies
+/// within `enough` of q, that piece's distance (which is all a caller
+/// taking the largest of such distances up to `enough` needs).
+double distance_to(const std::vector<Primitive>& ps, const Vec2& q, double enough = -1.0) {
     double best = std::numeric_limits<double>::infinity();
-    for (const Primitive& p : ps) best = std::min(best, geometry::nearest(p, q).distance);
+    for (const Primitive& p : ps) {
+        best = std::min(best, geometry::nearest(p, q).distance);
+        if (best <= enough) return best;
+    }
     return best;
 }
 
@@ -182,28 +189,42 @@ public:
     }
 
     /// The distance from q to the drawing when it is within the tolerance
-    /// (and somewhat beyond); infinity when the drawing is farther.
-    double distance(const Vec2& q) const {
+    /// (and somewhat beyond); infinity when the drawing is farther. As
+    /// soon as a part of the drawing lies within `enough` of q, that part's
+    /// distance.
+    double distance(const Vec2& q, double enough = -1.0) const {
         double best = std::numeric_limits<double>::infinity();
-        near(q, [&](std::uint32_t k) {
-            // Curves are not joined to each other: the segment before a
-            // curve's first point is none.
-            if (k + 1 < pts_.size() && joined_[k + 1])
-                best = std::min(best, geometry::point_segment(q, pts_[k], pts_[k + 1]));
-            if (joined_[k]) best = std::min(best, geometry::point_segment(q, pts_[k - 1], pts_[k]));
-            best = std::min(best, (q - pts_[k]).norm());
-        });
+        const auto [ix, iy] = cell(q);
+        // q's own cell first: what lies within `enough` is most likely there.
+        for (const auto& [dx, dy] : {std::pair{0, 0}, {-1, -1}, {-1, 0}, {-1, 1}, {0, -1}, {0, 1},
+                                    {1, -1}, {1, 0}, {1, 1}}) {
+            {
+                const auto it = grid_.find(combine(ix + dx, iy + dy));
+                if (it == grid_.end()) continue;
+                for (const std::uint32_t k : it->second) {
+                    // Curves are not joined to each other: the segment
+                    // before a curve's first point is none.
+                    if (k + 1 < pts_.size() && joined_[k + 1])
+                        best = std::min(best, geometry::point_segment(q, pts_[k], pts_[k + 1]));
+                    if (joined_[k])
+                        best = std::min(best, geometry::point_segment(q, pts_[k - 1], pts_[k]));
+                    best = std::min(best, (q - pts_[k]).norm());
+                    if (best <= enough) return best;
+                }
+            }
+        }
         return best;
     }
 
-    /// Calls f with the index of every point of the drawing within the
-    /// tolerance of q (and some a little farther).
+    /// Calls f once with the index of every point of the drawing in the
+    /// cells that meet the box [lo, hi].
     template <class F>
-    void near(const Vec2& q, F f) const {
-        const auto [ix, iy] = cell(q);
-        for (std::int64_t dx = -1; dx <= 1; ++dx) {
-            for (std::int64_t dy = -1; dy <= 1; ++dy) {
-                const auto it = grid_.find(combine(ix + dx, iy + dy));
+    void in_box(const Vec2& lo, const Vec2& hi, F f) const {
+        const auto [x0, y0] = cell(lo);
+        const auto [x1, y1] = cell(hi);
+        for (std::int64_t ix = x0; ix <= x1; ++ix) {
+            for (std::int64_t iy = y0; iy <= y1; ++iy) {
+                const auto it = grid_.find(combine(ix, iy));
                 if (it == grid_.end()) continue;
                 for (const std::uint32_t k : it->second) f(k);
             }
@@ -230,48 +251,98 @@ private:
     std::unordered_map<std::int64_t, std::vector<std::uint32_t>> grid_;
 };
 
+/// The drawing's points within the tolerance of each piece of a chain,
+/// found once for a piece while the chain stays as it is: the candidates
+/// for one run replace overlapping stretches of it, the stretches of a
+/// long run (one more piece each) all of its start.
+class Covered {
+public:
+    Covered(const Drawn& drawn, const std::vector<Primitive>& chain, double tolerance)
+        : drawn_(drawn), chain_(chain), tolerance_(tolerance) {}
+
+    const std::vector<std::uint32_t>& of(std::size_t k) {
+        const auto [it, fresh] = lists_.try_emplace(k);
+        if (!fresh) return it->second;
+        std::vector<std::uint32_t>& covered = it->second;
+        // Every point of the piece lies within an eighth of the tolerance
+        // of one of these samples: the box around them, widened by a bit
+        // more than the tolerance, holds every drawing point within the
+        // tolerance of the piece.
+        const Primitive& p = chain_[k];
+        const double len = geometry::length(p);
+        const int n = 1 + int(std::ceil(len / (0.25 * tolerance_)));
+        Vec2 lo = p.start, hi = p.start;
+        for (int i = 1; i <= n; ++i) {
+            const Vec2 q = geometry::point_at(p, len * i / n);
+            lo = lo.cwiseMin(q);
+            hi = hi.cwiseMax(q);
+        }
+        const Vec2 margin = Vec2::Constant(1.25 * tolerance_);
+        drawn_.in_box(lo - margin, hi + margin, [&](std::uint32_t m) {
+            if (geometry::nearest(p, drawn_.at(m)).distance <= tolerance_) covered.push_back(m);
+        });
+        return covered;
+    }
+
+private:
+    const Drawn& drawn_;
+    const std::vector<Primitive>& chain_;
+    double tolerance_;
+    std::unordered_map<std::size_t, std::vector<std::uint32_t>> lists_;
+};
+
 /// How far the chain with chain[r.first..r.last] replaced by r.pieces
 /// strays from the drawing there, both ways: the new pieces from the
 /// drawing, and the drawing's points that the replaced pieces passed
 /// within the tolerance of from the new pieces and their neighbours (four
-/// each side).
-double strays(const Drawn& drawn, const std::vector<Primitive>& chain, const Replacement& r,
-              double tolerance) {
+/// each side). Exact up to `limit`; past it, some distance past it (the
+/// search stops there). Distances up to `enough` are not told apart: with
+/// `enough` at `limit`, the answer only says whether it is within the
+/// limit, which is much quicker to find.
+double strays(const Drawn& drawn, Covered& covered, const std::vector<Primitive>& chain,
+              const Replacement& r, double limit, double enough = 0.0) {
     double worst = 0.0;
     std::vector<Primitive> local(r.pieces);
     for (std::size_t k = r.first >= 4 ? r.first - 4 : 0; k < r.first; ++k)
         local.push_back(chain[k]);
     for (std::size_t k = r.last + 1; k < chain.size() && k <= r.last + 4; ++k)
         local.push_back(chain[k]);
+    // A sample nearer than the worst so far changes nothing: the search
+    // for its distance stops at the first part of the drawing that near.
     for (const Primitive& p : r.pieces) {
         const double len = geometry::length(p);
         for (int i = 0; i <= kSamples; ++i) {
-            worst = std::max(worst, drawn.distance(geometry::point_at(p, len * i / kSamples)));
-            if (worst > tolerance) return worst;
+            worst = std::max(worst, drawn.distance(geometry::point_at(p, len * i / kSamples),
+                                                   std::max(worst, enough)));
+            if (worst > limit) return worst;
         }
     }
-    // The grid's neighbourhood of a point reaches past the tolerance by a
-    // quarter of it: samples that far apart find every drawing point
-    // within the tolerance of a piece.
-    std::vector<std::uint32_t> covered;
+    // A point near two replaced pieces is measured twice, to the same
+    // distance.
     for (std::size_t k = r.first; k <= r.last; ++k) {
-        const Primitive& p = chain[k];
-        const double len = geometry::length(p);
-        const int n = 1 + int(std::ceil(len / (0.25 * tolerance)));
-        for (int i = 0; i <= n; ++i) {
-            drawn.near(geometry::point_at(p, len * i / n), [&](std::uint32_t m) {
-                if (geometry::nearest(p, drawn.at(m)).distance <= tolerance) covered.push_back(m);
-            });
+        for (const std::uint32_t m : covered.of(k)) {
+            worst = std::max(worst, distance_to(local, drawn.at(m), std::max(worst, enough)));
+            if (worst > limit) return worst;
         }
-    }
-    std::sort(covered.begin(), covered.end());
-    covered.erase(std::unique(covered.begin(), covered.end()), covered.end());
-    for (const std::uint32_t m : covered) {
-        worst = std::max(worst, distance_to(local, drawn.at(m)));
-        if (worst > tolerance) return worst;
     }
     return worst;
 }
+
+/// Gives up, as fitting does, once the import's deadline has passed;
+/// looks at the clock every few hundred candidates.
+class Watch {
+public:
+    Watch(Clock::time_point deadline, std::string doing)
+        : deadline_(deadline), doing_(std::move(doing)) {}
+    void tick() {
+        if (count_++ % 256 == 0) check_deadline(deadline_, doing_);
+    }
+
+private:
+    Clock::time_point deadline_;
+    std::string doing_;
+    unsigned count_ = 0;
+};
 
 /// How far the points of `from` (on samples of each piece) lie from `to`.
 double reach(const std::vector<Primitive>& from, const std::vector<Primitive>& to) {
@@ -309,9 +380,16 @@ std::optional<Vec2> meet(const Vec2& a, const Vec2& da, const Vec2& b, const Vec
 
 /// The replacements of the run of short pieces chain[i..j] (with, for
 /// some, a window of a neighbour), each with how far it strays from what it
-/// replaces; the caller keeps the nearest within the tolerance.
+/// replaces unless `measure` is false (the caller measures them against
+/// the drawing); the caller keeps the nearest within the tolerance.
 std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std::size_t i,
-                                        std::size_t j, double tolerance) {
+                                        std::size_t j, double tolerance, bool measure) {
+    const auto far_apart = [&](const std::vector<Primitive>& a, const std::vector<Primitive>& b) {
+        return measure ? apart(a, b) : 0.0;
+    };
+    const auto far_reach = [&](const std::vector<Primitive>& a, const std::vector<Primitive>& b) {
+        return measure ? reach(a, b) : 0.0;
+    };
     std::vector<Replacement> out;
     const std::size_t n = chain.size();
     const std::vector<Primitive> run(chain.begin() + i, chain.begin() + j + 1);
@@ -320,13 +398,13 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
     // Dropped at a stroke's end: the stroke ends where its neighbour does
     // (a short line past a corner ends at the corner). What stays is part
     // of what was, so only the run's distance from it counts.
-    if (at_end && !at_start) out.push_back({i, j, {}, reach(run, {chain[i - 1]})});
-    if (at_start && !at_end) out.push_back({i, j, {}, reach(run, {chain[j + 1]})});
+    if (at_end && !at_start) out.push_back({i, j, {}, far_reach(run, {chain[i - 1]})});
+    if (at_start && !at_end) out.push_back({i, j, {}, far_reach(run, {chain[j + 1]})});
     // A closed feature smaller than the tolerance (a loop or a small
     // circle inside a stroke) collapses to the point it sits at.
     if (!at_start && !at_end && (to - from).norm() <= 1e-9) {
         double far = 0.0;
-        for (const Primitive& p : run) {
+        for (const Primitive& p : measure ? run : std::vector<Primitive>{}) {
             const double len = geometry::length(p);
             for (int k = 0; k <= kSamples; ++k)
                 far = std::max(far, (geometry::point_at(p, len * k / kSamples) - from).norm());
@@ -337,7 +415,7 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
     if ((to - from).norm() >= kMinPiece) {
         const std::vector<Primitive> line{geometry::make_line(from, to)};
         if (usable(line, tolerance, at_start && at_end)) {
-            out.push_back({i, j, line, apart(run, line)});
+            out.push_back({i, j, line, far_apart(run, line)});
         }
     }
     // The neighbours' lines extended (or trimmed) to meet, the run dropped.
@@ -351,7 +429,7 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
                 std::vector<Primitive> old = run;
                 old.insert(old.begin(), a);
                 old.push_back(b);
-                out.push_back({i - 1, j + 1, fresh, apart(old, fresh)});
+                out.push_back({i - 1, j + 1, fresh, far_apart(old, fresh)});
             }
         }
     }
@@ -368,7 +446,7 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
                                        geometry::make_line(a.window.start, to)}) {
                 const std::vector<Primitive> fresh{q};
                 if (!usable(fresh, tolerance, whole)) continue;
-                Replacement r{i - 1, j, {}, apart(old, fresh)};
+                Replacement r{i - 1, j, {}, far_apart(old, fresh)};
                 if (a.kept) r.pieces.push_back(*a.kept);
                 r.pieces.push_back(q);
                 out.push_back(std::move(r));
@@ -383,7 +461,7 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
                                        geometry::make_line(from, b.window.end)}) {
                 const std::vector<Primitive> fresh{q};
                 if (!usable(fresh, tolerance, whole)) continue;
-                Replacement r{i, j + 1, fresh, apart(old, fresh)};
+                Replacement r{i, j + 1, fresh, far_apart(old, fresh)};
                 if (b.kept) r.pieces.push_back(*b.kept);
                 out.push_back(std::move(r));
             }
@@ -402,7 +480,7 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
                 options.push_back(std::move(*arcs));
             for (const auto& fresh : options) {
                 if (!usable(fresh, tolerance, false)) continue;
-                Replacement r{i - 1, j + 1, {}, apart(old, fresh)};
+                Replacement r{i - 1, j + 1, {}, far_apart(old, fresh)};
                 if (a.kept) r.pieces.push_back(*a.kept);
                 r.pieces.insert(r.pieces.end(), fresh.begin(), fresh.end());
                 if (b.kept) r.pieces.push_back(*b.kept);
@@ -420,31 +498,39 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
 /// order of length, up to the first that strays too far.
 std::optional<Replacement> longest_stretch(const std::vector<Primitive>& chain, std::size_t i,
                                            std::size_t j, double tolerance, double deviation,
-                                           const Drawn* drawn) {
+                                           const Drawn* drawn, Covered* covered, Watch& watch) {
     std::optional<Replacement> best;
     const Vec2 from = chain[i].start;
     const Vec2 t = start_tangent(chain[i]);
     const bool whole_from_start = i == 0;
     for (std::size_t k = i + 1; k <= j; ++k) {
-        const std::vector<Primitive> old(chain.begin() + i, chain.begin() + k + 1);
         const Vec2 to = chain[k].end;
         if (!((to - from).norm() >= kMinPiece)) continue;
+        watch.tick();
         const bool whole = whole_from_start && k + 1 == chain.size();
         bool near = false;
         for (const Primitive& q : {geometry::make_line(from, to), arc_through(from, t, to)}) {
             const std::vector<Primitive> fresh{q};
             Replacement r{i, k, fresh, 0.0};
-            const double far =
-                drawn ? strays(*drawn, chain, r, tolerance) : deviation + apart(old, fresh);
-            if (far > tolerance) continue;
+            // Against the drawing, only whether a stretch is within the
+            // tolerance matters until the longest is known.
+            if (drawn) {
+                if (strays(*drawn, *covered, chain, r, tolerance, tolerance) > tolerance) continue;
+            } else {
+                r.far = deviation +
+                        apart(std::vector<Primitive>(chain.begin() + i, chain.begin() + k + 1),
+                              fresh);
+                if (r.far > tolerance) continue;
+            }
             near = true;
             if (usable(fresh, tolerance, whole)) {
-                best = Replacement{i, k, fresh, far};
+                best = std::move(r);
                 break;
             }
         }
         if (!near) break;
     }
+    if (best && drawn) best->far = strays(*drawn, *covered, chain, *best, tolerance);
     return best;
 }
 
@@ -453,26 +539,34 @@ std::optional<Replacement> longest_stretch(const std::vector<Primitive>& chain, 
 /// past a corner at a stroke's end), each replaced as a whole by the
 /// nearest of run_candidates within what the tolerance leaves.
 double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviation,
-                  const Drawn* drawn) {
+                  const Drawn* drawn, Watch& watch) {
     double worst = deviation;
+    double stroke_length = -1.0;  // measured when first needed, again after each change
     for (std::size_t i = 0; i < chain.size() && chain.size() > 1; ++i) {
         if (!is_short(chain[i], tolerance)) continue;
         std::size_t j = i;
         while (j + 1 < chain.size() && is_short(chain[j + 1], tolerance)) ++j;
-        double stroke_length = 0.0;
-        for (const Primitive& p : chain) stroke_length += geometry::length(p);
         // A stroke that short as a whole may keep its pieces.
+        if (stroke_length < 0.0) {
+            stroke_length = 0.0;
+            for (const Primitive& p : chain) stroke_length += geometry::length(p);
+        }
         if (stroke_length < tolerance) return worst;
         std::optional<Replacement> best;
+        std::optional<Covered> covered;
+        if (drawn) covered.emplace(*drawn, chain, tolerance);
         // A long run is a curve drawn in short pieces, which no one piece
         // over all of it follows: it goes straight to the stretches below.
         const bool long_run = j - i >= 8;
         for (Replacement& r :
-             long_run ? std::vector<Replacement>{} : run_candidates(chain, i, j, tolerance)) {
+             long_run ? std::vector<Replacement>{} : run_candidates(chain, i, j, tolerance, !drawn)) {
+            watch.tick();
             // Measured against the drawing itself where it is at hand: the
-            // fitting leaves little of the tolerance to add to.
+            // fitting leaves little of the tolerance to add to. Only one
+            // nearer than the best so far is kept: the search stops past it.
             if (drawn)
-                r.far = strays(*drawn, chain, r, tolerance);
+                r.far = strays(*drawn, *covered, chain, r,
+                               best ? std::min(tolerance, best->far) : tolerance);
             else
                 r.far += deviation;
             if (r.far <= tolerance && (!best || r.far < best->far)) best = std::move(r);
@@ -480,12 +574,15 @@ double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviat
         // A run that no one piece replaces (a curve drawn as a polyline of
         // short lines) is replaced from its start by the longest stretch
         // one line, or one arc leaving as it did, stays close to.
-        if (!best) best = longest_stretch(chain, i, j, tolerance, deviation, drawn);
+        if (!best)
+            best = longest_stretch(chain, i, j, tolerance, deviation, drawn,
+                                   covered ? &*covered : nullptr, watch);
         // Else the rest of the run may still be replaced from its next piece.
         if (!best) continue;
         worst = std::max(worst, best->far);
         chain.erase(chain.begin() + best->first, chain.begin() + best->last + 1);
         chain.insert(chain.begin() + best->first, best->pieces.begin(), best->pieces.end());
+        stroke_length = -1.0;
         // The pieces before may now end in a shorter run: look again from
         // the first piece changed.
         i = best->first == 0 ? std::size_t(-1) : best->first - 1;
@@ -496,12 +593,20 @@ double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviat
 }  // namespace
 
 double merge_slivers(std::vector<Primitive>& chain, double tolerance, double deviation,
-                     std::span<const Curve> drawing) {
+                     std::span<const Curve> drawing, Clock::time_point deadline) {
+    const auto any_short = [&] {
+        return chain.size() > 1 && std::any_of(chain.begin(), chain.end(), [&](const Primitive& p) {
+                   return is_short(p, tolerance);
+               });
+    };
+    if (!any_short()) return deviation;
+    Watch watch(deadline, "merging pieces shorter than the tolerance in " +
+                              (drawing.empty() ? std::string("a curve") : drawing.front().source));
     std::optional<Drawn> drawn;
     if (!drawing.empty()) drawn.emplace(drawing, tolerance);
     // Whole runs first, where a closed one is still whole (a small loop
     // that merging piece by piece would leave open).
-    double worst = drawn ? merge_runs(chain, tolerance, deviation, &*drawn) : deviation;
+    double worst = drawn ? merge_runs(chain, tolerance, deviation, &*drawn, watch) : deviation;
     for (std::size_t i = 0; i < chain.size() && chain.size() > 1; ++i) {
         const Primitive& p = chain[i];
         if (p.kind == PrimitiveKind::Circle || geometry::length(p) >= tolerance) continue;
@@ -518,6 +623,7 @@ double merge_slivers(std::vector<Primitive>& chain, double tolerance, double dev
         std::optional<Replacement> best;
         for (const Merge how : ways) {
             for (const double s : {tolerance, 2.0 * tolerance, 4.0 * tolerance}) {
+                watch.tick();
                 auto r = candidate(chain, i, how, s, tolerance);
                 if (r && deviation + r->far <= tolerance) {
                     best = std::move(r);
@@ -532,20 +638,22 @@ double merge_slivers(std::vector<Primitive>& chain, double tolerance, double dev
         chain.insert(chain.begin() + best->first, best->pieces.begin(), best->pieces.end());
         i = best->first + best->pieces.size() - 1;
     }
-    return merge_runs(chain, tolerance, worst, drawn ? &*drawn : nullptr);
+    return merge_runs(chain, tolerance, worst, drawn ? &*drawn : nullptr, watch);
 }
 
 double merge_stroke_slivers(std::vector<std::vector<Primitive>>& strokes, double tolerance,
-                            double deviation, std::span<const Curve> drawing) {
+                            double deviation, std::span<const Curve> drawing,
+                            Clock::time_point deadline) {
     double worst = deviation;
     std::optional<Drawn> drawn;
+    Watch watch(deadline, "merging pieces shorter than the tolerance where curves join");
     for (std::vector<Primitive>& stroke : strokes) {
         if (stroke.size() < 2 ||
             std::none_of(stroke.begin(), stroke.end(),
                          [&](const Primitive& p) { return is_short(p, tolerance); }))
             continue;
         if (!drawn) drawn.emplace(drawing, tolerance);
-        worst = std::max(worst, merge_runs(stroke, tolerance, deviation, &*drawn));
+        worst = std::max(worst, merge_runs(stroke, tolerance, deviation, &*drawn, watch));
     }
     return worst;
 }

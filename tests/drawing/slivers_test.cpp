@@ -259,3 +259,37 @@ TEST_CASE("Slivers: an imported path's short arc between arcs is merged", "[draw
     check_joined(r.strokes[0]);
     CHECK(r.deviation <= options.tolerance);
 }
+
+TEST_CASE("Slivers: a deadline that has passed stops merging with the time limit's error",
+          "[drawing][slivers]") {
+    // Half a circle of 2 mm radius drawn as 64 lines of 98 um (a CAD
+    // polyline), as one curve and as one stroke of curves joined end to end.
+    Curve polyline{"LWPOLYLINE (layer 0, handle 2A)", {}};
+    std::vector<Primitive> chain;
+    for (int k = 0; k < 64; ++k) {
+        const auto at = [](int i) {
+            const double a = geometry::kPi * i / 64.0;
+            return Vec2(0.3 + 0.002 * std::cos(a), 0.002 * std::sin(a));
+        };
+        polyline.segments.push_back(LineSegment{at(k), at(k + 1)});
+        chain.push_back(geometry::make_line(at(k), at(k + 1)));
+    }
+    const std::vector<Curve> drawing{polyline};
+    // Without one, the run is merged: the work the deadline cuts short.
+    std::vector<Primitive> merged = chain;
+    merge_slivers(merged, kTolerance, 0.0, drawing);
+    CHECK(merged.size() < chain.size());
+    for (const Primitive& p : merged) CHECK(geometry::length(p) >= kTolerance);
+
+    std::vector<Primitive> late = chain;
+    CHECK_THROWS_WITH(merge_slivers(late, kTolerance, 0.0, drawing, Clock::now()),
+                      Catch::Contains("time limit") && Catch::Contains("merging") &&
+                          Catch::Contains("LWPOLYLINE (layer 0, handle 2A)"));
+    std::vector<std::vector<Primitive>> strokes{chain};
+    CHECK_THROWS_AS(merge_stroke_slivers(strokes, kTolerance, 0.0, drawing, Clock::now()),
+                    ImportTimeout);
+    // A chain with nothing to merge is not held up by it.
+    std::vector<Primitive> plain{merged};
+    CHECK_NOTHROW(merge_slivers(plain, kTolerance, 0.0, drawing, Clock::now()));
+    CHECK(plain.size() == merged.size());
+}

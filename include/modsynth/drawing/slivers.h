@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <modsynth/drawing/curve.h>
+#include <modsynth/drawing/deadline.h>
 #include <modsynth/geometry/primitive.h>
 
 namespace modsynth::drawing {
@@ -33,15 +34,19 @@ namespace modsynth::drawing {
 /// `drawing` the chain was fitted to (its curves), these merges are measured against
 /// it (both ways, near the merge) rather than added to `deviation`, which
 /// the fitting leaves close to the tolerance. Only a stroke shorter than
-/// the tolerance as a whole keeps pieces that short.
+/// the tolerance as a whole keeps pieces that short. Throws ImportTimeout
+/// once `deadline` has passed, the chain then half merged.
 double merge_slivers(std::vector<geometry::Primitive>& chain, double tolerance, double deviation,
-                     std::span<const Curve> drawing = {});
+                     std::span<const Curve> drawing = {},
+                     Clock::time_point deadline = kNoDeadline);
 
 /// The same, run by run, for strokes joined end to end from several
 /// curves (a CAD polyline written as LINE entities: each curve one piece,
 /// each stroke a run of them), measured against all of the `drawing`'s
-/// curves. Returns the deviation after merging.
+/// curves. Returns the deviation after merging; throws ImportTimeout once
+/// `deadline` has passed.
 double merge_stroke_slivers(std::vector<std::vector<geometry::Primitive>>& strokes,
-                            double tolerance, double deviation, std::span<const Curve> drawing);
+                            double tolerance, double deviation, std::span<const Curve> drawing,
+                            Clock::time_point deadline = kNoDeadline);
 
 }  // namespace modsynth::drawing
