@@ -1,6 +1,7 @@
 #include <modsynth/drawing/slivers.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -28,6 +29,21 @@ constexpr double kSmooth = 1e-6;
 /// the pieces compared are within a few tolerances of length, and meet at
 /// their ends, so their distance varies slowly between samples.
 constexpr int kSamples = 64;
+static_assert((kSamples & (kSamples - 1)) == 0, "halved down to 1");
+
+/// The sample indices 0..kSamples, the middle first, then the middles of
+/// the halves, and so on, the ends last: a replacement strays farthest from
+/// the drawing between its ends, and once the worst is known the other
+/// samples are quick to clear.
+constexpr std::array<int, kSamples + 1> kMiddleFirst = [] {
+    std::array<int, kSamples + 1> order{};
+    std::size_t n = 0;
+    for (int step = kSamples / 2; step >= 1; step /= 2)
+        for (int i = step; i < kSamples; i += 2 * step) order[n++] = i;
+    order[n++] = 0;
+    order[n++] = kSamples;
+    return order;
+}();
 
 Vec2 start_tangent(const Primitive& p) { return geometry::tangent_at(p, 0.0); }
 Vec2 end_tangent(const Primitive& p) { return geometry::tangent_at(p, geometry::length(p)); }
@@ -164,8 +180,9 @@ class Drawn {
 public:
     Drawn(std::span<const Curve> curves, double tolerance) : cell_(1.25 * tolerance) {
         const double step = tolerance / 8.0;
+        std::vector<int> counts;
+        std::size_t total = 0;
         for (const Curve& curve : curves) {
-            bool first = true;
             for (const Segment& seg : curve.segments) {
                 double rough = 0.0;
                 Vec2 last = point(seg, 0.0);
@@ -177,7 +194,17 @@ public:
                 // The coarse length is short of the true one by at most a
                 // few per cent on the curves drawings hold; twice as many
                 // points keep them within the step.
-                const int n = int(std::clamp(std::ceil(2.0 * rough / step), 8.0, 200000.0));
+                counts.push_back(int(std::clamp(std::ceil(2.0 * rough / step), 8.0, 200000.0)));
+                total += counts.back() + 1;
+            }
+        }
+        pts_.reserve(total);
+        joined_.reserve(total);
+        std::size_t next = 0;
+        for (const Curve& curve : curves) {
+            bool first = true;
+            for (const Segment& seg : curve.segments) {
+                const int n = counts[next++];
                 for (int k = first ? 0 : 1; k <= n; ++k) {
                     pts_.push_back(point(seg, double(k) / n));
                     joined_.push_back(!(first && k == 0));
@@ -185,7 +212,20 @@ public:
                 first = false;
             }
         }
-        for (std::uint32_t k = 0; k < pts_.size(); ++k) grid_[key(pts_[k])].push_back(k);
+        // Points along a curve fall into a cell several in a row: a cell
+        // holds runs of them.
+        std::int64_t last = 0;
+        std::vector<Run>* runs = nullptr;
+        for (std::uint32_t k = 0; k < pts_.size(); ++k) {
+            const std::int64_t at = key(pts_[k]);
+            if (runs && at == last && runs->back().end == k) {
+                ++runs->back().end;
+                continue;
+            }
+            runs = &grid_[at];
+            runs->push_back({k, k + 1});
+            last = at;
+        }
     }
 
     /// The distance from q to the drawing when it is within the tolerance
@@ -198,17 +238,20 @@ public:
         // q's own cell first: what lies within `enough` is most likely there.
         for (const auto& [dx, dy] : {std::pair{0, 0}, {-1, -1}, {-1, 0}, {-1, 1}, {0, -1}, {0, 1},
                                     {1, -1}, {1, 0}, {1, 1}}) {
-            {
-                const auto it = grid_.find(combine(ix + dx, iy + dy));
-                if (it == grid_.end()) continue;
-                for (const std::uint32_t k : it->second) {
+            const auto it = grid_.find(combine(ix + dx, iy + dy));
+            if (it == grid_.end()) continue;
+            for (const Run& run : it->second) {
+                for (std::uint32_t k = run.begin; k < run.end; ++k) {
+                    // The point itself is the quickest to measure: it is
+                    // usually within `enough` when the drawing is.
+                    best = std::min(best, (q - pts_[k]).norm());
+                    if (best <= enough) return best;
                     // Curves are not joined to each other: the segment
                     // before a curve's first point is none.
                     if (k + 1 < pts_.size() && joined_[k + 1])
                         best = std::min(best, geometry::point_segment(q, pts_[k], pts_[k + 1]));
                     if (joined_[k])
                         best = std::min(best, geometry::point_segment(q, pts_[k - 1], pts_[k]));
-                    best = std::min(best, (q - pts_[k]).norm());
                     if (best <= enough) return best;
                 }
             }
@@ -226,14 +269,35 @@ public:
             for (std::int64_t iy = y0; iy <= y1; ++iy) {
                 const auto it = grid_.find(combine(ix, iy));
                 if (it == grid_.end()) continue;
-                for (const std::uint32_t k : it->second) f(k);
+                for (const Run& run : it->second)
+                    for (std::uint32_t k = run.begin; k < run.end; ++k) f(k);
             }
         }
     }
 
     const Vec2& at(std::uint32_t k) const { return pts_[k]; }
 
+    /// Marks for a pass over points that may come up more than once: a
+    /// new pass, then whether a point comes up for the first time in it.
+    std::uint32_t new_pass() const {
+        if (seen_.empty() || pass_ == std::numeric_limits<std::uint32_t>::max()) {
+            seen_.assign(pts_.size(), 0);
+            pass_ = 0;
+        }
+        return ++pass_;
+    }
+    bool first_in(std::uint32_t pass, std::uint32_t k) const {
+        if (seen_[k] == pass) return false;
+        seen_[k] = pass;
+        return true;
+    }
+
 private:
+    /// Points begin..end-1, consecutive along a curve.
+    struct Run {
+        std::uint32_t begin, end;
+    };
+
     std::pair<std::int64_t, std::int64_t> cell(const Vec2& q) const {
         return {std::int64_t(std::floor(q.x() / cell_)), std::int64_t(std::floor(q.y() / cell_))};
     }
@@ -248,7 +312,9 @@ private:
     double cell_;
     std::vector<Vec2> pts_;
     std::vector<bool> joined_;  ///< whether pts_[k] continues the curve of pts_[k - 1]
-    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> grid_;
+    std::unordered_map<std::int64_t, std::vector<Run>> grid_;
+    mutable std::vector<std::uint32_t> seen_;
+    mutable std::uint32_t pass_ = 0;
 };
 
 /// The drawing's points within the tolerance of each piece of a chain,
@@ -311,16 +377,17 @@ double strays(const Drawn& drawn, Covered& covered, const std::vector<Primitive>
     // for its distance stops at the first part of the drawing that near.
     for (const Primitive& p : r.pieces) {
         const double len = geometry::length(p);
-        for (int i = 0; i <= kSamples; ++i) {
+        for (const int i : kMiddleFirst) {
             worst = std::max(worst, drawn.distance(geometry::point_at(p, len * i / kSamples),
                                                    std::max(worst, enough)));
             if (worst > limit) return worst;
         }
     }
-    // A point near two replaced pieces is measured twice, to the same
-    // distance.
+    // A point near several replaced pieces is measured once.
+    const std::uint32_t pass = drawn.new_pass();
     for (std::size_t k = r.first; k <= r.last; ++k) {
         for (const std::uint32_t m : covered.of(k)) {
+            if (!drawn.first_in(pass, m)) continue;
             worst = std::max(worst, distance_to(local, drawn.at(m), std::max(worst, enough)));
             if (worst > limit) return worst;
         }
