@@ -312,9 +312,8 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
     // that no one curve held: merged now, against the whole drawing.
     std::size_t pieces = 0;
     for (const Chain& stroke : order.strokes) pieces += stroke.size();
-    result.deviation =
-        merge_stroke_slivers(order.strokes, options.tolerance, result.deviation, all_placed,
-                             options.deadline);
+    result.deviation = merge_stroke_slivers(order.strokes, options.tolerance, result.deviation,
+                                            all_placed, options.deadline);
     for (const Chain& stroke : order.strokes) pieces -= stroke.size();
     const bool merged = pieces != 0;
     result.strokes = std::move(order.strokes);

@@ -236,8 +236,9 @@ public:
         double best = std::numeric_limits<double>::infinity();
         const auto [ix, iy] = cell(q);
         // q's own cell first: what lies within `enough` is most likely there.
-        for (const auto& [dx, dy] : {std::pair{0, 0}, {-1, -1}, {-1, 0}, {-1, 1}, {0, -1}, {0, 1},
-                                    {1, -1}, {1, 0}, {1, 1}}) {
+        constexpr int kOwnFirst[9][2] = {{0, 0}, {-1, -1}, {-1, 0}, {-1, 1}, {0, -1},
+                                         {0, 1}, {1, -1},  {1, 0},  {1, 1}};
+        for (const auto& [dx, dy] : kOwnFirst) {
             const auto it = grid_.find(combine(ix + dx, iy + dy));
             if (it == grid_.end()) continue;
             for (const Run& run : it->second) {
@@ -584,9 +585,9 @@ std::optional<Replacement> longest_stretch(const std::vector<Primitive>& chain, 
             if (drawn) {
                 if (strays(*drawn, *covered, chain, r, tolerance, tolerance) > tolerance) continue;
             } else {
-                r.far = deviation +
-                        apart(std::vector<Primitive>(chain.begin() + i, chain.begin() + k + 1),
-                              fresh);
+                r.far =
+                    deviation +
+                    apart(std::vector<Primitive>(chain.begin() + i, chain.begin() + k + 1), fresh);
                 if (r.far > tolerance) continue;
             }
             near = true;
@@ -625,8 +626,8 @@ double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviat
         // A long run is a curve drawn in short pieces, which no one piece
         // over all of it follows: it goes straight to the stretches below.
         const bool long_run = j - i >= 8;
-        for (Replacement& r :
-             long_run ? std::vector<Replacement>{} : run_candidates(chain, i, j, tolerance, !drawn)) {
+        for (Replacement& r : long_run ? std::vector<Replacement>{}
+                                       : run_candidates(chain, i, j, tolerance, !drawn)) {
             watch.tick();
             // Measured against the drawing itself where it is at hand: the
             // fitting leaves little of the tolerance to add to. Only one

@@ -37,8 +37,7 @@ namespace modsynth::drawing {
 /// the tolerance as a whole keeps pieces that short. Throws ImportTimeout
 /// once `deadline` has passed, the chain then half merged.
 double merge_slivers(std::vector<geometry::Primitive>& chain, double tolerance, double deviation,
-                     std::span<const Curve> drawing = {},
-                     Clock::time_point deadline = kNoDeadline);
+                     std::span<const Curve> drawing = {}, Clock::time_point deadline = kNoDeadline);
 
 /// The same, run by run, for strokes joined end to end from several
 /// curves (a CAD polyline written as LINE entities: each curve one piece,
