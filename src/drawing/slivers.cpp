@@ -172,17 +172,36 @@ std::optional<Replacement> candidate(const std::vector<Primitive>& chain, std::s
     return r;
 }
 
+/// Gives up, as fitting does, once the import's deadline has passed;
+/// looks at the clock every few hundred candidates.
+class Watch {
+public:
+    Watch(Clock::time_point deadline, std::string doing)
+        : deadline_(deadline), doing_(std::move(doing)) {}
+    void tick() {
+        if (count_++ % 256 == 0) now();
+    }
+    void now() const { check_deadline(deadline_, doing_); }
+
+private:
+    Clock::time_point deadline_;
+    std::string doing_;
+    unsigned count_ = 0;
+};
+
 /// The drawing a chain was fitted to, as a polyline whose points are at
 /// most an eighth of the tolerance apart, filed in a grid of cells a bit
 /// wider than the tolerance: how near a point lies to the drawing, and
 /// which of its points lie near a place, without a pass over all of it.
 class Drawn {
 public:
-    Drawn(std::span<const Curve> curves, double tolerance) : cell_(1.25 * tolerance) {
+    Drawn(std::span<const Curve> curves, double tolerance, const Watch& watch)
+        : cell_(1.25 * tolerance) {
         const double step = tolerance / 8.0;
         std::vector<int> counts;
         std::size_t total = 0;
         for (const Curve& curve : curves) {
+            watch.now();
             for (const Segment& seg : curve.segments) {
                 double rough = 0.0;
                 Vec2 last = point(seg, 0.0);
@@ -205,6 +224,9 @@ public:
             bool first = true;
             for (const Segment& seg : curve.segments) {
                 const int n = counts[next++];
+                // A drawing hundreds of metres across at a tolerance of
+                // micrometres holds millions of points.
+                watch.now();
                 for (int k = first ? 0 : 1; k <= n; ++k) {
                     pts_.push_back(point(seg, double(k) / n));
                     joined_.push_back(!(first && k == 0));
@@ -215,15 +237,22 @@ public:
         // Points along a curve fall into a cell several in a row: a cell
         // holds runs of them.
         std::int64_t last = 0;
-        std::vector<Run>* runs = nullptr;
+        Run* run = nullptr;
         for (std::uint32_t k = 0; k < pts_.size(); ++k) {
+            if (k % 65536 == 0) watch.now();
             const std::int64_t at = key(pts_[k]);
-            if (runs && at == last && runs->back().end == k) {
-                ++runs->back().end;
+            if (run && at == last && run->end == k) {
+                ++run->end;
                 continue;
             }
-            runs = &grid_[at];
-            runs->push_back({k, k + 1});
+            Cell& c = grid_[at];
+            if (c.first.end == 0) {
+                c.first = {k, k + 1};
+                run = &c.first;
+            } else {
+                c.more.push_back({k, k + 1});
+                run = &c.more.back();
+            }
             last = at;
         }
     }
@@ -241,8 +270,9 @@ public:
         for (const auto& [dx, dy] : kOwnFirst) {
             const auto it = grid_.find(combine(ix + dx, iy + dy));
             if (it == grid_.end()) continue;
-            for (const Run& run : it->second) {
-                for (std::uint32_t k = run.begin; k < run.end; ++k) {
+            const Cell& c = it->second;
+            for (std::size_t r = 0; r < c.size(); ++r) {
+                for (std::uint32_t k = c[r].begin; k < c[r].end; ++k) {
                     // The point itself is the quickest to measure: it is
                     // usually within `enough` when the drawing is.
                     best = std::min(best, (q - pts_[k]).norm());
@@ -261,18 +291,24 @@ public:
     }
 
     /// Calls f once with the index of every point of the drawing in the
-    /// cells that meet the box [lo, hi].
+    /// cells that hold one of `samples` or are next to one that does.
     template <class F>
-    void in_box(const Vec2& lo, const Vec2& hi, F f) const {
-        const auto [x0, y0] = cell(lo);
-        const auto [x1, y1] = cell(hi);
-        for (std::int64_t ix = x0; ix <= x1; ++ix) {
-            for (std::int64_t iy = y0; iy <= y1; ++iy) {
-                const auto it = grid_.find(combine(ix, iy));
-                if (it == grid_.end()) continue;
-                for (const Run& run : it->second)
-                    for (std::uint32_t k = run.begin; k < run.end; ++k) f(k);
-            }
+    void around(const std::vector<Vec2>& samples, F f) const {
+        std::vector<std::int64_t> keys;
+        keys.reserve(9 * samples.size());
+        for (const Vec2& q : samples) {
+            const auto [ix, iy] = cell(q);
+            for (std::int64_t dx = -1; dx <= 1; ++dx)
+                for (std::int64_t dy = -1; dy <= 1; ++dy) keys.push_back(combine(ix + dx, iy + dy));
+        }
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+        for (const std::int64_t at : keys) {
+            const auto it = grid_.find(at);
+            if (it == grid_.end()) continue;
+            const Cell& c = it->second;
+            for (std::size_t r = 0; r < c.size(); ++r)
+                for (std::uint32_t k = c[r].begin; k < c[r].end; ++k) f(k);
         }
     }
 
@@ -296,7 +332,16 @@ public:
 private:
     /// Points begin..end-1, consecutive along a curve.
     struct Run {
-        std::uint32_t begin, end;
+        std::uint32_t begin = 0, end = 0;
+    };
+    /// A cell's runs: most cells are crossed once, and where the points
+    /// lie farther apart than a cell (a drawing much larger than the
+    /// tolerance) each holds one point.
+    struct Cell {
+        Run first;
+        std::vector<Run> more;
+        std::size_t size() const { return 1 + more.size(); }
+        const Run& operator[](std::size_t r) const { return r == 0 ? first : more[r - 1]; }
     };
 
     std::pair<std::int64_t, std::int64_t> cell(const Vec2& q) const {
@@ -313,7 +358,7 @@ private:
     double cell_;
     std::vector<Vec2> pts_;
     std::vector<bool> joined_;  ///< whether pts_[k] continues the curve of pts_[k - 1]
-    std::unordered_map<std::int64_t, std::vector<Run>> grid_;
+    std::unordered_map<std::int64_t, Cell> grid_;
     mutable std::vector<std::uint32_t> seen_;
     mutable std::uint32_t pass_ = 0;
 };
@@ -331,21 +376,16 @@ public:
         const auto [it, fresh] = lists_.try_emplace(k);
         if (!fresh) return it->second;
         std::vector<std::uint32_t>& covered = it->second;
-        // Every point of the piece lies within an eighth of the tolerance
-        // of one of these samples: the box around them, widened by a bit
-        // more than the tolerance, holds every drawing point within the
-        // tolerance of the piece.
+        // The grid's neighbourhood of a point reaches past the tolerance by
+        // a quarter of it: samples that far apart find every drawing point
+        // within the tolerance of a piece. Each cell is looked at once.
         const Primitive& p = chain_[k];
         const double len = geometry::length(p);
         const int n = 1 + int(std::ceil(len / (0.25 * tolerance_)));
-        Vec2 lo = p.start, hi = p.start;
-        for (int i = 1; i <= n; ++i) {
-            const Vec2 q = geometry::point_at(p, len * i / n);
-            lo = lo.cwiseMin(q);
-            hi = hi.cwiseMax(q);
-        }
-        const Vec2 margin = Vec2::Constant(1.25 * tolerance_);
-        drawn_.in_box(lo - margin, hi + margin, [&](std::uint32_t m) {
+        std::vector<Vec2> samples;
+        samples.reserve(n + 1);
+        for (int i = 0; i <= n; ++i) samples.push_back(geometry::point_at(p, len * i / n));
+        drawn_.around(samples, [&](std::uint32_t m) {
             if (geometry::nearest(p, drawn_.at(m)).distance <= tolerance_) covered.push_back(m);
         });
         return covered;
@@ -395,22 +435,6 @@ double strays(const Drawn& drawn, Covered& covered, const std::vector<Primitive>
     }
     return worst;
 }
-
-/// Gives up, as fitting does, once the import's deadline has passed;
-/// looks at the clock every few hundred candidates.
-class Watch {
-public:
-    Watch(Clock::time_point deadline, std::string doing)
-        : deadline_(deadline), doing_(std::move(doing)) {}
-    void tick() {
-        if (count_++ % 256 == 0) check_deadline(deadline_, doing_);
-    }
-
-private:
-    Clock::time_point deadline_;
-    std::string doing_;
-    unsigned count_ = 0;
-};
 
 /// How far the points of `from` (on samples of each piece) lie from `to`.
 double reach(const std::vector<Primitive>& from, const std::vector<Primitive>& to) {
@@ -671,7 +695,7 @@ double merge_slivers(std::vector<Primitive>& chain, double tolerance, double dev
     Watch watch(deadline, "merging pieces shorter than the tolerance in " +
                               (drawing.empty() ? std::string("a curve") : drawing.front().source));
     std::optional<Drawn> drawn;
-    if (!drawing.empty()) drawn.emplace(drawing, tolerance);
+    if (!drawing.empty()) drawn.emplace(drawing, tolerance, watch);
     // Whole runs first, where a closed one is still whole (a small loop
     // that merging piece by piece would leave open).
     double worst = drawn ? merge_runs(chain, tolerance, deviation, &*drawn, watch) : deviation;
@@ -720,7 +744,7 @@ double merge_stroke_slivers(std::vector<std::vector<Primitive>>& strokes, double
             std::none_of(stroke.begin(), stroke.end(),
                          [&](const Primitive& p) { return is_short(p, tolerance); }))
             continue;
-        if (!drawn) drawn.emplace(drawing, tolerance);
+        if (!drawn) drawn.emplace(drawing, tolerance, watch);
         worst = std::max(worst, merge_runs(stroke, tolerance, deviation, &*drawn, watch));
     }
     return worst;
