@@ -10,6 +10,10 @@
 #include <string>
 #include <unordered_map>
 
+#include <boost/geometry/geometries/box.hpp>
+#include <boost/geometry/geometries/point.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
 #include <modsynth/drawing/biarc_fit.h>
 #include <modsynth/geometry/distance.h>
 
@@ -234,27 +238,25 @@ public:
                 first = false;
             }
         }
-        // Points along a curve fall into a cell several in a row: a cell
-        // holds runs of them.
-        std::int64_t last = 0;
-        Run* run = nullptr;
-        for (std::uint32_t k = 0; k < pts_.size(); ++k) {
-            if (k % 65536 == 0) watch.now();
-            const std::int64_t at = key(pts_[k]);
-            if (run && at == last && run->end == k) {
-                ++run->end;
-                continue;
+        // The points are filed in the grid a chunk at a time, when a cell
+        // a chunk's box meets is first looked at: merging looks near the
+        // short pieces only, and a drawing much larger than the tolerance
+        // would fill millions of cells.
+        std::vector<std::pair<CellBox, std::uint32_t>> boxes;
+        for (std::uint32_t begin = 0; begin < pts_.size(); begin += kChunk) {
+            if (begin % 65536 == 0) watch.now();
+            const std::uint32_t end = std::min<std::uint32_t>(begin + kChunk, pts_.size());
+            auto [x0, y0] = cell(pts_[begin]);
+            auto [x1, y1] = std::pair{x0, y0};
+            for (std::uint32_t k = begin + 1; k < end; ++k) {
+                const auto [x, y] = cell(pts_[k]);
+                x0 = std::min(x0, x), x1 = std::max(x1, x);
+                y0 = std::min(y0, y), y1 = std::max(y1, y);
             }
-            Cell& c = grid_[at];
-            if (c.first.end == 0) {
-                c.first = {k, k + 1};
-                run = &c.first;
-            } else {
-                c.more.push_back({k, k + 1});
-                run = &c.more.back();
-            }
-            last = at;
+            boxes.push_back({CellBox({x0, y0}, {x1, y1}), begin / kChunk});
         }
+        filed_.assign(boxes.size(), false);
+        chunks_ = Chunks(boxes.begin(), boxes.end());
     }
 
     /// The distance from q to the drawing when it is within the tolerance
@@ -268,9 +270,7 @@ public:
         constexpr int kOwnFirst[9][2] = {{0, 0}, {-1, -1}, {-1, 0}, {-1, 1}, {0, -1},
                                          {0, 1}, {1, -1},  {1, 0},  {1, 1}};
         for (const auto& [dx, dy] : kOwnFirst) {
-            const auto it = grid_.find(combine(ix + dx, iy + dy));
-            if (it == grid_.end()) continue;
-            const Cell& c = it->second;
+            const Cell& c = at_cell(ix + dx, iy + dy);
             for (std::size_t r = 0; r < c.size(); ++r) {
                 for (std::uint32_t k = c[r].begin; k < c[r].end; ++k) {
                     // The point itself is the quickest to measure: it is
@@ -294,19 +294,17 @@ public:
     /// cells that hold one of `samples` or are next to one that does.
     template <class F>
     void around(const std::vector<Vec2>& samples, F f) const {
-        std::vector<std::int64_t> keys;
-        keys.reserve(9 * samples.size());
+        std::vector<std::pair<std::int64_t, std::int64_t>> cells;
+        cells.reserve(9 * samples.size());
         for (const Vec2& q : samples) {
             const auto [ix, iy] = cell(q);
             for (std::int64_t dx = -1; dx <= 1; ++dx)
-                for (std::int64_t dy = -1; dy <= 1; ++dy) keys.push_back(combine(ix + dx, iy + dy));
+                for (std::int64_t dy = -1; dy <= 1; ++dy) cells.emplace_back(ix + dx, iy + dy);
         }
-        std::sort(keys.begin(), keys.end());
-        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-        for (const std::int64_t at : keys) {
-            const auto it = grid_.find(at);
-            if (it == grid_.end()) continue;
-            const Cell& c = it->second;
+        std::sort(cells.begin(), cells.end());
+        cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+        for (const auto& [ix, iy] : cells) {
+            const Cell& c = at_cell(ix, iy);
             for (std::size_t r = 0; r < c.size(); ++r)
                 for (std::uint32_t k = c[r].begin; k < c[r].end; ++k) f(k);
         }
@@ -334,15 +332,49 @@ private:
     struct Run {
         std::uint32_t begin = 0, end = 0;
     };
-    /// A cell's runs: most cells are crossed once, and where the points
-    /// lie farther apart than a cell (a drawing much larger than the
-    /// tolerance) each holds one point.
+    /// A cell's runs (most cells are crossed once), and whether every
+    /// chunk that may hold points in it has been filed.
     struct Cell {
         Run first;
         std::vector<Run> more;
-        std::size_t size() const { return 1 + more.size(); }
+        bool complete = false;
+        std::size_t size() const { return first.end == 0 ? 0 : 1 + more.size(); }
         const Run& operator[](std::size_t r) const { return r == 0 ? first : more[r - 1]; }
+        void add(std::uint32_t k) {
+            if (first.end == 0)
+                first = {k, k + 1};
+            else if (Run& last = more.empty() ? first : more.back(); last.end == k)
+                ++last.end;
+            else
+                more.push_back({k, k + 1});
+        }
     };
+    using CellPoint =
+        boost::geometry::model::point<std::int64_t, 2, boost::geometry::cs::cartesian>;
+    using CellBox = boost::geometry::model::box<CellPoint>;
+    using Chunks = boost::geometry::index::rtree<std::pair<CellBox, std::uint32_t>,
+                                                 boost::geometry::index::rstar<16>>;
+    static constexpr std::uint32_t kChunk = 64;
+
+    /// The cell (ix, iy) with all of its points, filing first the chunks
+    /// that may hold some.
+    const Cell& at_cell(std::int64_t ix, std::int64_t iy) const {
+        Cell& c = grid_[combine(ix, iy)];
+        if (c.complete) return c;
+        std::vector<std::pair<CellBox, std::uint32_t>> found;
+        chunks_.query(boost::geometry::index::intersects(CellBox({ix, iy}, {ix, iy})),
+                      std::back_inserter(found));
+        for (const auto& [box, chunk] : found) {
+            if (filed_[chunk]) continue;
+            filed_[chunk] = true;
+            const std::uint32_t end =
+                std::min<std::uint32_t>((chunk + 1) * kChunk, std::uint32_t(pts_.size()));
+            for (std::uint32_t k = chunk * kChunk; k < end; ++k) grid_[key(pts_[k])].add(k);
+        }
+        // grid_ may have grown: c is still where it was (its nodes stay).
+        c.complete = true;
+        return c;
+    }
 
     std::pair<std::int64_t, std::int64_t> cell(const Vec2& q) const {
         return {std::int64_t(std::floor(q.x() / cell_)), std::int64_t(std::floor(q.y() / cell_))};
@@ -358,7 +390,9 @@ private:
     double cell_;
     std::vector<Vec2> pts_;
     std::vector<bool> joined_;  ///< whether pts_[k] continues the curve of pts_[k - 1]
-    std::unordered_map<std::int64_t, Cell> grid_;
+    mutable std::unordered_map<std::int64_t, Cell> grid_;
+    Chunks chunks_;
+    mutable std::vector<bool> filed_;
     mutable std::vector<std::uint32_t> seen_;
     mutable std::uint32_t pass_ = 0;
 };
