@@ -97,7 +97,8 @@ std::optional<std::size_t> primitives_needed(const std::vector<Curve>& placed, d
         try {
             FittedCurve f = fit_curve(c, tolerance, task::kMaxPrimitives, deadline);
             merge_slivers(f.primitives, tolerance,
-                          fold_short_lines(f.primitives, tolerance, f.deviation));
+                          fold_short_lines(f.primitives, tolerance, f.deviation), {&c, 1},
+                          deadline);
             total += f.primitives.size();
         } catch (const InputError&) {
             return std::nullopt;
@@ -269,7 +270,8 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
         f.deviation = fold_short_lines(f.primitives, options.tolerance, f.deviation);
         // What is still shorter than the tolerance (an arc between arcs, a
         // line between arcs) is merged into its neighbours.
-        f.deviation = merge_slivers(f.primitives, options.tolerance, f.deviation);
+        f.deviation = merge_slivers(f.primitives, options.tolerance, f.deviation, {&placed, 1},
+                                    options.deadline);
         total += f.primitives.size();
         if (total > task::kMaxPrimitives) continue;
         result.deviation = std::max(result.deviation, f.deviation);
@@ -305,8 +307,17 @@ ImportResult import_drawing(const Drawing& drawing, const ImportOptions& options
                              (result.warnings.empty() ? "" : " (" + result.warnings.back() + ")"));
     }
     StrokeOrder order = order_strokes(std::move(chains), options.keep_order);
+    // Strokes joined from curves end to end (a CAD polyline written as
+    // LINE entities) may run through pieces shorter than the tolerance
+    // that no one curve held: merged now, against the whole drawing.
+    std::size_t pieces = 0;
+    for (const Chain& stroke : order.strokes) pieces += stroke.size();
+    result.deviation = merge_stroke_slivers(order.strokes, options.tolerance, result.deviation,
+                                            all_placed, options.deadline);
+    for (const Chain& stroke : order.strokes) pieces -= stroke.size();
+    const bool merged = pieces != 0;
     result.strokes = std::move(order.strokes);
-    result.travel = order.travel;
+    result.travel = merged ? travel_length(result.strokes) : order.travel;
     return result;
 }
 

@@ -7,6 +7,8 @@
 
 #include <modsynth/drawing/import.h>
 #include <modsynth/drawing/slivers.h>
+#include <modsynth/drawing/svg_reader.h>
+#include <modsynth/geometry/distance.h>
 
 #include <Eigen/Geometry>
 
@@ -60,7 +62,108 @@ void check_joined(const std::vector<Primitive>& chain) {
         CHECK((chain[i].start - chain[i - 1].end).norm() <= 1e-12);
 }
 
+/// Imports a one-path SVG at 1 mm a unit (tolerance 0.1 unit) and checks
+/// what the runs of slivers must leave: no primitive shorter than the
+/// tolerance, every stroke joined within the contract's 1e-6 m, and the
+/// result within the tolerance of the drawing, sampled both ways. Returns
+/// the strokes.
+std::vector<Chain> import_checked(const std::string& path) {
+    const std::string svg =
+        R"(<svg xmlns="http://www.w3.org/2000/svg"><path fill="none" stroke="black" d=")" + path +
+        R"("/></svg>)";
+    ImportOptions o;
+    o.placement.scale = 1e-3;
+    o.placement.at = Vec2(0.3, 0.0);
+    const ImportResult r = import_drawing(svg, DrawingFormat::Svg, o);
+    CHECK(r.deviation <= o.tolerance);
+    // The drawing, densely sampled in task metres.
+    std::vector<std::vector<Vec2>> original;
+    for (const Curve& c : read_svg(svg).curves) {
+        std::vector<Vec2> pts;
+        for (const Segment& seg : c.segments)
+            for (int k = 0; k <= 4000; ++k) pts.push_back(r.placement(point(seg, k / 4000.0)));
+        original.push_back(std::move(pts));
+    }
+    auto to_original = [&](const Vec2& q) {
+        double best = 1e9;
+        for (const auto& pts : original)
+            for (std::size_t k = 1; k < pts.size(); ++k)
+                best = std::min(best, geometry::point_segment(q, pts[k - 1], pts[k]));
+        return best;
+    };
+    double far = 0.0;
+    for (const Chain& stroke : r.strokes) {
+        for (std::size_t i = 0; i < stroke.size(); ++i) {
+            CHECK(geometry::length(stroke[i]) >= o.tolerance);
+            if (i > 0) CHECK((stroke[i].start - stroke[i - 1].end).norm() <= 1e-6);
+            const double len = geometry::length(stroke[i]);
+            for (int k = 0; k <= 200; ++k)
+                far = std::max(far, to_original(geometry::point_at(stroke[i], len * k / 200.0)));
+        }
+    }
+    for (const auto& pts : original) {
+        for (const Vec2& q : pts) {
+            double best = 1e9;
+            for (const Chain& stroke : r.strokes)
+                for (const Primitive& p : stroke)
+                    best = std::min(best, geometry::nearest(p, q).distance);
+            far = std::max(far, best);
+        }
+    }
+    // The polyline of samples lies within micrometres of the drawing.
+    CHECK(far <= o.tolerance + 1e-7);
+    return r.strokes;
+}
+
 }  // namespace
+
+TEST_CASE("Slivers: a run of tiny arcs (a 10 um wiggle after a corner) is replaced as a whole",
+          "[drawing][slivers]") {
+    // Three half circles of 10 um radius, alternating, between two lines:
+    // each 31 um, smooth with each other, at a corner with the lines.
+    const auto strokes = import_checked(
+        "M 0 0 L 10 0 A 0.01 0.01 0 0 1 10.02 0 A 0.01 0.01 0 0 0 10.04 0 "
+        "A 0.01 0.01 0 0 1 10.06 0 L 10.06 10");
+    REQUIRE(strokes.size() == 1);
+}
+
+TEST_CASE("Slivers: a run of tiny arcs rounding a corner between two arcs", "[drawing][slivers]") {
+    // A corner of two 5 mm arcs rounded by four arcs of 4 to 24 um radius.
+    const auto strokes = import_checked(
+        "M 0 0 A 5 5 0 0 1 5 5 A 0.024 0.024 0 0 1 5.02 5.02 A 0.004 0.004 0 0 0 5.025 5.025 "
+        "A 0.012 0.012 0 0 1 5.04 5.03 A 0.02 0.02 0 0 1 5.05 5.01 A 5 5 0 0 0 10 0");
+    REQUIRE(strokes.size() == 1);
+}
+
+TEST_CASE("Slivers: a loop smaller than the tolerance collapses to the point it sits at",
+          "[drawing][slivers]") {
+    // A circle of 20 um radius drawn within a stroke, touching it at (10, 0).
+    const auto strokes =
+        import_checked("M 0 0 L 10 0 A 0.02 0.02 0 0 1 10 -0.04 A 0.02 0.02 0 0 1 10 0 L 20 3");
+    REQUIRE(strokes.size() == 1);
+    CHECK(strokes[0].size() == 2);
+}
+
+TEST_CASE("Slivers: a short line past a corner at a stroke's end", "[drawing][slivers]") {
+    SECTION("after an arc") {
+        const auto strokes = import_checked("M 0 0 A 5 5 0 0 1 10 0 L 10 0.05");
+        REQUIRE(strokes.size() == 1);
+    }
+    SECTION("after a line, at a sharp corner") { import_checked("M 0 0 L 10 0 L 9.95 0.04"); }
+    SECTION("at the stroke's start") { import_checked("M 0 0.06 L 0 0 A 5 5 0 0 0 10 0"); }
+}
+
+TEST_CASE("Slivers: a stroke shorter than the tolerance may stay that short",
+          "[drawing][slivers]") {
+    std::vector<Primitive> chain{geometry::make_line(Vec2(0.3, 0.0), Vec2(0.30003, 0.0)),
+                                 geometry::make_line(Vec2(0.30003, 0.0), Vec2(0.30003, 3e-5))};
+    const std::vector<Primitive> before = chain;
+    merge_slivers(chain, kTolerance, 0.0);
+    REQUIRE(!chain.empty());
+    CHECK(chain.front().start == before.front().start);
+    CHECK((chain.back().end - before.back().end).norm() <= kTolerance);
+    check_joined(chain);
+}
 
 TEST_CASE("Slivers: a short arc between two arcs becomes a biarc, smooth throughout",
           "[drawing][slivers]") {
@@ -155,4 +258,38 @@ TEST_CASE("Slivers: an imported path's short arc between arcs is merged", "[draw
     for (const Primitive& p : r.strokes[0]) CHECK(geometry::length(p) >= options.tolerance);
     check_joined(r.strokes[0]);
     CHECK(r.deviation <= options.tolerance);
+}
+
+TEST_CASE("Slivers: a deadline that has passed stops merging with the time limit's error",
+          "[drawing][slivers]") {
+    // Half a circle of 2 mm radius drawn as 64 lines of 98 um (a CAD
+    // polyline), as one curve and as one stroke of curves joined end to end.
+    Curve polyline{"LWPOLYLINE (layer 0, handle 2A)", {}};
+    std::vector<Primitive> chain;
+    for (int k = 0; k < 64; ++k) {
+        const auto at = [](int i) {
+            const double a = geometry::kPi * i / 64.0;
+            return Vec2(0.3 + 0.002 * std::cos(a), 0.002 * std::sin(a));
+        };
+        polyline.segments.push_back(LineSegment{at(k), at(k + 1)});
+        chain.push_back(geometry::make_line(at(k), at(k + 1)));
+    }
+    const std::vector<Curve> drawing{polyline};
+    // Without one, the run is merged: the work the deadline cuts short.
+    std::vector<Primitive> merged = chain;
+    merge_slivers(merged, kTolerance, 0.0, drawing);
+    CHECK(merged.size() < chain.size());
+    for (const Primitive& p : merged) CHECK(geometry::length(p) >= kTolerance);
+
+    std::vector<Primitive> late = chain;
+    CHECK_THROWS_WITH(merge_slivers(late, kTolerance, 0.0, drawing, Clock::now()),
+                      Catch::Contains("time limit") && Catch::Contains("merging") &&
+                          Catch::Contains("LWPOLYLINE (layer 0, handle 2A)"));
+    std::vector<std::vector<Primitive>> strokes{chain};
+    CHECK_THROWS_AS(merge_stroke_slivers(strokes, kTolerance, 0.0, drawing, Clock::now()),
+                    ImportTimeout);
+    // A chain with nothing to merge is not held up by it.
+    std::vector<Primitive> plain{merged};
+    CHECK_NOTHROW(merge_slivers(plain, kTolerance, 0.0, drawing, Clock::now()));
+    CHECK(plain.size() == merged.size());
 }

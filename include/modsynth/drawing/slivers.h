@@ -3,8 +3,11 @@
 // chain (a path optimiser's leftover arc of a few micrometres between two
 // arcs). A robot traces them like any piece, and a primitive that short
 // is noise in the task: they are merged into their neighbours.
+#include <span>
 #include <vector>
 
+#include <modsynth/drawing/curve.h>
+#include <modsynth/drawing/deadline.h>
 #include <modsynth/geometry/primitive.h>
 
 namespace modsynth::drawing {
@@ -19,6 +22,30 @@ namespace modsynth::drawing {
 /// replaces the pieces stays within what `tolerance` leaves beside
 /// `deviation` (the fitted chain's own distance from the drawing). Returns
 /// the deviation after merging. Circles are left alone.
-double merge_slivers(std::vector<geometry::Primitive>& chain, double tolerance, double deviation);
+///
+/// What that leaves is then replaced run by run: a run of consecutive
+/// short pieces as a whole, by the nearest of one line over it, the
+/// neighbouring lines extended to meet, one arc or line over it and a
+/// window of a neighbour, a biarc over both windows; a loop smaller than
+/// the tolerance collapses to the point where it leaves the stroke; a run
+/// at a stroke's end is dropped (a short line past a corner: the stroke
+/// ends at the corner); a long run (a curve drawn as a polyline of short
+/// lines) by the longest stretches one line or arc replaces. Given the
+/// `drawing` the chain was fitted to (its curves), these merges are measured against
+/// it (both ways, near the merge) rather than added to `deviation`, which
+/// the fitting leaves close to the tolerance. Only a stroke shorter than
+/// the tolerance as a whole keeps pieces that short. Throws ImportTimeout
+/// once `deadline` has passed, the chain then half merged.
+double merge_slivers(std::vector<geometry::Primitive>& chain, double tolerance, double deviation,
+                     std::span<const Curve> drawing = {}, Clock::time_point deadline = kNoDeadline);
+
+/// The same, run by run, for strokes joined end to end from several
+/// curves (a CAD polyline written as LINE entities: each curve one piece,
+/// each stroke a run of them), measured against all of the `drawing`'s
+/// curves. Returns the deviation after merging; throws ImportTimeout once
+/// `deadline` has passed.
+double merge_stroke_slivers(std::vector<std::vector<geometry::Primitive>>& strokes,
+                            double tolerance, double deviation, std::span<const Curve> drawing,
+                            Clock::time_point deadline = kNoDeadline);
 
 }  // namespace modsynth::drawing
