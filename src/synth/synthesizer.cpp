@@ -932,8 +932,10 @@ Solution through_arcs(const task::Task& task, const SynthesisOptions& options,
         const std::string cut =
             text::format("%s cut into %d arcs", task::part_name(task, loop->first).c_str(), arcs);
         if (o.progress)
-            o.progress(
-                {run::Stage::Search, cut + ", so that the first link may turn inside it", 0.0});
+            o.progress({run::Stage::Search,
+                        cut + ", so that the first link may turn inside it (the lines that follow "
+                              "number the primitives of that task of arcs)",
+                        0.0});
         Solution found = Search(split.task, o, stats).run();
         if (found.status != Status::Solved) {
             tried.push_back(cut + ": " + to_string(found.status.kind));
