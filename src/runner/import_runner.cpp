@@ -71,20 +71,35 @@ std::vector<std::string> import_arguments(const ImportRequest& r, double time_li
     if (!r.options.read.obstacle_layer.empty())
         args.push_back("--obstacles-from=" + r.options.read.obstacle_layer);
     if (r.options.keep_order) args.push_back("--keep-order");
+    if (!r.options.read.layers.empty()) {
+        std::string layers;
+        for (const std::string& l : r.options.read.layers)
+            layers += (layers.empty() ? "" : ",") + l;
+        args.push_back("--layers=" + layers);
+    }
+    if (r.options.read.strict) args.push_back("--strict");
+    if (r.options.read.hatch_boundaries) args.push_back("--hatch-boundaries");
     return args;
 }
 
-/// The child names --plane and --cylinder as the command line spells them;
-/// the reply names them as the request did.
+/// The child names its options as the command line spells them (--plane,
+/// --strict, ...); the reply names them as the request did.
 json as_query_options(json reply, const SurfaceImport& surface) {
-    for (const auto& [cli, query] :
-         {std::pair{std::string("--plane"), surface.plane_option},
-          std::pair{std::string("--cylinder"), surface.cylinder_option}}) {
-        for (const char* key : {"part", "error"}) {
-            if (!reply.contains(key) || !reply[key].is_string()) continue;
-            const std::string text = reply[key].get<std::string>();
-            if (text.compare(0, cli.size(), cli) == 0) reply[key] = query + text.substr(cli.size());
+    const std::pair<std::string, std::string> names[] = {
+        {"--plane", surface.plane_option},
+        {"--cylinder", surface.cylinder_option},
+        {"--layers", "layers"},
+        {"--strict", "strict"},
+        {"--hatch-boundaries", "hatch_boundaries"}};
+    for (const char* key : {"part", "error"}) {
+        if (!reply.contains(key) || !reply[key].is_string()) continue;
+        std::string text = reply[key].get<std::string>();
+        for (const auto& [cli, query] : names) {
+            for (std::size_t at = text.find(cli); at != std::string::npos;
+                 at = text.find(cli, at + query.size()))
+                text.replace(at, cli.size(), query);
         }
+        reply[key] = text;
     }
     return reply;
 }

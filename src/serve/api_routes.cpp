@@ -258,6 +258,33 @@ std::optional<std::vector<double>> query_numbers(
     return out;
 }
 
+/// A yes-or-no query parameter: 1 or true, 0 or false; false when absent.
+/// Throws task::InputError naming the parameter otherwise.
+bool query_switch(const Request& req, const char* name) {
+    if (!req.has_param(name)) return false;
+    const std::string text = req.get_param_value(name);
+    if (text == "1" || text == "true") return true;
+    if (text == "0" || text == "false") return false;
+    throw task::InputError(name, "expected 1 or 0 (true or false), not '" + printable(text) + "'");
+}
+
+/// The names of a comma-separated list (DXF layers); none when absent.
+/// Throws task::InputError naming the parameter for an empty name.
+std::vector<std::string> query_names(const Request& req, const char* name) {
+    std::vector<std::string> out;
+    if (!req.has_param(name)) return out;
+    const std::string text = req.get_param_value(name);
+    for (std::size_t at = 0; at <= text.size();) {
+        const std::size_t comma = std::min(text.find(',', at), text.size());
+        if (comma == at)
+            throw task::InputError(name,
+                                   "expected names separated by commas: '" + printable(text) + "'");
+        out.push_back(text.substr(at, comma - at));
+        at = comma + 1;
+    }
+    return out;
+}
+
 bool host_is_loopback(const Request& req) {
     if (!req.has_header("Host")) return true;  // HTTP/1.0 clients send none
     if (req.get_header_value_count("Host") != 1) return false;
@@ -485,6 +512,10 @@ private:
             options.tolerance = query_number(req, "tolerance").value_or(options.tolerance);
             if (!(options.tolerance >= 1e-9 && options.tolerance <= 1.0))
                 throw task::InputError("tolerance", "metres within 1e-9 to 1");
+            // What is read, as `import --layers`, `--strict`, `--hatch-boundaries`.
+            options.read.layers = query_names(req, "layers");
+            options.read.strict = query_switch(req, "strict");
+            options.read.hatch_boundaries = query_switch(req, "hatch_boundaries");
             if (surface.placed()) {
                 // In space a base region is a box; round a cylinder the
                 // drawing faces its centre.

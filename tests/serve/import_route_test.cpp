@@ -3,13 +3,16 @@
 // makes it, through the real routes on a loopback port (the import in this
 // process); the surface's options refused by name.
 #include <cmath>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <thread>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "../support/fixtures.h"
 #include "api_routes.h"
 #include "import_runner.h"
 #include "solve_jobs.h"
@@ -55,14 +58,23 @@ public:
 
     /// The status and the JSON body of a POST of the drawing.
     std::pair<int, json> import(const std::string& query) {
+        return post("/api/import?format=svg&" + query, kDrawing, "image/svg+xml");
+    }
+
+    /// The same for a DXF file's text.
+    std::pair<int, json> import_dxf(const std::string& query, const std::string& dxf) {
+        return post("/api/import?format=dxf&" + query, dxf, "application/dxf");
+    }
+
+private:
+    std::pair<int, json> post(const std::string& path, const std::string& body, const char* type) {
         httplib::Client client("127.0.0.1", port_);
         client.set_read_timeout(30, 0);
-        const auto res = client.Post("/api/import?format=svg&" + query, kDrawing, "image/svg+xml");
+        const auto res = client.Post(path.c_str(), body, type);
         REQUIRE(res);
         return {res->status, json::parse(res->body)};
     }
 
-private:
     std::unique_ptr<SolveJobs> jobs_;
     std::unique_ptr<ImportRunner> imports_;
     std::unique_ptr<ConnectionServer> server_;
@@ -171,4 +183,54 @@ TEST_CASE("/api/import refuses a surface that is not one, naming the option") {
     CHECK(body["error"].get<std::string>().find("circumference") != std::string::npos);
     // A flat import still takes a base of four numbers.
     CHECK(s.import("width=0.1&base=-0.1,-0.1,0.1,0.1").first == 200);
+}
+
+TEST_CASE("/api/import reads DXF hatches, layers and strictness as `modsynth import` does") {
+    std::ifstream in(modsynth::testing::source_path("tests/fixtures/drawings/hatches.dxf"));
+    std::stringstream file;
+    file << in.rdbuf();
+    const std::string dxf = file.str();
+    REQUIRE(!dxf.empty());
+    Server s;
+    const std::string placed = "width=0.1&at=0.35,0&base=-0.1,-0.1,0.1,0.1";
+    // Hatches only: skipped by default, so nothing is left to draw.
+    {
+        const auto [status, body] = s.import_dxf(placed, dxf);
+        CHECK(status == 422);
+        CHECK_THAT(body["error"].get<std::string>(), Catch::Contains("HATCH"));
+    }
+    // Their boundaries, on request.
+    std::size_t traced = 0;
+    {
+        const auto [status, body] = s.import_dxf(placed + "&hatch_boundaries=1", dxf);
+        REQUIRE(status == 200);
+        traced = body["primitives"].get<std::size_t>();
+        CHECK(traced > 0);
+        CHECK(body["warnings"].empty());
+        CHECK(body["layers"].contains("outline"));
+    }
+    // Strict: a hatch not traced is refused; traced, it is not.
+    CHECK(s.import_dxf(placed + "&strict=1", dxf).first == 422);
+    {
+        const auto [status, body] =
+            s.import_dxf(placed + "&strict=true&hatch_boundaries=true", dxf);
+        CHECK(status == 200);
+        CHECK(body["primitives"].get<std::size_t>() == traced);
+    }
+    // Layers: the hatches' own layer keeps them, another leaves nothing.
+    CHECK(s.import_dxf(placed + "&hatch_boundaries=1&layers=outline", dxf).first == 200);
+    CHECK(s.import_dxf(placed + "&hatch_boundaries=1&layers=elsewhere", dxf).first == 422);
+    // Values that are not one, named.
+    const std::pair<std::string, std::string> bad[] = {
+        {"hatch_boundaries=yes", "hatch_boundaries"},
+        {"strict=2", "strict"},
+        {"layers=outline,,other", "layers"},
+        {"layers=", "layers"},
+    };
+    for (const auto& [query, part] : bad) {
+        INFO(query);
+        const auto [status, body] = s.import_dxf(placed + "&" + query, dxf);
+        CHECK(status == 400);
+        CHECK(body["part"] == part);
+    }
 }
