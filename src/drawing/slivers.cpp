@@ -636,6 +636,21 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
             if (auto arcs = biarc(a.window.start, start_tangent(a.window), b.window.end,
                                   end_tangent(b.window)))
                 options.push_back(std::move(*arcs));
+            // A turn back (a hairpin narrower than the tolerance) has no
+            // smooth stand-in: the path goes to its tip and back, a cusp.
+            if (end_tangent(chain[i - 1]).dot(start_tangent(chain[j + 1])) < 0.0) {
+                const Vec2 mid = 0.5 * (from + to);
+                Vec2 tip = from;
+                for (const Primitive& p : run) {
+                    const double len = geometry::length(p);
+                    for (int k = 0; k <= kSamples; ++k) {
+                        const Vec2 q = geometry::point_at(p, len * k / kSamples);
+                        if ((q - mid).norm() > (tip - mid).norm()) tip = q;
+                    }
+                }
+                options.push_back({geometry::make_line(a.window.start, tip),
+                                   geometry::make_line(tip, b.window.end)});
+            }
             for (const auto& fresh : options) {
                 if (!usable(fresh, tolerance, false)) continue;
                 Replacement r{i - 1, j + 1, {}, far_apart(old, fresh)};
@@ -796,7 +811,16 @@ double merge_slivers(std::vector<Primitive>& chain, double tolerance, double dev
         chain.insert(chain.begin() + best->first, best->pieces.begin(), best->pieces.end());
         i = best->first + best->pieces.size() - 1;
     }
-    return merge_runs(chain, tolerance, worst, drawn ? &*drawn : nullptr, watch);
+    worst = merge_runs(chain, tolerance, worst, drawn ? &*drawn : nullptr, watch);
+    // A closed curve's first and last pieces are neighbours, though the
+    // chain's ends part them: a short one left there is merged with the
+    // chain started half way round, where it lies inside.
+    const bool closed = chain.size() > 2 && (chain.back().end - chain.front().start).norm() <= 1e-9;
+    if (closed && (is_short(chain.front(), tolerance) || is_short(chain.back(), tolerance))) {
+        std::rotate(chain.begin(), chain.begin() + chain.size() / 2, chain.end());
+        worst = merge_runs(chain, tolerance, worst, drawn ? &*drawn : nullptr, watch);
+    }
+    return worst;
 }
 
 double merge_stroke_slivers(std::vector<std::vector<Primitive>>& strokes, double tolerance,
