@@ -24,6 +24,7 @@
 #include <modsynth/nlp/warm_start.h>
 #include <modsynth/prove/conflict_text.h>
 #include <modsynth/prove/loop_proof.h>
+#include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/prove/provers.h>
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/smt/common_core.h>
@@ -164,6 +165,7 @@ private:
     };
     std::optional<Proof> find_proof();
     bool ruled_out(int dof, FrontStageVerdicts& verdicts);
+    bool two_joints_bounded(FrontStageVerdicts& verdicts);
     std::optional<Solution> search_skeletons(FrontStageVerdicts& verdicts);
     Solution infeasible(Proof proof) const;
     Solution unknown(const std::vector<std::vector<task::TaskPart>>& cores) const;
@@ -220,8 +222,14 @@ Solution Search::run() {
     if (auto found = search_skeletons(verdicts)) return timed(std::move(*found));
     // Blocking skeletons proves nothing: while time is left, their other
     // initial guesses are tried.
-    if (!verdicts.searched.empty())
-        if (auto found = retry(verdicts.searched)) return timed(std::move(*found));
+    // Before 2 joints' skeletons are retried, the branch and bound may
+    // prove that none can be certified: they are dropped.
+    auto& searched = verdicts.searched;
+    const auto two = [](const smt::Skeleton& sk) { return sk.dof == 2; };
+    if (std::any_of(searched.begin(), searched.end(), two) && two_joints_bounded(verdicts))
+        searched.erase(std::remove_if(searched.begin(), searched.end(), two), searched.end());
+    if (!searched.empty())
+        if (auto found = retry(searched)) return timed(std::move(*found));
     if (verdicts.all_unsat && !verdicts.cores.empty()) {
         const run::Stopwatch t0;
         Proof proof;
@@ -360,6 +368,36 @@ bool Search::ruled_out(int dof, FrontStageVerdicts& verdicts) {
     say(run::Stage::Search, std::to_string(dof) + " joints: not searched: " + why);
     tried_.push_back(std::to_string(dof) + " joints not searched (" + why + ")");
     verdicts.all_unsat = false;
+    return true;
+}
+
+// Where more joints are allowed, the branch and bound that proves a task of
+// 2 joints only infeasible (find_proof) drops 2 joints from the retries:
+// a proof, said as the loop's is. Not before the first pass, which
+// certifies most tasks that 2 joints can do at less than its cost.
+bool Search::two_joints_bounded(FrontStageVerdicts& verdicts) {
+    if (task_.robot.dof.size() < 2) return false;  // dof [2]: find_proof ran it
+    BranchAndBoundOptions bnb = opt_.branch_and_bound;
+    bnb.time_limit = std::min(bnb.time_limit, opt_.branch_and_bound_share * opt_.time_limit);
+    bnb.core_time_limit = std::min(bnb.core_time_limit, bnb.time_limit);
+    // A search that finds no proof here only delays the joint counts that
+    // can do the task: it gets a count of boxes (the same on every
+    // machine) rather than all of its share.
+    bnb.max_boxes = std::min(bnb.max_boxes, opt_.branch_and_bound_boxes_beside);
+    // Its core is not shrunk: it only drops a joint count, and an answer of
+    // "infeasible" has its core shrunk with the other joint counts'.
+    bnb.core_time_limit = 0.0;
+    if (!(bnb.time_limit > 0.0) || bnb.max_boxes < 1) return false;
+    task::Task two = task_;
+    two.robot.dof = {2};
+    const run::Stopwatch t0;
+    std::optional<Proof> proof = prove::prove_two_joint_infeasible(two, bnb, deadline_);
+    stats_.front_seconds += t0.seconds();
+    if (!proof) return false;
+    say(run::Stage::Proofs, "2 joints: proved infeasible, " + proof->message);
+    tried_.push_back("2 joints proved infeasible (by branch and bound)");
+    verdicts.own_proofs.push_back("with 2 joints, " + proof->message);
+    verdicts.cores.push_back(std::move(proof->core));
     return true;
 }
 
@@ -865,6 +903,8 @@ bool SynthesisOptions::IsValid(std::string* error) const {
         .nested("proximal", proximal)
         .nested("branch_and_bound", branch_and_bound)
         .within("branch_and_bound_share", branch_and_bound_share, 0.0, 1.0)
+        .at_least("branch_and_bound_boxes_beside",
+                  static_cast<double>(branch_and_bound_boxes_beside), 0.0)
         .greater("point_spacing", point_spacing, 0.0)
         .at_least("min_points_per_primitive", min_points_per_primitive, 1)
         .at_least("max_points_per_primitive", max_points_per_primitive, min_points_per_primitive)

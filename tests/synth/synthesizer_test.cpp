@@ -318,3 +318,40 @@ TEST_CASE("a circle round a post rules out 2 joints at once, and 3 joints trace 
           std::vector<task::TaskPart>{task::TaskPart::trajectory(0), task::TaskPart::obstacle(0),
                                       task::TaskPart::robot(task::RobotKey::Dof)});
 }
+
+TEST_CASE("2 joints proved impossible by the branch and bound are not retried",
+          "[synth][branch_and_bound]") {
+    // A base inside a ring of posts with one opening (scripts/keyhole-tasks):
+    // no 2-joint arm reaches out, 3 joints do. With refinements cut to one
+    // iteration nothing is certified in the first pass, and the retries
+    // would try the 2-joint skeletons again.
+    const task::Task t =
+        io::load_task(testing::source_path("tests/fixtures/keyhole/keyhole.task.json"));
+    REQUIRE(t.robot.dof == std::vector<int>{2, 3});
+    std::vector<std::string> lines;
+    synth::SynthesisOptions o;
+    o.time_limit = 3.0;
+    o.first_solve_iterations = 1;
+    o.later_solve_iterations = 1;
+    o.progress = [&](const run::ProgressEvent& e) { lines.push_back(e.message); };
+    const synth::Solution s = synth::synthesize(t, o);
+    CHECK(s.status == synth::Status::Unknown);
+    CHECK_THAT(s.explanation.message,
+               Catch::Contains("2 joints proved infeasible (by branch and bound)"));
+    const auto said = [&](const std::string& what) {
+        return std::count_if(lines.begin(), lines.end(), [&](const std::string& l) {
+            return l.find(what) != std::string::npos;
+        });
+    };
+    CHECK(said("2 joints: front stage") == 1);  // the first pass tried them
+    CHECK(said("2 joints: proved infeasible, no 2-joint arm") == 1);
+    CHECK(said("2 joints: more initial guesses") == 0);
+    CHECK(said("2 joints: retry") == 0);
+    CHECK(said("3 joints: more initial guesses") >= 1);
+    // Without the proof's budget, they are retried.
+    lines.clear();
+    o.branch_and_bound_boxes_beside = 0;
+    synth::synthesize(t, o);
+    CHECK(said("2 joints: proved infeasible") == 0);
+    CHECK(said("2 joints: more initial guesses") >= 1);
+}

@@ -53,6 +53,10 @@ struct SynthesisOptions {
         return o;
     }();
     double branch_and_bound_share = 0.05;
+    /// Design boxes, at most, for the branch and bound that drops 2 joints
+    /// from the retries where more are allowed (0: it does not run). The
+    /// proofs of scripts/keyhole-tasks take 300-1000.
+    long branch_and_bound_boxes_beside = 2000;
 
     /// m between the points where the refinement constrains the arm along
     /// each primitive: 25 mm keeps a circle of the shipped tasks well
