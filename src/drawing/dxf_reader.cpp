@@ -1100,7 +1100,6 @@ std::optional<std::string> dxflib_version(std::string_view comment) {
         if (dot == std::string_view::npos) break;
         rest.remove_prefix(dot + 1);
     }
-    if (parts < 2) return std::nullopt;
     for (; parts < 4; ++parts) version += ".0";
     return std::string(kPrefix) + version;
 }

@@ -395,11 +395,14 @@ TEST_CASE("DXF: an MTEXT's angle does not depend on what memory held", "[drawing
     // comment names it (LibreCAD's A4_1_draw.dxf came out different from
     // run to run). An "I" 10 units tall turned a quarter turn lies along x.
     const std::string degrees = dxf("0\nMTEXT\n8\n0\n10\n0\n20\n0\n40\n10\n71\n7\n50\n90\n1\nI\n");
-    const std::string radians =
-        "999\ndxflib 2.0.2.0\n" +
+    const std::string in_radians =
         dxf("0\nMTEXT\n8\n0\n10\n0\n20\n0\n40\n10\n71\n7\n50\n1.5707963267948966\n1\nI\n");
+    const std::string radians = "999\ndxflib 2.0.2.0\n" + in_radians;
+    // dxflib would end a version's third part where memory it never set says.
+    const std::string radians_short = "999\ndxflib 2.0.2\n" + in_radians;
     const std::string later = "999\ndxflib 2.0.4.8\n" + degrees;
-    for (const std::string* text : {&degrees, &radians, &later}) {
+    const std::string no_version = "999\ndxflib of 2.0.1\n" + degrees;
+    for (const std::string* text : {&degrees, &radians, &radians_short, &later, &no_version}) {
         std::vector<Vec2> first;
         for (const unsigned char byte : {0x00, 0xFF, 0x7F, 0x01, 0x55}) {
             fill_stack(byte);
