@@ -301,8 +301,10 @@ public:
         unsupported("DIMENSION");
     }
     void addLeader(const DL_LeaderData&) override { unsupported("LEADER"); }
-    // dxflib's hatch loops are not what the file holds (dxf_hatch.h): the
-    // pre-scan read every boundary, in the order dxflib reports the hatches.
+    // dxflib's hatch loops are not what the file holds (dxf_hatch.h), and
+    // depend on an edge type it leaves uninitialised (tests/valgrind.supp):
+    // the pre-scan read every boundary, in the order dxflib reports the
+    // hatches.
     void addHatch(const DL_HatchData&) override {
         if (next_hatch_ >= hatches_.size())
             throw InputError("(document)", "a HATCH the reader did not scan");
