@@ -301,8 +301,10 @@ public:
         unsupported("DIMENSION");
     }
     void addLeader(const DL_LeaderData&) override { unsupported("LEADER"); }
-    // dxflib's hatch loops are not what the file holds (dxf_hatch.h): the
-    // pre-scan read every boundary, in the order dxflib reports the hatches.
+    // dxflib's hatch loops are not what the file holds (dxf_hatch.h), and
+    // depend on an edge type it leaves uninitialised (tests/valgrind.supp):
+    // the pre-scan read every boundary, in the order dxflib reports the
+    // hatches.
     void addHatch(const DL_HatchData&) override {
         if (next_hatch_ >= hatches_.size())
             throw InputError("(document)", "a HATCH the reader did not scan");
@@ -1077,12 +1079,40 @@ struct CheckedGroups {
     std::vector<HatchBoundary> hatches;
 };
 
+/// The dxflib version a comment names ("dxflib 2.0.4.8"), written in the
+/// four parts dxflib's parser needs (DL_Dxf::getLibVersion, given three,
+/// ends the third where memory it never set says), or nothing.
+std::optional<std::string> dxflib_version(std::string_view comment) {
+    comment = trimmed(comment);
+    constexpr std::string_view kPrefix = "dxflib ";
+    if (comment.substr(0, kPrefix.size()) != kPrefix) return std::nullopt;
+    std::string_view rest = comment.substr(kPrefix.size());
+    std::string version;
+    int parts = 0;
+    for (;;) {
+        const std::size_t dot = rest.find('.');
+        const std::string_view part = rest.substr(0, dot);
+        unsigned n = 0;
+        const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), n);
+        // Each part is a byte of an int: the first must leave its sign.
+        if (part.empty() || ec != std::errc() || end != part.data() + part.size() ||
+            n > (parts == 0 ? 127u : 255u) || ++parts > 4)
+            return std::nullopt;
+        version += (parts > 1 ? "." : "") + std::to_string(n);
+        if (dot == std::string_view::npos) break;
+        rest.remove_prefix(dot + 1);
+    }
+    for (; parts < 4; ++parts) version += ".0";
+    return std::string(kPrefix) + version;
+}
+
 /// The file's groups as dxflib is to read them, after every check dxflib
 /// does not make: group codes are integers ("090" is 90), numbers are whole
 /// and finite numbers, declared counts fit in the file and match what
 /// follows, no line is longer than dxflib's buffer (its read loop never ends
 /// on one), and the file ends with EOF (one cut off inside an entity would
-/// lose that entity). Comments (999) are dropped, whatever their length.
+/// lose that entity). Comments (999) are dropped, whatever their length,
+/// but for the dxflib version one (see below).
 /// Entity names are written without the spaces around them, as dxflib
 /// compares them. Every error names the entity and the line.
 CheckedGroups checked_groups(std::string_view text) {
@@ -1093,6 +1123,17 @@ CheckedGroups checked_groups(std::string_view text) {
     CheckedGroups checked;
     std::string& out = checked.text;
     out.reserve(text.size());
+    // dxflib reads an MTEXT's angle (group 50) in radians if dxflib 2.0.2.0
+    // or older wrote the file, as a comment says, and in degrees otherwise;
+    // but it knows the writer's version only from that comment: without
+    // one, it compares a value it never set (DL_Dxf's constructor leaves
+    // libVersion out, DL_Dxf::addMText reads it), and the drawing changed
+    // from run to run. Every file says a version first, the reader's own,
+    // and the file's own comment, written whole, then takes its place.
+    out += "999\ndxflib " DL_VERSION "\n";
+    const auto keep_version = [&out](std::string_view comment) {
+        if (const auto version = dxflib_version(comment)) out += "999\n" + *version + '\n';
+    };
     Context context;
     std::string section;
     bool started = false, in_section = false, section_named = false;
@@ -1103,7 +1144,10 @@ CheckedGroups checked_groups(std::string_view text) {
         const std::size_t value_number = lines.number();
         const std::optional<long long> code = parse_integer(*code_line);
         if (!started) {
-            if (code == 999 && value_line) continue;
+            if (code == 999 && value_line) {
+                keep_version(*value_line);
+                continue;
+            }
             if (code != 0 || !value_line || trimmed(*value_line) != "SECTION")
                 throw InputError("(document)", "not a DXF file: it does not begin with a SECTION");
             started = true;
@@ -1113,7 +1157,10 @@ CheckedGroups checked_groups(std::string_view text) {
                              "'" + text::printable(*code_line) + "' is not a group code");
         }
         if (!value_line) break;  // a code without its value: cut off
-        if (*code == 999) continue;
+        if (*code == 999) {
+            keep_version(*value_line);
+            continue;
+        }
         const std::string_view value = *value_line;
         if (value.size() > kLongestLine) {
             throw InputError(context.at(value_number), "a line of " + std::to_string(value.size()) +

@@ -78,6 +78,10 @@ const Font& font(const std::string& name, const std::string& part) {
                       (installed.empty() ? "none; install hershey-fonts-data" : installed) + ")");
     }
     Font f;
+    // Of what it loads, hershey_glyph::glyphnum is never to be read:
+    // libhersheyfont 0.1 parses it with strtoul from a buffer it ends with
+    // a NUL only afterwards (hershey_jhf_load_glyph), so it may take a
+    // stray digit (tests/valgrind.supp).
     f.glyphs.reset(hershey_jhf_font_load(file.c_str()));
     if (!f.glyphs) throw InputError(part, "the Hershey font '" + name + "' cannot be read");
     const double cap = glyph_extreme(f.glyphs.get(), 'H', true);

@@ -1,8 +1,10 @@
 // The DXF reader against files that dxflib alone misreads or never finishes:
 // every one is read as written or refused naming the entity and the value.
 #include <catch2/catch.hpp>
+#include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <modsynth/drawing/biarc_fit.h>
 #include <modsynth/drawing/dxf_reader.h>
@@ -352,6 +354,67 @@ TEST_CASE("DXF: TEXT and MTEXT are written in a Hershey font", "[drawing][dxf][t
     REQUIRE(deg.warnings.size() == 1);
     CHECK_THAT(deg.warnings[0],
                Catch::Contains("TEXT #1 (layer 0)") && Catch::Contains("('\xC2\xB0')"));
+}
+
+namespace {
+
+/// Leaves `byte` in the stack the next call's frames will take: what a
+/// reader leaves uninitialised then holds it.
+[[gnu::noinline]] void fill_stack(unsigned char byte) {
+    volatile unsigned char area[1 << 16];
+    for (std::size_t i = 0; i < sizeof area; ++i) area[i] = byte;
+}
+
+/// The points a drawing's curves pass through, in order.
+std::vector<Vec2> points_of(const Drawing& d) {
+    std::vector<Vec2> out;
+    for (const Curve& c : d.curves) {
+        for (const Segment& s : c.segments) {
+            out.push_back(start_point(s));
+            out.push_back(end_point(s));
+        }
+    }
+    return out;
+}
+
+/// The extent of the points along x and along y.
+Vec2 extent(const std::vector<Vec2>& points) {
+    Vec2 lo = points.front(), hi = points.front();
+    for (const Vec2& p : points) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    return hi - lo;
+}
+
+}  // namespace
+
+TEST_CASE("DXF: an MTEXT's angle does not depend on what memory held", "[drawing][dxf][text]") {
+    // dxflib reads group 50 in radians when the file was written by dxflib
+    // 2.0.2.0 or older, from a version it leaves uninitialised unless a
+    // comment names it (LibreCAD's A4_1_draw.dxf came out different from
+    // run to run). An "I" 10 units tall turned a quarter turn lies along x.
+    const std::string degrees = dxf("0\nMTEXT\n8\n0\n10\n0\n20\n0\n40\n10\n71\n7\n50\n90\n1\nI\n");
+    const std::string in_radians =
+        dxf("0\nMTEXT\n8\n0\n10\n0\n20\n0\n40\n10\n71\n7\n50\n1.5707963267948966\n1\nI\n");
+    const std::string radians = "999\ndxflib 2.0.2.0\n" + in_radians;
+    // dxflib would end a version's third part where memory it never set says.
+    const std::string radians_short = "999\ndxflib 2.0.2\n" + in_radians;
+    const std::string later = "999\ndxflib 2.0.4.8\n" + degrees;
+    const std::string no_version = "999\ndxflib of 2.0.1\n" + degrees;
+    for (const std::string* text : {&degrees, &radians, &radians_short, &later, &no_version}) {
+        std::vector<Vec2> first;
+        for (const unsigned char byte : {0x00, 0xFF, 0x7F, 0x01, 0x55}) {
+            fill_stack(byte);
+            const std::vector<Vec2> points = points_of(read_dxf(*text));
+            REQUIRE(!points.empty());
+            const Vec2 size = extent(points);
+            CHECK(size.x() == Approx(10.0));
+            CHECK(size.y() < 1.0);
+            if (first.empty()) first = points;
+            CHECK(points == first);
+        }
+    }
 }
 
 TEST_CASE("import: a piece smaller than the fitting resolves is skipped among others",
