@@ -218,11 +218,28 @@ void check_reply(std::string_view request, std::string_view reply) {
     }
 }
 
+/// Made at the first input; under libFuzzer never destroyed (its threads
+/// run until the process ends), in a replay stopped by the teardown.
+Fixture*& the_fixture() {
+    static Fixture* fixture = nullptr;
+    return fixture;
+}
+
 }  // namespace
 
+extern "C" void modsynth_fuzz_teardown() {
+    Fixture* f = the_fixture();
+    if (!f) return;
+    f->server->stop();
+    f->thread.join();
+    f->server.reset();  // its room and workers end with it
+    f->imports.reset();
+    f->jobs.reset();
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    // Never destroyed: its threads run until the process ends.
-    static Fixture& fixture = *new Fixture;
+    if (!the_fixture()) the_fixture() = new Fixture;
+    Fixture& fixture = *the_fixture();
     const std::string_view request(reinterpret_cast<const char*>(data), size);
     check_reply(request, exchange(fixture.port, request));
     // Whatever that did, the next request is answered.

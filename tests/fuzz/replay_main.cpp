@@ -12,6 +12,9 @@
 #include <vector>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
+// A target whose fixture runs threads defines this to stop them: exit's
+// destructors of statics must not run under a thread still serving.
+extern "C" void modsynth_fuzz_teardown() __attribute__((weak));
 
 namespace {
 
@@ -46,6 +49,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "no inputs to replay\n");
         return 2;
     }
+    if (modsynth_fuzz_teardown) modsynth_fuzz_teardown();
     std::printf("%d passed, 0 failed: replayed %d inputs\n", files, files);
     return 0;
 }
