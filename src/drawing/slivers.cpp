@@ -327,9 +327,13 @@ public:
     template <class F>
     void around(const std::vector<Vec2>& samples, F f) const {
         std::vector<std::pair<std::int64_t, std::int64_t>> cells;
-        cells.reserve(9 * samples.size());
-        for (const Vec2& q : samples) {
-            const auto [ix, iy] = cell(q);
+
+        std::pair<std::int64_t, std::int64_t> last{0, 0};
+        for (std::size_t i = 0; i < samples.size(); ++i) {
+            const auto [ix, iy] = cell(samples[i]);
+            // Samples a quarter of a cell apart mostly share their cell.
+            if (i > 0 && last == std::pair{ix, iy}) continue;
+            last = {ix, iy};
             for (std::int64_t dx = -1; dx <= 1; ++dx)
                 for (std::int64_t dy = -1; dy <= 1; ++dy) cells.emplace_back(ix + dx, iy + dy);
         }
@@ -435,8 +439,9 @@ private:
 /// long run (one more piece each) all of its start.
 class Covered {
 public:
-    Covered(const Drawn& drawn, const std::vector<Primitive>& chain, double tolerance)
-        : drawn_(drawn), chain_(chain), tolerance_(tolerance) {}
+    Covered(const Drawn& drawn, const std::vector<Primitive>& chain, double tolerance,
+            const Watch& watch)
+        : drawn_(drawn), chain_(chain), tolerance_(tolerance), watch_(watch) {}
 
     const std::vector<std::uint32_t>& of(std::size_t k) {
         const auto [it, fresh] = lists_.try_emplace(k);
@@ -447,10 +452,16 @@ public:
         // within the tolerance of a piece. Each cell is looked at once.
         const Primitive& p = chain_[k];
         const double len = geometry::length(p);
-        const int n = 1 + int(std::ceil(len / (0.25 * tolerance_)));
+        // A piece may be metres long at a tolerance of micrometres: the
+        // deadline is looked at while it is sampled, and before the search.
+        const double steps = 1.0 + std::ceil(len / (0.25 * tolerance_));
+        const std::size_t n = steps < 1e12 ? static_cast<std::size_t>(steps) : std::size_t(1e12);
         std::vector<Vec2> samples;
-        samples.reserve(n + 1);
-        for (int i = 0; i <= n; ++i) samples.push_back(geometry::point_at(p, len * i / n));
+        for (std::size_t i = 0; i <= n; ++i) {
+            if (i % 4096 == 0) watch_.now();
+            samples.push_back(geometry::point_at(p, len * static_cast<double>(i) / n));
+        }
+        watch_.now();
         drawn_.around(samples, [&](std::uint32_t m) {
             if (piece_distance(p, drawn_.at(m)) <= tolerance_) covered.push_back(m);
         });
@@ -461,6 +472,7 @@ private:
     const Drawn& drawn_;
     const std::vector<Primitive>& chain_;
     double tolerance_;
+    const Watch& watch_;
     std::unordered_map<std::size_t, std::vector<std::uint32_t>> lists_;
 };
 
@@ -727,7 +739,7 @@ double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviat
         if (stroke_length < tolerance) return worst;
         std::optional<Replacement> best;
         std::optional<Covered> covered;
-        if (drawn) covered.emplace(*drawn, chain, tolerance);
+        if (drawn) covered.emplace(*drawn, chain, tolerance, watch);
         // A long run is a curve drawn in short pieces, which no one piece
         // over all of it follows: it goes straight to the stretches below.
         const bool long_run = j - i >= 8;
