@@ -166,6 +166,14 @@ private:
     std::optional<Proof> find_proof();
     bool ruled_out(int dof, FrontStageVerdicts& verdicts);
     bool two_joints_bounded(FrontStageVerdicts& verdicts);
+    /// The branch and bound's options within its share of the run: its
+    /// core shrunk only within what the proof leaves of that share.
+    BranchAndBoundOptions branch_and_bound_budget() const {
+        BranchAndBoundOptions bnb = opt_.branch_and_bound;
+        bnb.time_limit = std::min(bnb.time_limit, opt_.branch_and_bound_share * opt_.time_limit);
+        bnb.core_time_limit = std::min(bnb.core_time_limit, bnb.time_limit);
+        return bnb;
+    }
     std::optional<Solution> search_skeletons(FrontStageVerdicts& verdicts);
     Solution infeasible(Proof proof) const;
     Solution unknown(const std::vector<std::vector<task::TaskPart>>& cores) const;
@@ -253,9 +261,7 @@ Solution Search::run() {
 std::optional<Proof> Search::find_proof() {
     // Two joints only: the branch and bound gets a small share of the run,
     // and its core is shrunk only within what the proof leaves of it.
-    BranchAndBoundOptions bnb = opt_.branch_and_bound;
-    bnb.time_limit = std::min(bnb.time_limit, opt_.branch_and_bound_share * opt_.time_limit);
-    bnb.core_time_limit = std::min(bnb.core_time_limit, bnb.time_limit);
+    BranchAndBoundOptions bnb = branch_and_bound_budget();
     const run::Stopwatch proving;
     for (const Prover& prover : provers(bnb)) {
         std::optional<Proof> proof = prover.prove(task_, deadline_);
@@ -377,9 +383,7 @@ bool Search::ruled_out(int dof, FrontStageVerdicts& verdicts) {
 // certifies most tasks that 2 joints can do at less than its cost.
 bool Search::two_joints_bounded(FrontStageVerdicts& verdicts) {
     if (task_.robot.dof.size() < 2) return false;  // dof [2]: find_proof ran it
-    BranchAndBoundOptions bnb = opt_.branch_and_bound;
-    bnb.time_limit = std::min(bnb.time_limit, opt_.branch_and_bound_share * opt_.time_limit);
-    bnb.core_time_limit = std::min(bnb.core_time_limit, bnb.time_limit);
+    BranchAndBoundOptions bnb = branch_and_bound_budget();
     // A search that finds no proof here only delays the joint counts that
     // can do the task: it gets a count of boxes (the same on every
     // machine) rather than all of its share.
