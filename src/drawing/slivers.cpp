@@ -324,25 +324,34 @@ public:
 
     /// Calls f once with the index of every point of the drawing in the
     /// cells that hold one of `samples` or are next to one that does.
+    /// Millions of samples make millions of cells: the deadline is looked
+    /// at all along.
     template <class F>
-    void around(const std::vector<Vec2>& samples, F f) const {
-        std::vector<std::pair<std::int64_t, std::int64_t>> cells;
-
+    void around(const std::vector<Vec2>& samples, const Watch& watch, F f) const {
+        // Cells are taken as they come, each once: a sort of all of them
+        // would be one step too long to look at the clock inside.
+        const std::uint32_t pass = ++around_pass_;
         std::pair<std::int64_t, std::int64_t> last{0, 0};
         for (std::size_t i = 0; i < samples.size(); ++i) {
+            if (i % 1024 == 0) watch.now();
             const auto [ix, iy] = cell(samples[i]);
-            // Samples a quarter of a cell apart mostly share their cell.
+            // Samples a fifth of a cell apart mostly share their cell, and
+            // the next cell's neighbours are mostly the last one's.
             if (i > 0 && last == std::pair{ix, iy}) continue;
+            const auto [lx, ly] = last;
+            const bool after = i > 0;
             last = {ix, iy};
-            for (std::int64_t dx = -1; dx <= 1; ++dx)
-                for (std::int64_t dy = -1; dy <= 1; ++dy) cells.emplace_back(ix + dx, iy + dy);
-        }
-        std::sort(cells.begin(), cells.end());
-        cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-        for (const auto& [ix, iy] : cells) {
-            const Cell& c = at_cell(ix, iy);
-            for (std::size_t r = 0; r < c.size(); ++r)
-                for (std::uint32_t k = c[r].begin; k < c[r].end; ++k) f(k);
+            for (std::int64_t dx = -1; dx <= 1; ++dx) {
+                for (std::int64_t dy = -1; dy <= 1; ++dy) {
+                    if (after && std::abs(ix + dx - lx) <= 1 && std::abs(iy + dy - ly) <= 1)
+                        continue;
+                    const Cell& c = at_cell(ix + dx, iy + dy);
+                    if (c.taken == pass) continue;
+                    c.taken = pass;
+                    for (std::size_t r = 0; r < c.size(); ++r)
+                        for (std::uint32_t k = c[r].begin; k < c[r].end; ++k) f(k);
+                }
+            }
         }
     }
 
@@ -374,6 +383,7 @@ private:
         Run first;
         std::vector<Run> more;
         bool complete = false;
+        mutable std::uint32_t taken = 0;  ///< the last call of around() that took it
         std::size_t size() const { return first.end == 0 ? 0 : 1 + more.size(); }
         const Run& operator[](std::size_t r) const { return r == 0 ? first : more[r - 1]; }
         void add(std::uint32_t k) {
@@ -431,6 +441,7 @@ private:
     mutable std::vector<bool> filed_;
     mutable std::vector<std::uint32_t> seen_;
     mutable std::uint32_t pass_ = 0;
+    mutable std::uint32_t around_pass_ = 0;
 };
 
 /// The drawing's points within the tolerance of each piece of a chain,
@@ -462,11 +473,14 @@ public:
             samples.push_back(geometry::point_at(p, len * static_cast<double>(i) / n));
         }
         watch_.now();
-        drawn_.around(samples, [&](std::uint32_t m) {
+        drawn_.around(samples, watch_, [&](std::uint32_t m) {
             if (piece_distance(p, drawn_.at(m)) <= tolerance_) covered.push_back(m);
         });
         return covered;
     }
+
+    /// Gives up once the import's deadline has passed.
+    void check_deadline() const { watch_.now(); }
 
 private:
     const Drawn& drawn_;
@@ -504,9 +518,11 @@ double strays(const Drawn& drawn, Covered& covered, const std::vector<Primitive>
     }
     // A point near several replaced pieces is measured once.
     const std::uint32_t pass = drawn.new_pass();
+    std::size_t measured = 0;
     for (std::size_t k = r.first; k <= r.last; ++k) {
         for (const std::uint32_t m : covered.of(k)) {
             if (!drawn.first_in(pass, m)) continue;
+            if (++measured % 4096 == 0) covered.check_deadline();
             worst = std::max(worst, distance_to(local, drawn.at(m), std::max(worst, enough)));
             if (worst > limit) return worst;
         }
