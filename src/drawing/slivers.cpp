@@ -490,16 +490,74 @@ private:
     std::unordered_map<std::size_t, std::vector<std::uint32_t>> lists_;
 };
 
+/// The strokes beside the one being merged, each with a box round it: a
+/// point of the drawing that a replaced piece passed near (where two
+/// strokes of a letter meet) may lie just as near one of them, and stays
+/// drawn. Boxes are measured again as each stroke is merged.
+class OtherStrokes {
+public:
+    explicit OtherStrokes(const std::vector<std::vector<Primitive>>& strokes) : strokes_(strokes) {
+        for (std::size_t s = 0; s < strokes.size(); ++s) boxes_.push_back(box(strokes[s]));
+    }
+    /// The stroke merged next, which is not one of the others.
+    void merging(std::size_t s) { current_ = s; }
+    /// Stroke s is as merged as it will be.
+    void changed(std::size_t s) { boxes_[s] = box(strokes_[s]); }
+
+    /// As distance_to, over the other strokes; infinity past `reach` of
+    /// every one of their boxes.
+    double distance(const Vec2& q, double reach, double enough) const {
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t s = 0; s < strokes_.size(); ++s) {
+            if (s == current_) continue;
+            const Box& b = boxes_[s];
+            if (q.x() < b.lo.x() - reach || q.y() < b.lo.y() - reach || q.x() > b.hi.x() + reach ||
+                q.y() > b.hi.y() + reach)
+                continue;
+            best = std::min(best, distance_to(strokes_[s], q, enough));
+            if (best <= enough) return best;
+        }
+        return best;
+    }
+
+private:
+    struct Box {
+        Vec2 lo, hi;
+    };
+    /// Holds every piece: an arc's circle bounds it.
+    static Box box(const std::vector<Primitive>& stroke) {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        Box b{Vec2(inf, inf), Vec2(-inf, -inf)};
+        const auto add = [&](const Vec2& lo, const Vec2& hi) {
+            b.lo = b.lo.cwiseMin(lo);
+            b.hi = b.hi.cwiseMax(hi);
+        };
+        for (const Primitive& p : stroke) {
+            add(p.start.cwiseMin(p.end), p.start.cwiseMax(p.end));
+            if (p.kind != PrimitiveKind::Line) {
+                const Vec2 r(p.radius, p.radius);
+                add(p.center - r, p.center + r);
+            }
+        }
+        return b;
+    }
+
+    const std::vector<std::vector<Primitive>>& strokes_;
+    std::vector<Box> boxes_;
+    std::size_t current_ = std::size_t(-1);
+};
+
 /// How far the chain with chain[r.first..r.last] replaced by r.pieces
 /// strays from the drawing there, both ways: the new pieces from the
 /// drawing, and the drawing's points that the replaced pieces passed
 /// within the tolerance of from the new pieces and their neighbours (four
-/// each side). Exact up to `limit`; past it, some distance past it (the
+/// each side), or, failing those, from the rest of the chain and the
+/// `others` strokes. Exact up to `limit`; past it, some distance past it (the
 /// search stops there). Distances up to `enough` are not told apart: with
 /// `enough` at `limit`, the answer only says whether it is within the
 /// limit, which is much quicker to find.
 double strays(const Drawn& drawn, Covered& covered, const std::vector<Primitive>& chain,
-              const Replacement& r, double limit, double enough = 0.0) {
+              const Replacement& r, const OtherStrokes* others, double limit, double enough = 0.0) {
     double worst = 0.0;
     std::vector<Primitive> local(r.pieces);
     for (std::size_t k = r.first >= 4 ? r.first - 4 : 0; k < r.first; ++k)
@@ -518,12 +576,26 @@ double strays(const Drawn& drawn, Covered& covered, const std::vector<Primitive>
     }
     // A point near several replaced pieces is measured once.
     const std::uint32_t pass = drawn.new_pass();
-    std::size_t measured = 0;
+    std::size_t measured = 0, fallbacks = 0;
     for (std::size_t k = r.first; k <= r.last; ++k) {
         for (const std::uint32_t m : covered.of(k)) {
             if (!drawn.first_in(pass, m)) continue;
             if (++measured % 4096 == 0) covered.check_deadline();
-            worst = std::max(worst, distance_to(local, drawn.at(m), std::max(worst, enough)));
+            const Vec2& q = drawn.at(m);
+            const double enough_here = std::max(worst, enough);
+            double d = distance_to(local, q, enough_here);
+            // Seldom: where the chain doubles back, or another stroke
+            // meets it. Only a distance below the worst so far counts.
+            if (d > enough_here) {
+                if (++fallbacks % 16 == 0) covered.check_deadline();
+                for (std::size_t k = 0; k < chain.size() && d > enough_here; ++k) {
+                    if (k + 4 >= r.first && k <= r.last + 4) continue;
+                    d = std::min(d, piece_distance(chain[k], q));
+                }
+                if (others && d > enough_here)
+                    d = std::min(d, others->distance(q, std::min(d, limit), enough_here));
+            }
+            worst = std::max(worst, d);
             if (worst > limit) return worst;
         }
     }
@@ -569,7 +641,8 @@ std::optional<Vec2> meet(const Vec2& a, const Vec2& da, const Vec2& b, const Vec
 /// replaces unless `measure` is false (the caller measures them against
 /// the drawing); the caller keeps the nearest within the tolerance.
 std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std::size_t i,
-                                        std::size_t j, double tolerance, bool measure) {
+                                        std::size_t j, double tolerance, bool measure,
+                                        std::optional<Vec2> drawn_tip = std::nullopt) {
     const auto far_apart = [&](const std::vector<Primitive>& a, const std::vector<Primitive>& b) {
         return measure ? apart(a, b) : 0.0;
     };
@@ -676,8 +749,16 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
                         if ((q - mid).norm() > (tip - mid).norm()) tip = q;
                     }
                 }
-                options.push_back({geometry::make_line(a.window.start, tip),
-                                   geometry::make_line(tip, b.window.end)});
+                // The fitting rounds a sharp tip within the tolerance, and
+                // leaves nothing of it to cut the tip shorter: the cusp at
+                // the drawing's own tip too, where it is known; its sides
+                // straight, or bending as the neighbours do.
+                for (const Vec2& t : drawn_tip ? std::vector{tip, *drawn_tip} : std::vector{tip}) {
+                    options.push_back({geometry::make_line(a.window.start, t),
+                                       geometry::make_line(t, b.window.end)});
+                    options.push_back({arc_through(a.window.start, start_tangent(a.window), t),
+                                       arc_into(t, b.window.end, end_tangent(b.window))});
+                }
             }
             for (const auto& fresh : options) {
                 if (!usable(fresh, tolerance, false)) continue;
@@ -699,7 +780,8 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
 /// order of length, up to the first that strays too far.
 std::optional<Replacement> longest_stretch(const std::vector<Primitive>& chain, std::size_t i,
                                            std::size_t j, double tolerance, double deviation,
-                                           const Drawn* drawn, Covered* covered, Watch& watch) {
+                                           const Drawn* drawn, Covered* covered,
+                                           const OtherStrokes* others, Watch& watch) {
     std::optional<Replacement> best;
     const Vec2 from = chain[i].start;
     const Vec2 t = start_tangent(chain[i]);
@@ -716,7 +798,8 @@ std::optional<Replacement> longest_stretch(const std::vector<Primitive>& chain, 
             // Against the drawing, only whether a stretch is within the
             // tolerance matters until the longest is known.
             if (drawn) {
-                if (strays(*drawn, *covered, chain, r, tolerance, tolerance) > tolerance) continue;
+                if (strays(*drawn, *covered, chain, r, others, tolerance, tolerance) > tolerance)
+                    continue;
             } else {
                 r.far =
                     deviation +
@@ -731,7 +814,7 @@ std::optional<Replacement> longest_stretch(const std::vector<Primitive>& chain, 
         }
         if (!near) break;
     }
-    if (best && drawn) best->far = strays(*drawn, *covered, chain, *best, tolerance);
+    if (best && drawn) best->far = strays(*drawn, *covered, chain, *best, others, tolerance);
     return best;
 }
 
@@ -740,7 +823,7 @@ std::optional<Replacement> longest_stretch(const std::vector<Primitive>& chain, 
 /// past a corner at a stroke's end), each replaced as a whole by the
 /// nearest of run_candidates within what the tolerance leaves.
 double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviation,
-                  const Drawn* drawn, Watch& watch) {
+                  const Drawn* drawn, Watch& watch, const OtherStrokes* others = nullptr) {
     double worst = deviation;
     double stroke_length = -1.0;  // measured when first needed, again after each change
     for (std::size_t i = 0; i < chain.size() && chain.size() > 1; ++i) {
@@ -759,14 +842,30 @@ double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviat
         // A long run is a curve drawn in short pieces, which no one piece
         // over all of it follows: it goes straight to the stretches below.
         const bool long_run = j - i >= 8;
-        for (Replacement& r : long_run ? std::vector<Replacement>{}
-                                       : run_candidates(chain, i, j, tolerance, !drawn)) {
+        // Where the run turns back, the drawing's point near it that lies
+        // farthest out the way the path went in: the tip of the hairpin.
+        std::optional<Vec2> drawn_tip;
+        if (drawn && !long_run && i > 0 && j + 1 < chain.size()) {
+            const Vec2 out = end_tangent(chain[i - 1]) - start_tangent(chain[j + 1]);
+            double farthest = -std::numeric_limits<double>::infinity();
+            for (std::size_t k = i; k <= j; ++k) {
+                for (const std::uint32_t m : covered->of(k)) {
+                    if (const double along = drawn->at(m).dot(out); along > farthest) {
+                        farthest = along;
+                        drawn_tip = drawn->at(m);
+                    }
+                }
+            }
+        }
+        for (Replacement& r : long_run
+                                  ? std::vector<Replacement>{}
+                                  : run_candidates(chain, i, j, tolerance, !drawn, drawn_tip)) {
             watch.tick();
             // Measured against the drawing itself where it is at hand: the
             // fitting leaves little of the tolerance to add to. Only one
             // nearer than the best so far is kept: the search stops past it.
             if (drawn)
-                r.far = strays(*drawn, *covered, chain, r,
+                r.far = strays(*drawn, *covered, chain, r, others,
                                best ? std::min(tolerance, best->far) : tolerance);
             else
                 r.far += deviation;
@@ -777,16 +876,18 @@ double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviat
         // one line, or one arc leaving as it did, stays close to.
         if (!best)
             best = longest_stretch(chain, i, j, tolerance, deviation, drawn,
-                                   covered ? &*covered : nullptr, watch);
+                                   covered ? &*covered : nullptr, others, watch);
         // Else the rest of the run may still be replaced from its next piece.
         if (!best) continue;
         worst = std::max(worst, best->far);
         chain.erase(chain.begin() + best->first, chain.begin() + best->last + 1);
         chain.insert(chain.begin() + best->first, best->pieces.begin(), best->pieces.end());
         stroke_length = -1.0;
-        // The pieces before may now end in a shorter run: look again from
-        // the first piece changed.
-        i = best->first == 0 ? std::size_t(-1) : best->first - 1;
+        // The short pieces just before were a longer run than what is left
+        // of it, and may now be replaced: look again from its start.
+        std::size_t back = best->first;
+        while (back > 0 && is_short(chain[back - 1], tolerance)) --back;
+        i = back == 0 ? std::size_t(-1) : back - 1;
     }
     return worst;
 }
@@ -857,13 +958,18 @@ double merge_stroke_slivers(std::vector<std::vector<Primitive>>& strokes, double
     double worst = deviation;
     std::optional<Drawn> drawn;
     Watch watch(deadline, "merging pieces shorter than the tolerance where curves join");
-    for (std::vector<Primitive>& stroke : strokes) {
+    std::optional<OtherStrokes> others;
+    for (std::size_t s = 0; s < strokes.size(); ++s) {
+        std::vector<Primitive>& stroke = strokes[s];
         if (stroke.size() < 2 ||
             std::none_of(stroke.begin(), stroke.end(),
                          [&](const Primitive& p) { return is_short(p, tolerance); }))
             continue;
         if (!drawn) drawn.emplace(drawing, tolerance, watch);
-        worst = std::max(worst, merge_runs(stroke, tolerance, deviation, &*drawn, watch));
+        if (!others) others.emplace(strokes);
+        others->merging(s);
+        worst = std::max(worst, merge_runs(stroke, tolerance, deviation, &*drawn, watch, &*others));
+        others->changed(s);
     }
     return worst;
 }

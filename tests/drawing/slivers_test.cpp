@@ -62,18 +62,11 @@ void check_joined(const std::vector<Primitive>& chain) {
         CHECK((chain[i].start - chain[i - 1].end).norm() <= 1e-12);
 }
 
-/// Imports a one-path SVG at 1 mm a unit (tolerance 0.1 unit) and checks
-/// what the runs of slivers must leave: no primitive shorter than the
-/// tolerance, every stroke joined within the contract's 1e-6 m, and the
-/// result within the tolerance of the drawing, sampled both ways. Returns
-/// the strokes.
-std::vector<Chain> import_checked(const std::string& path) {
-    const std::string svg =
-        R"(<svg xmlns="http://www.w3.org/2000/svg"><path fill="none" stroke="black" d=")" + path +
-        R"("/></svg>)";
-    ImportOptions o;
-    o.placement.scale = 1e-3;
-    o.placement.at = Vec2(0.3, 0.0);
+/// Imports an SVG and checks what the runs of slivers must leave: no
+/// primitive shorter than the tolerance, every stroke joined within the
+/// contract's 1e-6 m, and the result within the tolerance of the drawing,
+/// sampled both ways. Returns the strokes.
+std::vector<Chain> import_checked(const std::string& svg, const ImportOptions& o) {
     const ImportResult r = import_drawing(svg, DrawingFormat::Svg, o);
     CHECK(r.deviation <= o.tolerance);
     // The drawing, densely sampled in task metres.
@@ -113,6 +106,17 @@ std::vector<Chain> import_checked(const std::string& path) {
     // The polyline of samples lies within micrometres of the drawing.
     CHECK(far <= o.tolerance + 1e-7);
     return r.strokes;
+}
+
+/// One path, without units, placed at 1 mm a unit (tolerance 0.1 unit).
+std::vector<Chain> import_checked(const std::string& path) {
+    const std::string svg =
+        R"(<svg xmlns="http://www.w3.org/2000/svg"><path fill="none" stroke="black" d=")" + path +
+        R"("/></svg>)";
+    ImportOptions o;
+    o.placement.scale = 1e-3;
+    o.placement.at = Vec2(0.3, 0.0);
+    return import_checked(svg, o);
 }
 
 }  // namespace
@@ -292,4 +296,92 @@ TEST_CASE("Slivers: a deadline that has passed stops merging with the time limit
     std::vector<Primitive> plain{merged};
     CHECK_NOTHROW(merge_slivers(plain, kTolerance, 0.0, drawing, Clock::now()));
     CHECK(plain.size() == merged.size());
+}
+
+TEST_CASE("Slivers: a hairpin whose tip the fitting rounds within the tolerance becomes a cusp",
+          "[drawing][slivers]") {
+    // A narrow spike of one cubic (an outline of a filled shape): the fit
+    // rounds its tip with an arc of a few tens of micrometres and leaves
+    // no room to cut it shorter; its sides meet at the drawing's tip.
+    for (const std::string path :
+         {"M 0,0.3 C 12,0.3 12,-0.3 0,-0.3", "M 0,0.25 C 10,0.25 10,-0.25 0,-0.25",
+          "M 0,0.2 C 16,0.2 16,-0.2 0,-0.2"}) {
+        INFO(path);
+        const std::string svg =
+            R"(<svg xmlns="http://www.w3.org/2000/svg" width="40mm" height="40mm" )"
+            R"(viewBox="0 0 40 40"><path fill="none" stroke="black" d=")" +
+            path + R"("/></svg>)";
+        ImportOptions o;
+        o.placement.at = Vec2(0.3, 0.0);
+        CHECK(import_checked(svg, o).size() == 1);
+    }
+}
+
+namespace {
+
+/// Each piece as a curve of its own, as a DXF drawing of LINE entities is.
+std::vector<Curve> drawn_as_lines(const std::vector<std::vector<Primitive>>& strokes) {
+    std::vector<Curve> out;
+    for (const auto& stroke : strokes)
+        for (const Primitive& p : stroke)
+            out.push_back(Curve{"LINE", {LineSegment{p.start, p.end}}});
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("Slivers: another stroke keeps drawn what it runs beside", "[drawing][slivers]") {
+    // A stroke starting in three lines of 25 um (a letter's serif) before
+    // it turns, and another stroke running beside them 90 um to the left
+    // (the letter's other side): that stroke's drawing lies within the
+    // tolerance of the short lines, and farther than that from whatever
+    // replaces them, but it is the other stroke that draws it.
+    const std::vector<Primitive> letter{
+        geometry::make_line(Vec2(0.3, 0.0), Vec2(0.3, 2.5e-5)),
+        geometry::make_line(Vec2(0.3, 2.5e-5), Vec2(0.3, 5e-5)),
+        geometry::make_line(Vec2(0.3, 5e-5), Vec2(0.3, 7.5e-5)),
+        geometry::make_line(Vec2(0.3, 7.5e-5), Vec2(0.301, 7.5e-5))};
+    const std::vector<Primitive> side{
+        geometry::make_line(Vec2(0.29991, -1e-3), Vec2(0.29991, 7.5e-5))};
+    std::vector<std::vector<Primitive>> strokes{letter, side};
+    const std::vector<Curve> drawing = drawn_as_lines(strokes);
+    const double deviation = merge_stroke_slivers(strokes, kTolerance, 0.0, drawing);
+    CHECK(deviation <= kTolerance);
+    REQUIRE(strokes.size() == 2);
+    for (const Primitive& p : strokes[0]) CHECK(geometry::length(p) >= kTolerance);
+    check_joined(strokes[0]);
+    CHECK(far_between(strokes[0], letter) <= kTolerance);
+    CHECK(strokes[1].size() == 1);
+}
+
+TEST_CASE("Slivers: short pieces before a run merged later are merged once it is",
+          "[drawing][slivers]") {
+    // A spline's end drawn as 12 lines shrinking from 12 to 1 um (78 um in
+    // all), bending into a long line: from its first piece the run is
+    // longer than one stretch replaces and shorter than the tolerance as a
+    // whole, from its fourth it folds into the line; what is left before
+    // is then a short run of its own.
+    std::vector<Vec2> pts;
+    const auto bend = [](double x) {
+        const double u = 1.0 - x / 78e-6;
+        return Vec2(0.3 + x, 1e-5 * u * u);
+    };
+    double x = 0.0;
+    for (int gap = 12; gap >= 1; --gap) {
+        pts.push_back(bend(x));
+        x += gap * 1e-6;
+    }
+    pts.push_back(bend(x));
+    std::vector<Primitive> stroke;
+    for (std::size_t k = 1; k < pts.size(); ++k)
+        stroke.push_back(geometry::make_line(pts[k - 1], pts[k]));
+    stroke.push_back(geometry::make_line(pts.back(), pts.back() + Vec2(5e-4, 0.0)));
+    const std::vector<Primitive> before = stroke;
+    REQUIRE(before.size() == 13);
+    std::vector<std::vector<Primitive>> strokes{stroke};
+    const std::vector<Curve> drawing = drawn_as_lines(strokes);
+    CHECK(merge_stroke_slivers(strokes, kTolerance, 0.0, drawing) <= kTolerance);
+    for (const Primitive& p : strokes[0]) CHECK(geometry::length(p) >= kTolerance);
+    check_joined(strokes[0]);
+    CHECK(far_between(strokes[0], before) <= kTolerance);
 }

@@ -30,10 +30,12 @@ namespace modsynth::drawing {
 /// the tolerance collapses to the point where it leaves the stroke; a run
 /// at a stroke's end is dropped (a short line past a corner: the stroke
 /// ends at the corner); a long run (a curve drawn as a polyline of short
-/// lines) by the longest stretches one line or arc replaces. Given the
+/// lines) by the longest stretches one line or arc replaces; a run where
+/// the chain turns back (a hairpin) by a cusp at its tip. Given the
 /// `drawing` the chain was fitted to (its curves), these merges are measured against
-/// it (both ways, near the merge) rather than added to `deviation`, which
-/// the fitting leaves close to the tolerance. Only a stroke shorter than
+/// it (both ways, near the merge: a point of the drawing the replaced
+/// pieces passed near stays as near the chain) rather than added to
+/// `deviation`, which the fitting leaves close to the tolerance. Only a stroke shorter than
 /// the tolerance as a whole keeps pieces that short. Throws ImportTimeout
 /// once `deadline` has passed, the chain then half merged.
 double merge_slivers(std::vector<geometry::Primitive>& chain, double tolerance, double deviation,
@@ -42,7 +44,8 @@ double merge_slivers(std::vector<geometry::Primitive>& chain, double tolerance, 
 /// The same, run by run, for strokes joined end to end from several
 /// curves (a CAD polyline written as LINE entities: each curve one piece,
 /// each stroke a run of them), measured against all of the `drawing`'s
-/// curves. Returns the deviation after merging; throws ImportTimeout once
+/// curves: a point of it that another stroke passes as near as the
+/// replaced pieces did stays drawn. Returns the deviation after merging; throws ImportTimeout once
 /// `deadline` has passed.
 double merge_stroke_slivers(std::vector<std::vector<geometry::Primitive>>& strokes,
                             double tolerance, double deviation, std::span<const Curve> drawing,
