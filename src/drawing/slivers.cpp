@@ -504,18 +504,19 @@ public:
     /// Stroke s is as merged as it will be.
     void changed(std::size_t s) { boxes_[s] = box(strokes_[s]); }
 
-    /// As distance_to, over the other strokes; infinity past `reach` of
-    /// every one of their boxes.
-    double distance(const Vec2& q, double reach, double enough) const {
+    /// The distance from q to a piece of the other strokes that lies
+    /// within `within` of it, or some distance past `within` when none
+    /// does.
+    double distance(const Vec2& q, double within) const {
         double best = std::numeric_limits<double>::infinity();
         for (std::size_t s = 0; s < strokes_.size(); ++s) {
             if (s == current_) continue;
             const Box& b = boxes_[s];
-            if (q.x() < b.lo.x() - reach || q.y() < b.lo.y() - reach || q.x() > b.hi.x() + reach ||
-                q.y() > b.hi.y() + reach)
+            if (q.x() < b.lo.x() - within || q.y() < b.lo.y() - within ||
+                q.x() > b.hi.x() + within || q.y() > b.hi.y() + within)
                 continue;
-            best = std::min(best, distance_to(strokes_[s], q, enough));
-            if (best <= enough) return best;
+            best = std::min(best, distance_to(strokes_[s], q, within));
+            if (best <= within) return best;
         }
         return best;
     }
@@ -584,16 +585,17 @@ double strays(const Drawn& drawn, Covered& covered, const std::vector<Primitive>
             const Vec2& q = drawn.at(m);
             const double enough_here = std::max(worst, enough);
             double d = distance_to(local, q, enough_here);
-            // Seldom: where the chain doubles back, or another stroke
-            // meets it. Only a distance below the worst so far counts.
-            if (d > enough_here) {
+            // Seldom, and looked for only where the point would refuse the
+            // replacement: where the chain doubles back, or another stroke
+            // meets it. Any part within the limit will do (the distance is
+            // then some distance within it, never one too small).
+            if (d > limit) {
                 if (++fallbacks % 16 == 0) covered.check_deadline();
-                for (std::size_t k = 0; k < chain.size() && d > enough_here; ++k) {
+                for (std::size_t k = 0; k < chain.size() && d > limit; ++k) {
                     if (k + 4 >= r.first && k <= r.last + 4) continue;
                     d = std::min(d, piece_distance(chain[k], q));
                 }
-                if (others && d > enough_here)
-                    d = std::min(d, others->distance(q, std::min(d, limit), enough_here));
+                if (others && d > limit) d = std::min(d, others->distance(q, limit));
             }
             worst = std::max(worst, d);
             if (worst > limit) return worst;
