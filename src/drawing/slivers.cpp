@@ -553,7 +553,9 @@ private:
 /// drawing, and the drawing's points that the replaced pieces passed
 /// within the tolerance of from the new pieces and their neighbours (four
 /// each side), or, failing those, from the rest of the chain and the
-/// `others` strokes. Exact up to `limit`; past it, some distance past it (the
+/// `others` strokes. Up to `limit`, exact but for a point that only the
+/// rest of the chain or another stroke keeps within it (some distance
+/// within it, never too small); past it, some distance past it (the
 /// search stops there). Distances up to `enough` are not told apart: with
 /// `enough` at `limit`, the answer only says whether it is within the
 /// limit, which is much quicker to find.
@@ -591,9 +593,9 @@ double strays(const Drawn& drawn, Covered& covered, const std::vector<Primitive>
             // then some distance within it, never one too small).
             if (d > limit) {
                 if (++fallbacks % 16 == 0) covered.check_deadline();
-                for (std::size_t k = 0; k < chain.size() && d > limit; ++k) {
-                    if (k + 4 >= r.first && k <= r.last + 4) continue;
-                    d = std::min(d, piece_distance(chain[k], q));
+                for (std::size_t n = 0; n < chain.size() && d > limit; ++n) {
+                    if (n + 4 >= r.first && n <= r.last + 4) continue;
+                    d = std::min(d, piece_distance(chain[n], q));
                 }
                 if (others && d > limit) d = std::min(d, others->distance(q, limit));
             }
