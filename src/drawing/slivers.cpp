@@ -634,6 +634,12 @@ bool usable(const std::vector<Primitive>& fresh, double tolerance, bool whole) {
 
 /// Where the lines through a (direction da) and b (direction db) meet;
 /// none when they are nearly parallel.
+/// Whether the path turns back over chain[i..j] (a hairpin): it leaves
+/// the run against the way it came in. Both neighbours must exist.
+bool turns_back(const std::vector<Primitive>& chain, std::size_t i, std::size_t j) {
+    return end_tangent(chain[i - 1]).dot(start_tangent(chain[j + 1])) < 0.0;
+}
+
 std::optional<Vec2> meet(const Vec2& a, const Vec2& da, const Vec2& b, const Vec2& db) {
     const double d = geometry::cross(da, db);
     if (std::abs(d) < 1e-9) return std::nullopt;
@@ -743,7 +749,7 @@ std::vector<Replacement> run_candidates(const std::vector<Primitive>& chain, std
                 options.push_back(std::move(*arcs));
             // A turn back (a hairpin narrower than the tolerance) has no
             // smooth stand-in: the path goes to its tip and back, a cusp.
-            if (end_tangent(chain[i - 1]).dot(start_tangent(chain[j + 1])) < 0.0) {
+            if (turns_back(chain, i, j)) {
                 const Vec2 mid = 0.5 * (from + to);
                 Vec2 tip = from;
                 for (const Primitive& p : run) {
@@ -848,8 +854,10 @@ double merge_runs(std::vector<Primitive>& chain, double tolerance, double deviat
         const bool long_run = j - i >= 8;
         // Where the run turns back, the drawing's point near it that lies
         // farthest out the way the path went in: the tip of the hairpin.
+        // (Elsewhere its points near the run are found only if a candidate
+        // comes that close.)
         std::optional<Vec2> drawn_tip;
-        if (drawn && !long_run && i > 0 && j + 1 < chain.size()) {
+        if (drawn && !long_run && i > 0 && j + 1 < chain.size() && turns_back(chain, i, j)) {
             const Vec2 out = end_tangent(chain[i - 1]) - start_tangent(chain[j + 1]);
             double farthest = -std::numeric_limits<double>::infinity();
             for (std::size_t k = i; k <= j; ++k) {
