@@ -197,8 +197,16 @@ ReadPrimitive read_helix(const json& prim, const std::string& part) {
     return {helix, end};
 }
 
+/// Keys of the contract that modsynth does not act on yet are refused, not
+/// ignored: a solution must never seem to honour what nothing read.
+void refuse_unsupported(const json& object, const std::string& part) {
+    if (optional(object, "tool_axis"))
+        throw InputError(member(part, "tool_axis"), "tool orientation is not supported yet");
+}
+
 ReadPrimitive read_primitive(const json& prim, const std::string& part) {
     require_object(prim, part, "{\"type\": \"line\", \"start\": [x, y, z], \"end\": [x, y, z]}");
+    refuse_unsupported(prim, part);
     const char* kinds = "\"line\", \"arc\", \"circle\" or \"helix\"";
     const std::string why = std::string("expected ") + kinds;
     const std::string tp = member(part, "type");
@@ -437,6 +445,8 @@ SpatialRobotSpec read_robot(const json& doc) {
         r.twists = read_twists(*v, member(part, "twists"));
     if (const json* v = optional(*robot, "tool_length"))
         r.tool_length = non_negative_length(*v, member(part, "tool_length"));
+    if (optional(*robot, "joint_diameter"))
+        throw InputError(member(part, "joint_diameter"), "joint bodies are not supported yet");
     const std::pair<const char*, double*> sizes[] = {{"module_length", &r.module_length},
                                                      {"module_width", &r.module_width},
                                                      {"module_height", &r.module_height},
@@ -614,6 +624,8 @@ SpatialTask parse_spatial_task(const json& doc) {
                          "\"3d\", ...}, got " +
                              describe(doc));
     check_format_and_space(doc);
+    if (optional(doc, "tool_axis"))
+        throw InputError("tool_axis", "tool orientation is not supported yet");
     SpatialTask task;
     if (const json* name = optional(doc, "name")) task.name = text(*name, "name", "a name (text)");
     read_path(doc, task);

@@ -432,6 +432,8 @@ RobotSpec parse_robot(const json& doc) {
     if (const json* v = optional(*robot, "max_link_length")) {
         r.max_link_length = positive_length(*v, member(part, "max_link_length"));
     }
+    if (optional(*robot, "joint_diameter"))
+        throw InputError(member(part, "joint_diameter"), "joint bodies are not supported yet");
     parse_hardware(*robot, part, r);
     parse_loads(*robot, part, r);
     parse_joint_limits(*robot, part, r);
