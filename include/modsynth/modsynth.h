@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include <modsynth/explanation/explain.h>
+#include <modsynth/run/cancel.h>
 #include <modsynth/run/progress.h>
 #include <modsynth/synth/solution.h>
 #include <modsynth/task/input_error.h>
@@ -19,6 +20,7 @@
 namespace modsynth {
 
 using explanation::Explanation;
+using run::CancelToken;
 using run::ProgressEvent;
 using run::ProgressSink;
 using synth::Solution;
@@ -50,6 +52,10 @@ struct SolveOptions {
     /// run::console_line prints it as `modsynth solve` does); leave empty
     /// for silence.
     ProgressSink progress;
+    /// Keep a copy and call cancel() on it (from any thread) to end the
+    /// solve early; it then answers as at its time limit, "unknown" unless
+    /// a robot is already certified.
+    run::CancelToken cancel;
 };
 
 /// A certified robot and its timed motion (with the actuator modules that

@@ -33,6 +33,7 @@ Solution solve(const Task& task, const SolveOptions& options) {
     o.time_limit = options.time_limit;
     o.seed = options.seed;
     o.progress = options.progress;
+    o.cancel = options.cancel;
     return synth::solve(task, o);
 }
 
@@ -41,6 +42,7 @@ Solution solve(const SpatialTask& task, const SolveOptions& options) {
     o.time_limit = options.time_limit;
     o.seed = options.seed;
     o.progress = options.progress;
+    o.cancel = options.cancel;
     return synth::solve(task, o);
 }
 

@@ -22,7 +22,12 @@ Deadline Deadline::in(double seconds) {
     return Deadline(Clock::now() + span(std::max(0.0, seconds)));
 }
 
+Deadline Deadline::cancelled_by(const CancelToken& token) const {
+    return Deadline(when_, token.flag_);
+}
+
 double Deadline::remaining() const {
+    if (cancelled()) return 0.0;
     if (is_never()) return std::numeric_limits<double>::infinity();
     return std::chrono::duration<double>(when_ - Clock::now()).count();
 }
@@ -33,14 +38,14 @@ Deadline Deadline::at_least(double seconds) const { return later(*this, in(secon
 
 Deadline Deadline::reserve(double seconds) const {
     if (is_never() || !(seconds < kLongest)) return *this;
-    return Deadline(when_ - span(seconds));
+    return moved_to(when_ - span(seconds));
 }
 
 Deadline Deadline::share(double fraction) const {
     if (is_never()) return *this;
     const auto now = Clock::now();
-    if (when_ <= now) return Deadline(when_);
-    return Deadline(now + span(std::clamp(fraction, 0.0, 1.0) *
+    if (when_ <= now) return *this;
+    return moved_to(now + span(std::clamp(fraction, 0.0, 1.0) *
                                std::chrono::duration<double>(when_ - now).count()));
 }
 

@@ -92,7 +92,8 @@ public:
         : task_(task),
           opt_(options),
           stats_(stats),
-          deadline_(run::Deadline::in(std::max(0.0, options.time_limit))) {
+          deadline_(
+              run::Deadline::in(std::max(0.0, options.time_limit)).cancelled_by(options.cancel)) {
         motion_ = opt_.motion;
         motion_.deadline = deadline_;
         verify_ = verify_options_for(task, opt_);

@@ -137,7 +137,8 @@ public:
         : task_(task),
           opt_(options),
           stats_(stats),
-          deadline_(run::Deadline::in(std::max(0.0, options.time_limit))),
+          deadline_(
+              run::Deadline::in(std::max(0.0, options.time_limit)).cancelled_by(options.cancel)),
           motion_(motion_options_for(task, options)) {
         motion_.deadline = deadline_;
         // Where refinements of three joints fail or crawl: a stroke longer

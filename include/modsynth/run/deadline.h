@@ -3,7 +3,17 @@
 // PlannerTerminationCondition): a stage asks how much is left, gives a step
 // its own budget within what is left, or keeps a reserve for what must
 // follow the step. A default Deadline never expires.
+//
+// A deadline may also carry a CancelToken: once it is cancelled the
+// deadline has expired, with nothing remaining, and so has every deadline
+// derived from it (within, reserve, share, at_least, earlier, later). The
+// stages poll expired() and remaining() already, so cancellation needs no
+// second mechanism.
+#include <atomic>
 #include <chrono>
+#include <memory>
+
+#include <modsynth/run/cancel.h>
 
 namespace modsynth::run {
 
@@ -19,9 +29,14 @@ public:
     static Deadline in(double seconds);
     static Deadline at(Clock::time_point when) { return Deadline(when); }
 
+    /// This deadline, also expired once `token` is cancelled.
+    Deadline cancelled_by(const CancelToken& token) const;
+    bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+
+    /// No time limit (a cancel token may still end it).
     bool is_never() const { return when_ == Clock::time_point::max(); }
-    bool expired() const { return !is_never() && Clock::now() >= when_; }
-    /// Seconds left (0 or less once expired); infinity for never.
+    bool expired() const { return cancelled() || (!is_never() && Clock::now() >= when_); }
+    /// Seconds left (0 or less once expired or cancelled); infinity for never.
     double remaining() const;
     /// The earlier of this deadline and `seconds` from now: a step's own
     /// budget inside the run's.
@@ -36,16 +51,29 @@ public:
     Deadline at_least(double seconds) const;
     Clock::time_point when() const { return when_; }
 
+    /// The earlier time; cancelled when either one is.
     friend Deadline earlier(const Deadline& a, const Deadline& b) {
-        return a.when_ <= b.when_ ? a : b;
+        return (a.when_ <= b.when_ ? a : b).with_cancel_of(a, b);
     }
+    /// The later time; cancelled when either one is (a cancel is never
+    /// postponed).
     friend Deadline later(const Deadline& a, const Deadline& b) {
-        return a.when_ >= b.when_ ? a : b;
+        return (a.when_ >= b.when_ ? a : b).with_cancel_of(a, b);
     }
 
 private:
+    using Flag = std::shared_ptr<const std::atomic<bool>>;
+    Deadline(Clock::time_point when, Flag cancel) : when_(when), cancel_(std::move(cancel)) {}
     explicit Deadline(Clock::time_point when) : when_(when) {}
+    Deadline moved_to(Clock::time_point when) const { return Deadline(when, cancel_); }
+    /// This time with a token of a or b (a's first); two different tokens
+    /// are not combined, which no caller needs.
+    Deadline with_cancel_of(const Deadline& a, const Deadline& b) const {
+        return Deadline(when_, a.cancel_ ? a.cancel_ : b.cancel_);
+    }
+
     Clock::time_point when_ = Clock::time_point::max();
+    Flag cancel_;
 };
 
 }  // namespace modsynth::run

@@ -10,6 +10,7 @@
 #include <modsynth/control/retime.h>
 #include <modsynth/control/spatial_motion.h>
 #include <modsynth/nlp/spatial_formulation.h>
+#include <modsynth/run/cancel.h>
 #include <modsynth/run/progress.h>
 #include <modsynth/smt/spatial_front_stage.h>
 #include <modsynth/synth/solution.h>
@@ -23,6 +24,9 @@ namespace modsynth::synth {
 struct SpatialSynthesisOptions {
     double time_limit = 60.0;  ///< seconds, wall clock, for the whole run
     unsigned seed = 0;         ///< varies the initial guesses deterministically
+    /// Ends the run early when cancelled (from another thread): it then
+    /// answers as at its time limit.
+    run::CancelToken cancel;
     control::SpatialMotionOptions motion;
     /// How a certified motion is timed: the task's joint limits (or the
     /// modules' defaults) and these caps.

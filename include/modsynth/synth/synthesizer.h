@@ -7,6 +7,7 @@
 #include <modsynth/control/motion.h>
 #include <modsynth/control/retime.h>
 #include <modsynth/prove/branch_and_bound.h>
+#include <modsynth/run/cancel.h>
 #include <modsynth/run/progress.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/initial_guess.h>
@@ -21,6 +22,9 @@ namespace modsynth::synth {
 struct SynthesisOptions {
     double time_limit = 60.0;  ///< seconds, wall clock, for the whole run
     unsigned seed = 0;         ///< varies the initial guesses deterministically
+    /// Ends the run early when cancelled (from another thread): it then
+    /// answers as at its time limit.
+    run::CancelToken cancel;
     control::MotionOptions motion;
     /// How a certified motion is timed: with the task's joint limits (or
     /// the modules' defaults, control::joint_limits_for()) and these caps.
