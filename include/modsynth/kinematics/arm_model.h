@@ -121,8 +121,8 @@ public:
     /// "yaw-pitch", "scara": how designs and progress name the family.
     virtual std::string_view name() const = 0;
     /// Free numbers per end of a primitive (ArmDesign::along), for a chain
-    /// of `dof` joints.
-    virtual int along_count(int dof) const = 0;
+    /// of `dof` joints of a variant.
+    virtual int along_count(int dof, int variant) const = 0;
     /// IK branches (ArmDesign::branches take 0 .. count - 1).
     virtual int branch_count(int dof) const = 0;
     virtual DhChain chain(const ArmDesign& design) const = 0;

@@ -94,7 +94,7 @@ ArmPose<T> pose_of(const ArmShape<T>& shape, const PoseTarget<T>& target, int br
 class YawPitchFamily final : public Family {
 public:
     std::string_view name() const override { return "yaw-pitch"; }
-    int along_count(int dof) const override { return dof - 3; }
+    int along_count(int dof, int) const override { return dof - 3; }
     int branch_count(int) const override { return 4; }
 
     kinematics::DhChain chain(const ArmDesign& d) const override {
@@ -276,7 +276,7 @@ public:
         return s;
     }
 
-    std::vector<std::vector<double>> along_grid(int dof) const override {
+    std::vector<std::vector<double>> along_grid(int dof, int) const override {
         const int hands = dof - 3;
         if (hands <= 0) return {{}};
         std::vector<std::vector<double>> out;
