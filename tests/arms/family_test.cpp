@@ -90,6 +90,12 @@ TEST_CASE("every arm family's pose is its chain at the angles its IK gives", "[a
                             CHECK((pose.points[k] - segments[k].start).norm() < 1e-7);
                             CHECK((pose.points[k + 1] - segments[k].end).norm() < 1e-7);
                         }
+                        const auto frames = modsynth::kinematics::frames(chain, *q);
+                        REQUIRE(pose.joints.size() == static_cast<std::size_t>(dof));
+                        for (int k = 0; k < dof; ++k)
+                            CHECK((pose.joints[static_cast<std::size_t>(k)] -
+                                   frames[static_cast<std::size_t>(k)].translation())
+                                      .norm() < 1e-7);
                         for (const auto& limit : pose.limits) {
                             INFO(limit.what);
                             CHECK(std::isfinite(limit.value));

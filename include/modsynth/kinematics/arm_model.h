@@ -63,6 +63,9 @@ struct ArmPose {
     std::vector<Point3<T>> points;
     /// The 1-based link each segment belongs to (labels, blame).
     std::vector<int> links;
+    /// The joints' centres, the frame origins o_0 .. o_{n-1} (formats.md
+    /// "Joint bodies"): joint k turns about z_{k-1} through o_{k-1}.
+    std::vector<Point3<T>> joints;
     std::vector<PoseLimit<T>> limits;
 };
 

@@ -129,6 +129,11 @@ ArmPose<T> pose_of(const ArmShape<T>& shape, const PoseTarget<T>& target, int br
         if (has_quill(shape.variant) && k + 1 == segments) link = shape.dof;
         out.links.push_back(std::max(1, link));
     }
+    // o_0 is the base, o_k the end of planar link k: every point from the
+    // elbow on but the EE (with a quill, the last is the quill's top).
+    out.joints.push_back(shape.base);
+    for (std::size_t k = column_of(shape.variant) != 0 ? 2 : 1; k + 1 < out.points.size(); ++k)
+        out.joints.push_back(out.points[k]);
     const T cos_q2 = (l2 - a1 * a1 - a2 * a2) / (T(2.0) * a1 * a2);
     const double shorter = std::min(kinematics::value_of(a1), kinematics::value_of(a2));
     out.limits.push_back(

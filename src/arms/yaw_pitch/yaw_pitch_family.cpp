@@ -83,6 +83,9 @@ ArmPose<T> pose_of(const ArmShape<T>& shape, const PoseTarget<T>& target, int br
     out.points.assign(p.points.begin() + (column ? 0 : 1), p.points.end());
     for (std::size_t k = 0; k + 1 < out.points.size(); ++k)
         out.links.push_back(static_cast<int>(column ? k + 1 : k + 2));
+    // o_0 is the base, o_1 the shoulder (a_1 = 0), then each pitch link's end
+    // but the last: the yaw-pitch pose's own points, the EE left out.
+    out.joints.assign(p.points.begin(), p.points.end() - 1);
     const double shorter =
         std::min(kinematics::value_of(y.links[0]), kinematics::value_of(y.links[1]));
     out.limits.push_back(
