@@ -31,6 +31,8 @@ refused --base "xmin,ymin,zmin,xmax,ymax,zmax" --plane 0.5,0,0.3,0,1,0,0,0,1 --b
 refused --base "xmin,ymin,xmax,ymax" --base -0.1,-0.1,0,0.1,0.1,0
 refused --tool-length "only with --plane" --tool-length 0.05
 refused --dof "has 3 to 6" --dof 2,3 --plane 0.5,0,0.3,0,1,0,0,0,1
+refused --tool "only with --plane" --tool square
+refused --tool "" --tool sideways --plane 0.5,0,0.3,0,1,0,0,0,1
 
 check_spatial() {  # task.json surface: plane|cylinder
     python3 - "$1" "$2" <<'PY' || fail "$1: the task is not as expected"
@@ -71,4 +73,43 @@ check_spatial "$tmp/bottle.json" cylinder
 "$bin" import --text "Hi" --height 0.04 -o "$tmp/text.json" --cylinder 0.5,0,0.3,0,0,1,0.1 \
     >"$tmp/out" 2>"$tmp/err" || fail "--text --cylinder: exit $?: $(cat "$tmp/err")"
 check_spatial "$tmp/text.json" cylinder
+# --tool square: the tool square into the surface (formats.md "Tool
+# orientation"): into the wall along -(u x v); on the cylinder at its axis
+# where a primitive turns about it, else where the surface faces.
+"$bin" import "$drawing" -o "$tmp/easel.json" --width 0.2 --plane 0.5,0,0.3,0,1,0,0,0,1 \
+    --tool square --tool-tolerance 4 >"$tmp/out" 2>"$tmp/err" || fail "--tool: exit $?: $(cat "$tmp/err")"
+"$bin" import "$drawing" -o "$tmp/pipe.json" --width 0.2 --cylinder 0.5,0,0.3,0,0,1,0.1 \
+    --tool square >"$tmp/out" 2>"$tmp/err" || fail "--tool --cylinder: exit $?: $(cat "$tmp/err")"
+for t in easel pipe; do
+    "$bin" validate "$tmp/$t.json" >/dev/null 2>&1 || fail "--tool: $t does not validate"
+done
+python3 - "$tmp/easel.json" "$tmp/pipe.json" <<'PY' || fail "--tool: the tool axes are not square to the surface"
+import json, math, sys
+easel = json.load(open(sys.argv[1]))
+axis = easel["tool_axis"]
+assert axis["direction"] == [-1.0, 0.0, 0.0] or all(abs(a - b) < 1e-12 for a, b in zip(axis["direction"], [-1, 0, 0])), axis
+assert abs(axis["tolerance"] - math.radians(4)) < 1e-12, axis
+assert easel["robot"]["dof"] == [4, 5], easel["robot"]
+pipe = json.load(open(sys.argv[2]))
+assert "tool_axis" not in pipe
+strokes = pipe["strokes"] if "strokes" in pipe else [pipe["trajectory"]]
+toward = fixed = 0
+for st in strokes:
+    for p in st:
+        a = p["tool_axis"]
+        if "toward" in a:
+            assert a["toward"] == "axis" and p["type"] in ("arc", "circle", "helix"), p
+            toward += 1
+        else:
+            # Points from the surface to the axis at the primitive's start,
+            # within half the tolerance.
+            x, y, _ = p["start"]
+            w = (0.5 - x, -y)
+            n = math.hypot(*w)
+            d = a["direction"]
+            assert abs(d[2]) < 1e-9, a
+            assert math.acos(min(1, (d[0] * w[0] + d[1] * w[1]) / n)) <= a["tolerance"] / 2 + 1e-9, p
+            fixed += 1
+assert toward > 0 and fixed > 0, (toward, fixed)
+PY
 finish import_surface

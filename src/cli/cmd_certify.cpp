@@ -52,6 +52,8 @@ int run_certify(const CertifyArgs& a) {
             out["min_self_collision_margin"] = io::finite_or_null(c.min_self_clearance);
             out["max_ee_deviation"] = c.max_deviation;
             out["max_joint_step"] = c.max_joint_step;
+            if (std::isfinite(c.min_tool_angle_margin))
+                out["min_tool_angle_margin"] = c.min_tool_angle_margin;
             out["violations"] = c.violations.size();
             out["coarse_pairs"] = c.coarse_pairs.size();
         }

@@ -54,6 +54,8 @@ std::string describe(const task::SpatialTask& task, const task::TaskPart& part) 
                                        task.base_regions.size());
         case task::TaskPart::Kind::BaseRegion:
             return name + " (a box the base may stand in)";
+        case task::TaskPart::Kind::ToolAxis:
+            return name + " (which way the tool points along every primitive without its own)";
         case task::TaskPart::Kind::Robot:
             break;
     }

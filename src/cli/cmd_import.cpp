@@ -13,6 +13,7 @@
 #include <modsynth/drawing/hershey_text.h>
 #include <modsynth/drawing/import.h>
 #include <modsynth/drawing/svg_writer.h>
+#include <modsynth/geometry/vec.h>
 #include <modsynth/io/atomic_file.h>
 #include <modsynth/io/input.h>
 #include <modsynth/io/task_document.h>
@@ -55,6 +56,8 @@ struct ImportArgs {
     bool keep_order = false;
     std::vector<double> plane, cylinder;
     double tool_length = -1.0;
+    std::string tool;
+    double tool_tolerance_degrees = 5.0;
     bool spatial() const { return !plane.empty() || !cylinder.empty(); }
 };
 
@@ -79,6 +82,9 @@ task::SpatialTask spatial_base_task(const ImportArgs& a) {
     if (!a.dof.empty()) t.robot.dof = a.dof;
     if (a.link_diameter > 0.0) t.robot.link_diameter = a.link_diameter;
     if (a.tool_length >= 0.0) t.robot.tool_length = a.tool_length;
+    // Holding a tool's direction takes a hand or a wrist (formats.md "Tool
+    // orientation").
+    if (!a.tool.empty() && a.dof.empty()) t.robot.dof = {4, 5};
     return t;
 }
 
@@ -86,6 +92,8 @@ SurfaceImport surface_of(const ImportArgs& a) {
     SurfaceImport s;
     s.plane = a.plane;
     s.cylinder = a.cylinder;
+    s.tool = a.tool;
+    s.tool_tolerance = a.tool_tolerance_degrees * geometry::kPi / 180.0;
     return s;
 }
 
@@ -332,6 +340,13 @@ Command add_import(CLI::App& parent) {
                     "with --plane or --cylinder: the tool at the chain's end, metres (default 0; "
                     "links 0.05 to 1 m, twists 0 and +-90 degrees)")
         ->check(within(0.0, 1e3));
+    sub->add_option("--tool", a->tool,
+                    "with --plane or --cylinder: 'square' holds the tool square into the "
+                    "surface while it traces (a pen on an easel, a brush on a pipe)")
+        ->check(CLI::IsMember({"square"}));
+    sub->add_option("--tool-tolerance", a->tool_tolerance_degrees,
+                    "with --tool: how far the tool may tilt from square, degrees (default 5)")
+        ->check(within(1e-3, 90.0));
     sub->add_flag("--keep-order", a->keep_order,
                   "draw the strokes in the file's order and direction");
     // What `serve` runs an import with: the reply of POST /api/import (or
@@ -361,6 +376,8 @@ Command add_import(CLI::App& parent) {
                 }
                 if (a->tool_length >= 0.0 && !a->spatial())
                     throw InputError("--tool-length", "only with --plane or --cylinder");
+                if (!a->spatial() && !a->tool.empty())
+                    throw InputError("--tool", "only with --plane or --cylinder");
                 return run_import(*a);
             }};
 }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include <modsynth/geometry/vec.h>
 #include <modsynth/hardware/select_dh_modules.h>
 #include <modsynth/synth/module_choice.h>
 #include <modsynth/synth/solve.h>
@@ -51,8 +52,13 @@ void print_summary(const task::SpatialTask& task, const synth::Solution& solutio
                                       : std::string("no obstacles");
     std::printf(
         "  certified over the whole motion: %s, self-collision margin %.4f m, EE deviation <= "
-        "%.2e m\n",
-        clearance.c_str(), c.min_self_clearance, c.max_deviation);
+        "%.2e m%s\n",
+        clearance.c_str(), c.min_self_clearance, c.max_deviation,
+        std::isfinite(c.min_tool_angle_margin)
+            ? text::format(", tool axis margin %.2f degrees",
+                           c.min_tool_angle_margin * 180.0 / geometry::kPi)
+                  .c_str()
+            : "");
     std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
                 solution.samples.back().t, output.c_str());
     if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());

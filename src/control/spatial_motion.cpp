@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <modsynth/control/spatial_samples.h>
@@ -33,9 +34,14 @@ std::vector<double> lerp(const std::vector<double>& a, const std::vector<double>
 std::optional<std::vector<double>> configuration(const kinematics::ArmDesign& design, int branch,
                                                  const geometry::Vec3& target,
                                                  const std::vector<double>& along,
-                                                 const std::vector<double>* previous) {
+                                                 const std::vector<double>* previous,
+                                                 const std::optional<task::WantedTool>& tool = {}) {
     kinematics::PoseTarget<double> t;
     t.point = target;
+    if (tool) {
+        t.tool_axis = tool->direction;
+        t.tool_tolerance = tool->tolerance;
+    }
     auto q = design.model->joint_angles(design, t, branch, along);
     if (q) unwrap(*q, previous);
     return q;
@@ -85,8 +91,10 @@ std::optional<std::vector<double>> spatial_configuration_at(const task::SpatialT
                                                             const std::vector<double>* previous) {
     const geometry::Primitive3& prim = task.trajectory[static_cast<std::size_t>(j)];
     const double length = geometry::length(prim);
-    return configuration(design, branch_of(task, design, j), geometry::point_at(prim, s),
-                         design.along_at(j, length > 0.0 ? s / length : 0.0), previous);
+    const geometry::Vec3 p = geometry::point_at(prim, s);
+    return configuration(design, branch_of(task, design, j), p,
+                         design.along_at(j, length > 0.0 ? s / length : 0.0), previous,
+                         task::wanted_tool(task, j, p));
 }
 
 std::optional<std::vector<Sample>> plan_spatial_motion(const task::SpatialTask& task,

@@ -91,6 +91,7 @@ public:
     void other_twists(const TaskPart& part);
     void grown_region(const TaskPart& part);
     void moved_path(const TaskPart& part);
+    void wider_tool(const TaskPart& part);
 
     /// For a wall's obstacles: the first whose removal opens it, and the
     /// least move of one of them outwards that does.
@@ -194,6 +195,10 @@ std::vector<Relaxation> SpatialRelaxers::run() {
     obstacle_changes();
     for (const TaskPart& part : core_) {
         if (deadline_.expired()) break;
+        if (part.kind() == TaskPart::Kind::ToolAxis || part.field() == "tool_axis") {
+            wider_tool(part);
+            continue;
+        }
         for (const SpatialRelaxer& r : kSpatialRelaxers) {
             if (r.kind != part.kind() || (r.key && !part.is_robot(*r.key)) || !part.field().empty())
                 continue;
@@ -214,6 +219,34 @@ void SpatialRelaxers::longer_links(const TaskPart& part) {
     if (!v) return;
     t.robot.max_link_length = std::ceil(*v * 100.0) / 100.0;
     offer(part, text::format("robot.max_link_length >= %.2f m", t.robot.max_link_length), t);
+}
+
+// The least tolerance of a tool axis (the task's, or one primitive's) that
+// removes the conflict, up to a right angle.
+void SpatialRelaxers::wider_tool(const TaskPart& part) {
+    task::SpatialTask t = task_;
+    std::vector<task::ToolAxis*> axes;
+    if (part.kind() == TaskPart::Kind::ToolAxis) {
+        if (t.tool_axis) axes.push_back(&*t.tool_axis);
+    } else {
+        for (int j = 0; j < static_cast<int>(t.tool_axes.size()); ++j)
+            if (t.tool_axes[static_cast<std::size_t>(j)] && task::tool_axis_part(task_, j) == part)
+                axes.push_back(&*t.tool_axes[static_cast<std::size_t>(j)]);
+    }
+    if (axes.empty()) return;
+    const double from = axes.front()->tolerance;
+    const auto v = smallest(from, geometry::kPi / 2.0, 1e-3, [&](double th) {
+        for (task::ToolAxis* a : axes) a->tolerance = th;
+        return free(t);
+    });
+    if (!v) return;
+    const double degrees = std::min(90.0, std::ceil(*v * 1800.0 / geometry::kPi) / 10.0);
+    for (task::ToolAxis* a : axes) {
+        a->tolerance = degrees * geometry::kPi / 180.0;
+        a->tolerance_given = true;
+    }
+    offer(part,
+          text::format("%s.tolerance >= %.1f degrees", task::to_string(part).c_str(), degrees), t);
 }
 
 // The fewest joints more than the task allows that remove the conflict.

@@ -393,6 +393,8 @@ verify::Certificate parse_certificate(const json& c) {
     if (const json* v = optional(c, "max_joint_step")) {
         out.max_joint_step = finite_number(*v, member(part, "max_joint_step"));
     }
+    if (const json* v = optional(c, "min_tool_angle_margin"))
+        out.min_tool_angle_margin = finite_number(*v, member(part, "min_tool_angle_margin"));
     return out;
 }
 

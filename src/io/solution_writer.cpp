@@ -225,6 +225,9 @@ nlohmann::json document(const synth::Solution& s, bool with_samples) {
                           {"min_self_collision_margin", finite_or_null(c.min_self_clearance)},
                           {"max_ee_deviation", c.max_deviation},
                           {"max_joint_step", c.max_joint_step}};
+    // formats.md "Tool orientation": only where some primitive has a tool axis.
+    if (std::isfinite(c.min_tool_angle_margin))
+        doc["certificate"]["min_tool_angle_margin"] = c.min_tool_angle_margin;
     if (s.modules && s.modules->checked) doc["modules"] = to_json(*s.modules);
     return doc;
 }

@@ -29,6 +29,7 @@ using geometry::Vec3;
 using task::InputError;
 using task::SpatialRobotSpec;
 using task::SpatialTask;
+using task::ToolAxis;
 using namespace values;
 
 namespace {
@@ -197,16 +198,72 @@ ReadPrimitive read_helix(const json& prim, const std::string& part) {
     return {helix, end};
 }
 
-/// Keys of the contract that modsynth does not act on yet are refused, not
-/// ignored: a solution must never seem to honour what nothing read.
-void refuse_unsupported(const json& object, const std::string& part) {
-    if (optional(object, "tool_axis"))
-        throw InputError(member(part, "tool_axis"), "tool orientation is not supported yet");
+// ------------------------------------------------------------ tool axes
+
+/// formats.md "Tool orientation": {"direction": [x, y, z]} or {"toward":
+/// "axis" | "away"}, with an optional "tolerance" in (0, pi/2].
+ToolAxis read_tool_axis(const json& j, const std::string& part) {
+    require_object(j, part, "{\"direction\": [0, 0, -1], \"tolerance\": 0.05}");
+    for (const auto& [key, value] : j.items())
+        if (key != "direction" && key != "toward" && key != "tolerance")
+            throw InputError(member(part, text::printable(key, 40).c_str()),
+                             "unknown key; a tool axis takes \"direction\" or \"toward\", and "
+                             "\"tolerance\"");
+    const json* direction = optional(j, "direction");
+    const json* toward = optional(j, "toward");
+    if (direction && toward)
+        throw InputError(part, "has both \"direction\" and \"toward\"; give one of them");
+    if (!direction && !toward)
+        throw InputError(part,
+                         "needs \"direction\": [x, y, z] or \"toward\": \"axis\" or "
+                         "\"away\"");
+    ToolAxis a;
+    if (direction) {
+        a.direction = direction3(*direction, member(part, "direction"));
+    } else {
+        const std::string tp = member(part, "toward");
+        const std::string t = text(*toward, tp, "\"axis\" or \"away\"");
+        if (t == "axis")
+            a.kind = ToolAxis::Kind::TowardAxis;
+        else if (t == "away")
+            a.kind = ToolAxis::Kind::AwayFromAxis;
+        else
+            throw InputError(tp,
+                             "expected \"axis\" or \"away\", got \"" + text::printable(t) + "\"");
+    }
+    if (const json* tol = optional(j, "tolerance")) {
+        const std::string tp = member(part, "tolerance");
+        a.tolerance = finite_number(*tol, tp, "an angle in radians");
+        if (!(a.tolerance > 0.0 && a.tolerance <= geometry::kPi / 2 + 1e-12))
+            throw InputError(tp, "is " + text::compact(a.tolerance) +
+                                     " rad; a tolerance lies in (0, pi/2], 1.5707963267948966");
+        a.tolerance_given = true;
+    }
+    return a;
+}
+
+/// A tool pointing at the axis of primitive `prim` needs a turn with a
+/// radius (`part` names the axis's document).
+void check_toward(const ToolAxis& a, const Primitive3& prim, const std::string& part,
+                  const std::string& primitive) {
+    if (a.kind == ToolAxis::Kind::Direction) return;
+    const auto axis = task::turn_axis(prim);
+    if (!axis)
+        throw InputError(member(part, "toward"),
+                         primitive +
+                             " is a line, which has no axis to point at; give "
+                             "\"direction\"");
+    const Vec3 r = geometry::start_point(prim) - axis->first;
+    const double radius = (r - r.dot(axis->second) * axis->second).norm();
+    if (radius < task::kLeastTowardRadius)
+        throw InputError(member(part, "toward"), primitive + "'s radius " + metres(radius) +
+                                                     " m is under the " +
+                                                     metres(task::kLeastTowardRadius) +
+                                                     " m a tool may point at its axis from");
 }
 
 ReadPrimitive read_primitive(const json& prim, const std::string& part) {
     require_object(prim, part, "{\"type\": \"line\", \"start\": [x, y, z], \"end\": [x, y, z]}");
-    refuse_unsupported(prim, part);
     const char* kinds = "\"line\", \"arc\", \"circle\" or \"helix\"";
     const std::string why = std::string("expected ") + kinds;
     const std::string tp = member(part, "type");
@@ -218,12 +275,25 @@ ReadPrimitive read_primitive(const json& prim, const std::string& part) {
     throw InputError(tp, "unknown primitive type \"" + text::printable(type) + "\"; " + why);
 }
 
-/// One list of connected primitives named `part`, appended to `out`.
-void read_primitives(const json& list, const std::string& part, std::vector<Primitive3>& out) {
+/// One list of connected primitives named `part`, appended to the task's,
+/// with their tool axes.
+void read_primitives(const json& list, const std::string& part, SpatialTask& task) {
+    std::vector<Primitive3>& out = task.trajectory;
     Vec3 previous_end = Vec3::Zero();
     for (std::size_t j = 0; j < list.size(); ++j) {
         const std::string pj = element(part, j);
         ReadPrimitive r = read_primitive(list[j], pj);
+        std::optional<ToolAxis> axis;
+        if (const json* a = optional(list[j], "tool_axis")) {
+            const std::string ap = member(pj, "tool_axis");
+            axis = read_tool_axis(*a, ap);
+            check_toward(*axis, r.primitive, ap, pj);
+        }
+        // Kept per primitive from the first one that has a tool axis on.
+        if (axis || !task.tool_axes.empty()) {
+            task.tool_axes.resize(out.size());
+            task.tool_axes.push_back(std::move(axis));
+        }
         if (j > 0) {
             const double gap = (geometry::start_point(r.primitive) - previous_end).norm();
             if (gap > kJoinTolerance)
@@ -252,7 +322,7 @@ void read_path(const json& doc, SpatialTask& task) {
         if (list.empty())
             throw InputError("trajectory", "is empty; a task needs at least one primitive");
         require_count_cap(list, "trajectory", "primitives", task::kMaxPrimitives);
-        read_primitives(list, "trajectory", task.trajectory);
+        read_primitives(list, "trajectory", task);
         return;
     }
     const std::string part = "strokes";
@@ -271,7 +341,7 @@ void read_path(const json& doc, SpatialTask& task) {
                                    std::to_string(task::kMaxPrimitives) + " allowed");
     for (std::size_t s = 0; s < strokes->size(); ++s) {
         task.stroke_starts.push_back(static_cast<int>(task.trajectory.size()));
-        read_primitives((*strokes)[s], element(part, s), task.trajectory);
+        read_primitives((*strokes)[s], element(part, s), task);
     }
 }
 
@@ -597,6 +667,23 @@ json primitive_json(const Primitive3& prim) {
         prim);
 }
 
+json tool_axis_json(const ToolAxis& a) {
+    json j;
+    switch (a.kind) {
+        case ToolAxis::Kind::Direction:
+            j["direction"] = point_json(a.direction);
+            break;
+        case ToolAxis::Kind::TowardAxis:
+            j["toward"] = "axis";
+            break;
+        case ToolAxis::Kind::AwayFromAxis:
+            j["toward"] = "away";
+            break;
+    }
+    if (a.tolerance_given) j["tolerance"] = a.tolerance;
+    return j;
+}
+
 json obstacle_json(const Obstacle3& o) {
     return std::visit(
         [](const auto& x) -> json {
@@ -624,11 +711,18 @@ SpatialTask parse_spatial_task(const json& doc) {
                          "\"3d\", ...}, got " +
                              describe(doc));
     check_format_and_space(doc);
-    if (optional(doc, "tool_axis"))
-        throw InputError("tool_axis", "tool orientation is not supported yet");
     SpatialTask task;
     if (const json* name = optional(doc, "name")) task.name = text(*name, "name", "a name (text)");
     read_path(doc, task);
+    if (!task.tool_axes.empty()) task.tool_axes.resize(task.trajectory.size());
+    if (const json* a = optional(doc, "tool_axis")) {
+        task.tool_axis = read_tool_axis(*a, "tool_axis");
+        // It applies to every primitive without one of its own.
+        for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j)
+            if (task.tool_axes.empty() || !task.tool_axes[static_cast<std::size_t>(j)])
+                check_toward(*task.tool_axis, task.trajectory[static_cast<std::size_t>(j)],
+                             "tool_axis", task::part_name(task, j));
+    }
     task.obstacles =
         read_list<Obstacle3>(doc, "obstacles", "obstacles", task::kMaxObstacles, read_obstacle);
     task.base_regions = read_list<Box3>(
@@ -659,13 +753,17 @@ SpatialTask load_spatial_task(const std::string& path) {
 json to_json(const SpatialTask& task) {
     json trajectory = json::array(), strokes = json::array();
     for (int j = 0; j < static_cast<int>(task.trajectory.size()); ++j) {
+        json prim = primitive_json(task.trajectory[static_cast<std::size_t>(j)]);
+        if (!task.tool_axes.empty())
+            if (const auto& a = task.tool_axes[static_cast<std::size_t>(j)])
+                prim["tool_axis"] = tool_axis_json(*a);
         if (!task::has_strokes(task)) {
-            trajectory.push_back(primitive_json(task.trajectory[j]));
+            trajectory.push_back(std::move(prim));
             continue;
         }
         if (j == task::stroke_first(task, task::stroke_of(task, j)))
             strokes.push_back(json::array());
-        strokes.back().push_back(primitive_json(task.trajectory[j]));
+        strokes.back().push_back(std::move(prim));
     }
     json obstacles = json::array();
     for (const Obstacle3& o : task.obstacles) obstacles.push_back(obstacle_json(o));
@@ -696,6 +794,7 @@ json to_json(const SpatialTask& task) {
     if (r.gravity != SpatialRobotSpec{}.gravity) robot["gravity"] = point_json(r.gravity);
     json doc = {{"format", kFormat},      {"name", task.name},       {"space", "3d"},
                 {"obstacles", obstacles}, {"base_regions", regions}, {"robot", robot}};
+    if (task.tool_axis) doc["tool_axis"] = tool_axis_json(*task.tool_axis);
     if (task::has_strokes(task))
         doc["strokes"] = std::move(strokes);
     else

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include <modsynth/geometry/primitive3.h>
@@ -27,6 +28,8 @@ using Part = kinematics::PosePart<AD>;
 struct Block {
     SpatialPoint point;
     Vec3 target = Vec3::Zero();
+    /// Which way the tool points there, tracing a primitive with a tool axis.
+    std::optional<task::WantedTool> tool;
     std::vector<int> locals;  ///< global index of each local variable
     /// Local index of each free number at the two ends of the
     /// interpolation (start/end of the primitive, or the two sides of the
@@ -106,9 +109,13 @@ void SpatialFormulation::Impl::build() {
             if (static_cast<int>(v.size()) != 2 * along)
                 throw std::invalid_argument(
                     "SpatialFormulation: the start design's free numbers do not fit the task");
-            for (double a : v) {
-                lower.push_back(f.along.first);
-                upper.push_back(f.along.second);
+            for (int h = 0; h < 2 * along; ++h) {
+                const double a = v[static_cast<std::size_t>(h)];
+                const bool fixed =
+                    !f.fixed_along.empty() &&
+                    f.fixed_along[static_cast<std::size_t>(j)][static_cast<std::size_t>(h)];
+                lower.push_back(fixed ? a : f.along.first);
+                upper.push_back(fixed ? a : f.along.second);
                 x0.push_back(a);
             }
         }
@@ -124,6 +131,7 @@ void SpatialFormulation::Impl::add_block(const SpatialPoint& point, const std::v
     const geometry::Primitive3& prim = task.trajectory[static_cast<std::size_t>(point.primitive)];
     const double length = geometry::length(prim);
     b.target = point.transition ? geometry::end_point(prim) : geometry::point_at(prim, point.s);
+    if (!point.transition) b.tool = task::wanted_tool(task, point.primitive, b.target);
     for (int i = 0; i < first_along; ++i) b.locals.push_back(i);
     if (along > 0) {
         b.fraction = point.transition ? point.t : (length > 0.0 ? point.s / length : 0.0);
@@ -218,9 +226,16 @@ ArmPose<AD> SpatialFormulation::Impl::pose(const Block& b, const std::vector<AD>
                               AD(b.fraction));
     kinematics::PoseTarget<AD> target;
     target.point = P3(AD(b.target.x()), AD(b.target.y()), AD(b.target.z()));
+    if (b.tool) {
+        target.tool_axis =
+            P3(AD(b.tool->direction.x()), AD(b.tool->direction.y()), AD(b.tool->direction.z()));
+        target.tool_tolerance = b.tool->tolerance;
+    }
     const int branch =
         problem.start.branches[static_cast<std::size_t>(task::stroke_of(task, b.point.primitive))];
-    return model.pose(shape, target, branch, numbers, problem.margins.pose());
+    auto ps = model.pose(shape, target, branch, numbers, problem.margins.pose());
+    kinematics::add_tool_limit(ps, target, problem.margins.tool_share);
+    return ps;
 }
 
 void SpatialFormulation::Impl::evaluate(const double* x) const {

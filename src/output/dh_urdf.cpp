@@ -6,9 +6,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include <modsynth/geometry/vec.h>
 #include <modsynth/hardware/dh_arm_model.h>
 #include <modsynth/hardware/dh_stack.h>
 #include <modsynth/hardware/select_dh_modules.h>
+#include <modsynth/kinematics/dh_chain.h>
 #include <modsynth/output/urdf.h>
 #include <modsynth/text/format.h>
 
@@ -126,7 +128,9 @@ std::string robot_urdf(const task::SpatialTask& task, const synth::Solution& sol
     s += "  <!-- Spatial arm synthesised by modsynth: a Denavit-Hartenberg chain of " +
          std::to_string(n) +
          " joints. Frame \"world\" is the task frame (z up); link_k's frame is DH frame k-1 "
-         "turned by joint k, and the origin of the tip link \"ee\" is the end-effector. Joint "
+         "turned by joint k, and the origin of the tip link \"ee\" is the end-effector, and the z "
+         "axis of link \"tool\" "
+         "there is the tool's axis. Joint "
          "angles are those of the solution's samples. Modules (joint 1 first): " +
          names +
          (chosen ? " (chosen to carry the motion)"
@@ -179,6 +183,17 @@ std::string robot_urdf(const task::SpatialTask& task, const synth::Solution& sol
     s += "  <joint name=\"ee_tip\" type=\"fixed\">\n    <parent link=\"link_" + std::to_string(n) +
          "\"/>\n    <child link=\"ee\"/>\n    " +
          origin(Vec3(last.a, 0.0, last.d), Vec3(last.alpha, 0.0, 0.0)) + "\n  </joint>\n";
+    // The tool's axis (formats.md: the chain's last segment, x_n when a_n > 0,
+    // else sign(d_n) z_{n-1}, which frame n sees as (0, sin alpha, cos alpha))
+    // as the z axis of a frame of its own, as tool frames are given to
+    // planners that hold a direction.
+    const Vec3 tool_rpy = last.a > kinematics::kZeroSegment ? Vec3(0.0, geometry::kPi / 2.0, 0.0)
+                          : last.d >= 0.0                   ? Vec3(-last.alpha, 0.0, 0.0)
+                                          : Vec3(geometry::kPi - last.alpha, 0.0, 0.0);
+    s += "  <link name=\"tool\"/>\n";
+    s += "  <joint name=\"tool_axis\" type=\"fixed\">\n    <parent link=\"ee\"/>\n"
+         "    <child link=\"tool\"/>\n    " +
+         origin(Vec3::Zero(), tool_rpy) + "\n  </joint>\n";
     s += ros2_control_block(task.name, solution, n);
     return s + "</robot>\n";
 }

@@ -100,6 +100,7 @@ std::string describe_part(const task::Task& task, const task::TaskPart& part) {
         case task::TaskPart::Kind::BaseRegions:
             return std::to_string(task.base_regions.size()) + " rectangle(s) for the base";
         case task::TaskPart::Kind::BaseRegion:
+        case task::TaskPart::Kind::ToolAxis:
             return "";
         case task::TaskPart::Kind::Robot:
             if (part.index() >= 0) return "";

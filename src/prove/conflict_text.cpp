@@ -138,6 +138,7 @@ std::string describe_part(const task::Task& task, const TaskPart& part) {
             return s;
         }
         case TaskPart::Kind::BaseRegion:
+        case TaskPart::Kind::ToolAxis:
             return name;
         case TaskPart::Kind::Robot: {
             const std::string words = part.field().empty() ? robot_words(task, part.key()) : "";

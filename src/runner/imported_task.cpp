@@ -40,7 +40,8 @@ json imported_task_json(const drawing::ImportResult& r, const task::Task& base) 
 
 json imported_spatial_task_json(const drawing::PlacedStrokes& placed,
                                 const std::vector<geometry::Obstacle3>& obstacles,
-                                const task::SpatialTask& base) {
+                                const task::SpatialTask& base,
+                                const std::function<void(task::SpatialTask&)>& finish) {
     task::SpatialTask t = base;
     t.obstacles = obstacles;
     t.trajectory.clear();
@@ -50,6 +51,7 @@ json imported_spatial_task_json(const drawing::PlacedStrokes& placed,
             t.stroke_starts.push_back(static_cast<int>(t.trajectory.size()));
         t.trajectory.insert(t.trajectory.end(), stroke.begin(), stroke.end());
     }
+    if (finish) finish(t);
     const json doc = io::to_json(t);
     io::parse_spatial_task(doc);
     return doc;

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 // The task an imported drawing becomes, as `modsynth import` writes it and
 // POST /api/import answers it.
 #include <nlohmann/json.hpp>
@@ -21,9 +22,11 @@ nlohmann::json imported_task_json(const drawing::ImportResult& r, const task::Ta
 /// `--cylinder`): a spatial task with the placed strokes and obstacles;
 /// the name, base regions and robot come from `base`. Checked by the
 /// spatial task reader.
-nlohmann::json imported_spatial_task_json(const drawing::PlacedStrokes& placed,
-                                          const std::vector<geometry::Obstacle3>& obstacles,
-                                          const task::SpatialTask& base);
+/// `finish` may add what depends on the placed trajectory (a tool axis per
+/// primitive) before the task is written and checked.
+nlohmann::json imported_spatial_task_json(
+    const drawing::PlacedStrokes& placed, const std::vector<geometry::Obstacle3>& obstacles,
+    const task::SpatialTask& base, const std::function<void(task::SpatialTask&)>& finish = {});
 
 /// What POST /api/import answers for an imported drawing (README, "serve"):
 /// the task, its counts, the deviation reached and the pen-up travel, the

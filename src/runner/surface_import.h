@@ -4,6 +4,8 @@
 // drawing is imported in its own plane about its centre, then carried onto
 // the plane or wrapped round the cylinder as a spatial task.
 #include <string>
+
+#include <modsynth/task/tool_axis.h>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -19,6 +21,11 @@ struct SurfaceImport {
     /// How errors name the two (`--plane` on the command line, `plane` in a
     /// query string).
     std::string plane_option = "--plane", cylinder_option = "--cylinder";
+    /// "square": the task holds the tool square into the surface while it
+    /// traces (formats.md "Tool orientation"), within `tool_tolerance` rad;
+    /// empty: the tool is free.
+    std::string tool;
+    double tool_tolerance = task::kDefaultToolTolerance;
 
     bool placed() const { return !plane.empty() || !cylinder.empty(); }
     /// "plane" or "cylinder", as the reply says.

@@ -156,6 +156,25 @@ struct SpatialFrontStage::Impl {
                     require(relaxation, {part, TaskPart::robot(RobotKey::Twists)},
                             h - num(p.z()) <= num(tol) && num(p.z()) - h <= num(tol));
             }
+            // Its segments are then vertical (d parts) or horizontal (a
+            // parts): the tool, its last, is one or the other for the whole
+            // motion, and each wanted direction must allow it.
+            const z3::expr vertical = ctx.bool_const("tool_vertical");
+            for (std::size_t j = 0; j < points.size() && task::holds_tool(task); ++j) {
+                const int prim = static_cast<int>(j);
+                if (!task::has_tool_axis(task, prim)) continue;
+                const TaskPart tool = task::tool_axis_part(task, prim);
+                for (const Vec3& p : points[j]) {
+                    const auto w = task::wanted_tool(task, prim, p);
+                    if (!w) continue;
+                    const double uz = std::abs(w->direction.z());
+                    const double e = options.slack;
+                    require(
+                        relaxation, {tool, TaskPart::robot(RobotKey::Twists)},
+                        z3::implies(vertical, ctx.bool_val(uz >= std::cos(w->tolerance) - e)) &&
+                            z3::implies(!vertical, ctx.bool_val(uz <= std::sin(w->tolerance) + e)));
+                }
+            }
         }
     }
 

@@ -44,6 +44,8 @@ void Blockers::self_collision(int dof, int primitive) {
     tally(dof, Kind::SelfCollision, -1, primitive);
 }
 
+void Blockers::tool_axis(int dof, int primitive) { tally(dof, Kind::ToolAxis, -1, primitive); }
+
 void Blockers::out_of_reach(int dof, int primitive, bool transition) {
     tally(dof, transition ? Kind::TransitionReach : Kind::Reach, -1, primitive);
 }
@@ -71,6 +73,10 @@ std::string Blockers::describe_with(const std::function<std::string(int)>& name)
                     break;
                 case Kind::SelfCollision:
                     item = text::format("the tool too near its own links (%d, at ", t.count) +
+                           where + ")";
+                    break;
+                case Kind::ToolAxis:
+                    item = text::format("the tool off its wanted direction (%d, at ", t.count) +
                            where + ")";
                     break;
                 case Kind::Reach:

@@ -443,6 +443,8 @@ private:
                 r_.blocked.obstacle(dof, v.obstacle, v.link, v.primitive);
             if (v.kind == verify::Violation::Kind::SelfCollision && blamed.insert(-1).second)
                 r_.blocked.self_collision(dof, v.primitive);
+            if (v.kind == verify::Violation::Kind::ToolAxis && blamed.insert(-2).second)
+                r_.blocked.tool_axis(dof, v.primitive);
         }
     }
 

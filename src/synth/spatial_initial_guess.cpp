@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 
+#include <modsynth/arms/pointing.h>
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/kinematics/pose_rules.h>
 #include <modsynth/task/spatial_strokes.h>
@@ -21,6 +23,7 @@ struct ScoringPoint {
     int primitive = 0;
     double u = 0.0;  ///< fraction along the primitive
     Vec3 p = Vec3::Zero();
+    std::optional<task::WantedTool> tool;  ///< which way the tool points there
 };
 
 /// Points every `spacing` m (wider past max_points), per stroke, in an
@@ -39,7 +42,8 @@ std::vector<std::vector<ScoringPoint>> scoring_points(const task::SpatialTask& t
         auto& stroke = out[static_cast<std::size_t>(task::stroke_of(task, j))];
         for (int i = 0; i <= n; ++i) {
             const double u = static_cast<double>(i) / n;
-            stroke.push_back({j, u, geometry::point_at(prim, u * len)});
+            const Vec3 p = geometry::point_at(prim, u * len);
+            stroke.push_back({j, u, p, task::wanted_tool(task, j, p)});
         }
     }
     for (auto& stroke : out) {
@@ -60,11 +64,17 @@ public:
 
     /// The worst margin of the pose at target p, or below `cutoff` as soon
     /// as one is.
-    double pose_margin(const kinematics::ArmDesign& d, const Vec3& p, int branch,
+    double pose_margin(const kinematics::ArmDesign& d, const Vec3& p,
+                       const std::optional<task::WantedTool>& tool, int branch,
                        const std::vector<double>& along, double cutoff) const {
         kinematics::PoseTarget<double> target;
         target.point = p;
-        const auto pose = d.model->pose(d.shape, target, branch, along, m_.pose());
+        if (tool) {
+            target.tool_axis = tool->direction;
+            target.tool_tolerance = tool->tolerance;
+        }
+        auto pose = d.model->pose(d.shape, target, branch, along, m_.pose());
+        kinematics::add_tool_limit(pose, target, m_.tool_share);
         double worst = kInf;
         for (const auto& l : pose.limits)
             worst = std::min(worst, std::min(l.value - l.lower, l.upper - l.value) * l.scale);
@@ -102,8 +112,8 @@ double stroke_margin(const Scorer& scorer, const kinematics::ArmDesign& d,
                      const std::vector<ScoringPoint>& points, int branch, double cutoff) {
     double worst = kInf;
     for (const ScoringPoint& sp : points) {
-        worst = std::min(
-            worst, scorer.pose_margin(d, sp.p, branch, d.along_at(sp.primitive, sp.u), cutoff));
+        worst = std::min(worst, scorer.pose_margin(d, sp.p, sp.tool, branch,
+                                                   d.along_at(sp.primitive, sp.u), cutoff));
         if (worst < cutoff) break;
     }
     return worst;
@@ -115,7 +125,8 @@ double stroke_margin(const Scorer& scorer, const kinematics::ArmDesign& d,
 double choose_branches(const task::SpatialTask& task, const Scorer& scorer,
                        kinematics::ArmDesign& d,
                        const std::vector<std::vector<ScoringPoint>>& strokes,
-                       const std::vector<std::vector<double>>& grid, double cutoff) {
+                       const std::vector<std::vector<double>>& grid, const arms::AlongPins& pins,
+                       double cutoff) {
     const int branches = d.model->branch_count(d.dof());
     const bool free = !grid.front().empty();
     d.branches.assign(strokes.size(), 0);
@@ -125,6 +136,7 @@ double choose_branches(const task::SpatialTask& task, const Scorer& scorer,
         both.insert(both.end(), v.begin(), v.end());
         for (int j = task::stroke_first(task, s); j <= task::stroke_last(task, s); ++j)
             d.along[static_cast<std::size_t>(j)] = both;
+        arms::pin_along(pins, task, d.along);
     };
     double worst = kInf;
     for (std::size_t s = 0; s < strokes.size(); ++s) {
@@ -203,6 +215,7 @@ std::vector<ScoredDesign> spatial_initial_guesses(const task::SpatialTask& task,
         context.base_box = {context.path_min - grow, context.path_max + grow};
     }
     const auto grid = family.along_grid(skeleton.dof, skeleton.variant);
+    const auto pins = arms::along_pins(family, task, skeleton.dof, skeleton.variant);
 
     std::mt19937 rng(seed * 7919u + static_cast<unsigned>(skeleton.variant + 2) * 131u +
                      static_cast<unsigned>(skeleton.base_region + 2) * 17u +
@@ -237,7 +250,7 @@ std::vector<ScoredDesign> spatial_initial_guesses(const task::SpatialTask& task,
             cutoff = 0.0;
         else if (static_cast<int>(unclear.size()) >= count)
             cutoff = unclear.back().margin;
-        const double margin = choose_branches(task, scorer, d, strokes, grid, cutoff);
+        const double margin = choose_branches(task, scorer, d, strokes, grid, pins, cutoff);
         if (margin >= 0.0) {
             clear.push_back({d, margin});
             if (static_cast<int>(clear.size()) >= count) break;

@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include <modsynth/arms/pointing.h>
 #include <modsynth/control/joint_limits.h>
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/nlp/solver.h>
@@ -280,6 +281,12 @@ public:
         p.family.along = {along.lower, along.upper};
         p.family.length_weights = s.family->length_weights(s.dof, s.variant);
         p.family.rows = s.family->design_rows(task_, s.dof, s.variant);
+        const auto pins = arms::pin_along(arms::along_pins(*s.family, task_, s.dof, s.variant),
+                                          task_, p.start.along);
+        for (const auto& slots : pins) {
+            p.family.fixed_along.emplace_back();
+            for (const auto& v : slots) p.family.fixed_along.back().push_back(v.has_value());
+        }
         if (sk.skeleton.base_region >= 0)
             p.base_box = task_.base_regions[static_cast<std::size_t>(sk.skeleton.base_region)];
         p.margins = opt_.margins;

@@ -97,6 +97,9 @@ std::string to_string(const TaskPart& part) {
             s = std::string("robot.") + to_string(part.key()) +
                 (part.index() >= 0 ? indexed(part.index()) : std::string());
             break;
+        case TaskPart::Kind::ToolAxis:
+            s = "tool_axis";
+            break;
     }
     return part.field().empty() ? s : s + "." + part.field();
 }
@@ -134,6 +137,9 @@ std::optional<TaskPart> parse_task_part(std::string_view name) {
     } else if (starts(name, "base_regions")) {
         at = 12;
         part = TaskPart::base_regions();
+    } else if (starts(name, "tool_axis") && (name.size() == 9 || name[9] == '.')) {
+        at = 9;
+        part = TaskPart::tool_axis();
     } else if (starts(name, "robot.")) {
         for (const auto& [key, key_name] : kRobotKeys) {
             const std::string_view k(key_name);

@@ -4,12 +4,14 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <modsynth/control/spatial_samples.h>
 #include <modsynth/geometry/distance3.h>
 #include <modsynth/geometry/obstacle3.h>
 #include <modsynth/kinematics/dh_motion_bound.h>
 #include <modsynth/task/spatial_strokes.h>
+#include <modsynth/task/tool_axis.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
@@ -27,6 +29,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kGeomEps = 1e-9;
 /// formats.md: a chain's alpha equals one of robot.twists within this.
 constexpr double kTwistTolerance = 1e-9;
+/// rad: formats.md's slack on a tool axis's angle.
+constexpr double kToolAngleSlack = 1e-6;
 
 struct Pose {
     std::vector<Eigen::Isometry3d> frames;
@@ -34,6 +38,12 @@ struct Pose {
     Vec3 ee = Vec3::Zero();
     Vec3 target = Vec3::Zero();  ///< where the EE should be
     double deviation = 0.0;
+    /// Tracing a primitive with a tool axis: the tool's angle from its
+    /// wanted direction at the EE (pi where none is defined), and the
+    /// distance of the EE from the axis a "toward" tool points at.
+    std::optional<double> tool_angle;
+    double tool_tolerance = 0.0;
+    double axis_distance = kInf;
 };
 
 Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a + t * (b - a); }
@@ -125,6 +135,23 @@ private:
                    : a.phase == Phase::Transition ? geometry::end_point(prim)
                                                   : p.ee;
         p.deviation = (p.ee - p.target).norm();
+        const int j = control::primitive_index(task_, a);
+        if (a.phase == Phase::Trace) {
+            if (const task::ToolAxis* axis = task::tool_axis_of(task_, j)) {
+                const Segment3& last = p.segments.back();
+                const Vec3 tool = (last.end - last.start).normalized();
+                const auto wanted = task::wanted_tool(task_, j, p.ee);
+                p.tool_angle = wanted ? std::atan2(tool.cross(wanted->direction).norm(),
+                                                   tool.dot(wanted->direction))
+                                      : geometry::kPi;
+                p.tool_tolerance = axis->tolerance;
+                if (const auto line = task::turn_axis(prim);
+                    line && axis->kind != task::ToolAxis::Kind::Direction) {
+                    const Vec3 r = p.ee - line->first;
+                    p.axis_distance = (r - r.dot(line->second) * line->second).norm();
+                }
+            }
+        }
         return p;
     }
 
@@ -154,6 +181,16 @@ private:
     void check_sample(int i) {
         const Pose& p = poses_[static_cast<std::size_t>(i)];
         cert_.max_deviation = std::max(cert_.max_deviation, p.deviation);
+        if (p.tool_angle) {
+            const double margin = p.tool_tolerance - *p.tool_angle;
+            cert_.min_tool_angle_margin = std::min(cert_.min_tool_angle_margin, margin);
+            if (margin < -kToolAngleSlack)
+                violation(Violation::Kind::ToolAxis, i, -margin,
+                          text::format("the tool points %.4f degrees from its wanted direction "
+                                       "(tolerance %.4f)",
+                                       *p.tool_angle * 180.0 / geometry::kPi,
+                                       p.tool_tolerance * 180.0 / geometry::kPi));
+        }
         if (p.deviation > opt_.deviation_tolerance)
             violation(Violation::Kind::Deviation, i, p.deviation - opt_.deviation_tolerance,
                       text::format("EE is %.6f m off the path", p.deviation));
@@ -253,6 +290,15 @@ private:
                    [&] { return worst <= opt_.deviation_tolerance; });
         }
 
+        // Rule 6: a tool axis between two samples of its primitive's trace.
+        if (same_trace && a.tool_angle && b.tool_angle) {
+            const double bound = a.tool_tolerance - tool_angle_bound(a, b, dq, n, total);
+            cert_.min_tool_angle_margin = std::min(cert_.min_tool_angle_margin, bound);
+            settle(bound, [&] {
+                return *a.tool_angle <= a.tool_tolerance && *b.tool_angle <= b.tool_tolerance;
+            });
+        }
+
         // Guarantee 3: every clearance part against every obstacle, in the
         // world, through the hull of the part's ends at both samples.
         for (const auto& part : parts_) {
@@ -303,6 +349,28 @@ private:
             }
         }
         if (coarse) cert_.coarse_pairs.push_back(i);
+    }
+
+    // The tool's direction turns by at most sum |dq_k| over the joint-linear
+    // motion from a to b (each joint turns everything after it by its own
+    // angle), t of it by fraction t. A "toward" tool's wanted direction
+    // turns by at most asin(m / r) while the EE moves by m at least r from
+    // the axis, and the EE stays within the chord gap g of the chord from
+    // e_a to e_b. At fraction t the angle is at most both a's angle + t R +
+    // W and b's + (1 - t) R + W, so at most their mean: (angle_a + angle_b
+    // + R) / 2 + W, W the wanted direction's turn over the whole pair.
+    double tool_angle_bound(const Pose& a, const Pose& b, const std::vector<double>& dq, int n,
+                            double total) const {
+        double turn = 0.0;
+        for (double d : dq) turn += std::abs(d);
+        double wanted = 0.0;
+        if (std::isfinite(a.axis_distance)) {
+            const double g = kinematics::chord_gap(chain_, dq, 0, n, total);
+            const double moved = (b.ee - a.ee).norm() + g;
+            const double r = std::min(a.axis_distance, b.axis_distance) - moved;
+            wanted = r > moved ? std::asin(moved / r) : geometry::kPi;
+        }
+        return 0.5 * (*a.tool_angle + *b.tool_angle + turn) + wanted;
     }
 
     // Guarantee 1's "never jumps ahead" as a reader measures progress: by the

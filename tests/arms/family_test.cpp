@@ -7,8 +7,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <string_view>
 
 #include <modsynth/geometry/vec.h>
 #include <modsynth/kinematics/dh_chain.h>
@@ -217,4 +219,88 @@ TEST_CASE("a family builds only what robot.twists allows", "[arms]") {
                                     [](const Family* f) { return f->name() == "scara"; });
     REQUIRE(scara != families().end());
     CHECK(!(*scara)->variants(3, flat).empty());
+}
+
+namespace {
+
+const Family& family_named(std::string_view name) {
+    const auto it = std::find_if(families().begin(), families().end(),
+                                 [&](const Family* f) { return f->name() == name; });
+    REQUIRE(it != families().end());
+    return **it;
+}
+
+Vec3 tool_of(const DhChain& chain, const std::vector<double>& q) {
+    const auto segments = chain_segments(chain, q);
+    return (segments.back().end - segments.back().start).normalized();
+}
+
+}  // namespace
+
+TEST_CASE("a wrist points its tool where the target asks, on the chain its IK gives", "[arms]") {
+    const Family& wrist = family_named("wrist");
+    std::mt19937 rng(11);
+    int held = 0;
+    for (int variant : wrist.variants(5, any_twist())) {
+        for (int trial = 0; trial < 60; ++trial) {
+            const ArmDesign d = random_design(wrist, 5, variant, rng);
+            const DhChain chain = d.chain();
+            std::uniform_real_distribution<double> angle(-3.0, 3.0);
+            std::vector<double> q0;
+            for (int k = 0; k < 5; ++k) q0.push_back(angle(rng));
+            PoseTarget<double> target;
+            target.point = end_effector(chain, q0);
+            target.tool_axis = tool_of(chain, q0);
+            target.tool_tolerance = 0.05;
+            for (int branch = 0; branch < wrist.branch_count(5); ++branch) {
+                const auto q = wrist.joint_angles(d, target, branch, {0.0, 0.0});
+                if (!q) continue;
+                ++held;
+                CHECK((end_effector(chain, *q) - target.point).norm() < 1e-7);
+                CHECK((tool_of(chain, *q) - *target.tool_axis).norm() < 1e-7);
+                auto pose = wrist.pose(d.shape, target, branch, {0.0, 0.0}, PoseMargins{});
+                add_tool_limit(pose, target, 0.6);
+                CHECK(pose.limits.back().value == Approx(1.0).margin(1e-9));
+            }
+            // The same direction as free numbers: azimuth and elevation.
+            const auto pinned = wrist.pointing_along(5, variant, *target.tool_axis, 0.05);
+            REQUIRE(pinned.size() == 2);
+            PoseTarget<double> free_target;
+            free_target.point = target.point;
+            const std::vector<double> along{*pinned[0], *pinned[1]};
+            for (int branch = 0; branch < wrist.branch_count(5); ++branch)
+                if (const auto q = wrist.joint_angles(d, free_target, branch, along))
+                    CHECK((tool_of(chain, *q) - *target.tool_axis).norm() < 1e-7);
+        }
+    }
+    CHECK(held > 50);
+}
+
+TEST_CASE("a yaw-pitch hand held vertical points the tool straight down on any plane", "[arms]") {
+    const Family& yaw_pitch = family_named("yaw-pitch");
+    std::mt19937 rng(12);
+    const Vec3 down(0.0, 0.0, -1.0);
+    // Only a vertical direction is fixed whatever the design; a slanted one is not.
+    CHECK(yaw_pitch.pointing_along(4, 0, Vec3(1.0, 0.0, -1.0).normalized(), 0.05).empty());
+    CHECK(yaw_pitch.pointing_along(3, 0, down, 0.05).empty());
+    int held = 0;
+    for (int dof = 4; dof <= 6; ++dof)
+        for (int variant : yaw_pitch.variants(dof, any_twist())) {
+            const auto pinned = yaw_pitch.pointing_along(dof, variant, down, 0.05);
+            REQUIRE(static_cast<int>(pinned.size()) == dof - 3);
+            REQUIRE(pinned.back());
+            for (int trial = 0; trial < 20; ++trial) {
+                ArmDesign d = random_design(yaw_pitch, dof, variant, rng);
+                std::vector<double> along = d.along_at(0, 0.5);
+                along.back() = *pinned.back();
+                PoseTarget<double> target;
+                target.point = reachable_target(d, rng);
+                for (int branch = 0; branch < yaw_pitch.branch_count(dof); ++branch)
+                    if (const auto q = yaw_pitch.joint_angles(d, target, branch, along)) {
+                        ++held;
+                        CHECK((tool_of(d.chain(), *q) - down).norm() < 1e-7);
+                    }
+            }
+        }
+    CHECK(held > 30);
 }

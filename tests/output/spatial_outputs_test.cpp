@@ -324,6 +324,12 @@ TEST_CASE("spatial URDF: joints from the DH rows, limits, modules and ros2_contr
         CHECK(count(urdf, "<inertial>") == n + 1);
         CHECK(count(urdf, "<command_interface name=\"position\"/>") == n);
         CHECK(has(urdf, "<link name=\"ee\"/>"));
+        // The tool frame's z is the tool's axis (formats.md): the last
+        // segment, x_n here (a_n > 0), so a quarter turn about y.
+        REQUIRE(s.dh_robot->rows.back().a > 0.0);
+        CHECK(has(urdf,
+                  "<child link=\"tool\"/>\n    <origin xyz=\"0.000000 0.000000 0.000000\" "
+                  "rpy=\"0.000000 1.570796 0.000000\"/>"));
         // Joint 2 sits at (a_1, 0, d_1), turned by alpha_1 about x.
         const auto& r = s.dh_robot->rows[0];
         CHECK(has(urdf, "<origin xyz=\"" + text::format("%.6f 0.000000 %.6f", r.a, r.d) +

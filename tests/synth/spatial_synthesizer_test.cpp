@@ -3,10 +3,13 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
+#include <modsynth/control/sample.h>
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/io/spatial_task_io.h>
+#include <modsynth/kinematics/dh_chain.h>
 #include <modsynth/prove/spatial_reach_proof.h>
 #include <modsynth/task/part.h>
 #include <modsynth/verify/spatial_verifier.h>
@@ -100,4 +103,63 @@ TEST_CASE("a path at one height with twists 0 gets no yaw column", "[synth][spat
     const auto& core = s.explanation.core;
     CHECK(std::find(core.begin(), core.end(), TaskPart::trajectory(3)) != core.end());
     CHECK(std::find(core.begin(), core.end(), TaskPart::robot(RobotKey::Twists)) != core.end());
+}
+
+namespace {
+
+/// The largest angle between the solved chain's tool and the wanted
+/// direction at the trace samples of primitives with a tool axis, less
+/// their tolerance (formats.md rule 6), measured here from the chain.
+double worst_tool_excess(const modsynth::task::SpatialTask& task,
+                         const modsynth::synth::Solution& s) {
+    double worst = -1.0;
+    for (const auto& x : s.samples) {
+        if (x.phase != modsynth::control::Phase::Trace) continue;
+        const int j = modsynth::control::primitive_index(task, x);
+        const auto segments = modsynth::kinematics::chain_segments(*s.dh_robot, x.q);
+        const auto wanted = modsynth::task::wanted_tool(task, j, segments.back().end);
+        if (!wanted) continue;
+        const auto tool = (segments.back().end - segments.back().start).normalized();
+        worst = std::max(worst, std::acos(std::clamp(tool.dot(wanted->direction), -1.0, 1.0)) -
+                                    wanted->tolerance);
+    }
+    return worst;
+}
+
+}  // namespace
+
+TEST_CASE("a tool held along a direction or at an axis is designed for and certified",
+          "[synth][spatial][slow]") {
+    // Planted by the shared planter: straight down (a 4-joint arm), square
+    // into a tilted plane (a wrist), square at a pipe's axis.
+    for (const char* name : {"std-0001", "stn-0001", "stt-0001"}) {
+        const auto task = fixture(std::string(name) + ".task.json");
+        REQUIRE(modsynth::task::holds_tool(task));
+        modsynth::synth::SpatialSynthesisOptions o;
+        o.time_limit = 60.0;
+        const auto s = modsynth::synth::synthesize(task, o);
+        INFO(name << ": " << s.explanation.message);
+        REQUIRE(s.status == modsynth::synth::Status::Solved);
+        REQUIRE(s.dh_robot);
+        CHECK(s.certificate.ok);
+        CHECK(s.certificate.min_tool_angle_margin >= 0.0);
+        CHECK(worst_tool_excess(task, s) <= 1e-9);
+    }
+}
+
+TEST_CASE("a slanted tool no family can hold is not answered solved", "[synth][spatial]") {
+    // Twists 0 only: a SCARA, whose tool is a quill straight down or a flat
+    // link; a tool wanted 45 degrees from both is refused by the front stage,
+    // naming the tool axis.
+    auto task = modsynth::io::load_spatial_task(
+        modsynth::testing::source_path("tasks/spatial/scara-dispense.json"));
+    modsynth::task::ToolAxis axis;
+    axis.direction = modsynth::geometry::Vec3(1.0, 0.0, -1.0);
+    task.tool_axis = axis;
+    modsynth::synth::SpatialSynthesisOptions o;
+    o.time_limit = 10.0;
+    const auto s = modsynth::synth::synthesize(task, o);
+    REQUIRE(s.status == modsynth::synth::Status::Infeasible);
+    const auto& core = s.explanation.core;
+    CHECK(std::find(core.begin(), core.end(), TaskPart::tool_axis()) != core.end());
 }

@@ -349,3 +349,80 @@ TEST_CASE("spatial certificates are lower bounds on random travels", "[verify]")
     }
     CHECK(certified > 5);
 }
+
+namespace {
+
+/// The least of tolerance - angle over a dense replay of every pair of
+/// trace samples of a primitive with a tool axis (formats.md rule 6).
+double replayed_tool_margin(const Planted& p, int steps) {
+    double least = 1e9;
+    for (std::size_t i = 0; i + 1 < p.samples.size(); ++i) {
+        const auto& a = p.samples[i];
+        const auto& b = p.samples[i + 1];
+        if (a.phase != control::Phase::Trace || b.phase != control::Phase::Trace ||
+            a.primitive != b.primitive || a.stroke != b.stroke)
+            continue;
+        const int j = control::primitive_index(p.task, a);
+        for (int m = 0; m <= steps; ++m) {
+            const double u = double(m) / steps;
+            std::vector<double> q(a.q.size());
+            for (std::size_t k = 0; k < q.size(); ++k) q[k] = a.q[k] + u * (b.q[k] - a.q[k]);
+            const auto segs = kinematics::chain_segments(p.chain, q);
+            const Vec3 tool = (segs.back().end - segs.back().start).normalized();
+            const auto wanted = task::wanted_tool(p.task, j, segs.back().end);
+            REQUIRE(wanted);
+            const double angle = std::acos(std::clamp(tool.dot(wanted->direction), -1.0, 1.0));
+            least = std::min(least, wanted->tolerance - angle);
+        }
+    }
+    return least;
+}
+
+const char* const kPlantedTools[] = {"std-0001", "stn-0001", "stt-0001"};
+
+}  // namespace
+
+TEST_CASE("planted solutions that hold a tool axis are certified, with its margin", "[verify]") {
+    for (const char* name : kPlantedTools) {
+        const Planted p = planted(name);
+        REQUIRE(task::holds_tool(p.task));
+        const auto cert = certify(p);
+        INFO(name << ": " << first_problem(cert));
+        CHECK(cert.ok);
+        // A lower bound on what a dense replay sees, and not far below it.
+        const double replayed = replayed_tool_margin(p, 16);
+        CHECK(cert.min_tool_angle_margin >= 0.0);
+        CHECK(cert.min_tool_angle_margin <= replayed + 1e-9);
+        CHECK(cert.min_tool_angle_margin >= replayed - 0.02);
+    }
+}
+
+TEST_CASE("a tool pointing off its wanted direction is refused", "[verify]") {
+    SECTION("a fixed direction turned by twice its tolerance") {
+        Planted p = planted("stn-0001");
+        REQUIRE(p.task.tool_axis);
+        auto& axis = *p.task.tool_axis;
+        const Vec3 u = axis.direction.normalized();
+        const Vec3 side = u.unitOrthogonal();
+        axis.direction = std::cos(2 * axis.tolerance) * u + std::sin(2 * axis.tolerance) * side;
+        const auto c = certify(p);
+        CHECK_FALSE(c.ok);
+        CHECK(has(c, Violation::Kind::ToolAxis));
+        CHECK(c.min_tool_angle_margin < 0.0);
+    }
+    SECTION("toward the axis wanted away from it") {
+        Planted p = planted("stt-0001");
+        for (auto& a : p.task.tool_axes)
+            if (a) a->kind = task::ToolAxis::Kind::AwayFromAxis;
+        const auto c = certify(p);
+        CHECK(has(c, Violation::Kind::ToolAxis));
+    }
+    SECTION("without a tool axis the same motion has no tool figure") {
+        Planted p = planted("std-0001");
+        p.task.tool_axis.reset();
+        p.task.tool_axes.clear();
+        const auto c = certify(p);
+        CHECK(c.ok);
+        CHECK(std::isinf(c.min_tool_angle_margin));
+    }
+}

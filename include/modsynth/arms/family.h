@@ -104,6 +104,17 @@ public:
     /// none.
     virtual std::vector<std::vector<double>> along_grid(int dof, int variant) const = 0;
 
+    /// One end's free numbers (ArmDesign::along) that a tool wanted along
+    /// the unit `wanted` fixes whatever the rest of the design, per slot
+    /// (nothing for a slot it leaves free; an empty list when it fixes
+    /// none): a yaw-pitch hand held vertical, a wrist's direction.
+    virtual std::vector<std::optional<double>> pointing_along(int dof, int variant,
+                                                              const geometry::Vec3& wanted,
+                                                              double tolerance) const {
+        (void)dof, (void)variant, (void)wanted, (void)tolerance;
+        return {};
+    }
+
     /// The design a DH chain is, when it has this family's pattern.
     virtual std::optional<kinematics::ArmShape<double>> read(
         const kinematics::DhChain& chain) const = 0;

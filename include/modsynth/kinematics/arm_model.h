@@ -9,6 +9,7 @@
 // The families themselves (a yaw column with pitch links, a SCARA, ...) are
 // plug-ins of the arms stage (arms/family.h); this is the part of them the
 // stages below need.
+#include <cmath>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -33,11 +34,14 @@ struct ArmShape {
 };
 
 /// Where a pose puts its EE, and which way its tool should point there
-/// (for families that hold the tool's direction).
+/// (formats.md "Tool orientation"; only while tracing a primitive that has
+/// a tool_axis). A family that can point its tool anywhere (a wrist) points
+/// it so; the others are held to it by add_tool_limit().
 template <class T>
 struct PoseTarget {
     Point3<T> point;
     std::optional<Point3<T>> tool_axis;  ///< unit
+    double tool_tolerance = 0.0;         ///< rad
 };
 
 /// A quantity of a pose that must stay within bounds for the pose to mean
@@ -68,6 +72,25 @@ struct ArmPose {
     std::vector<Point3<T>> joints;
     std::vector<PoseLimit<T>> limits;
 };
+
+/// m per unit of cosine: how the guesses weigh the tool's angle against the
+/// clearances.
+inline constexpr double kToolLimitScale = 0.1;
+
+/// Holds a pose's tool (its last segment, formats.md) within `share` of the
+/// target's tolerance of the wanted direction, as a limit on the cosine of
+/// the angle between them: the rest of the tolerance is the room the
+/// motion between constrained points and the verifier's bound need.
+template <class T>
+void add_tool_limit(ArmPose<T>& pose, const PoseTarget<T>& target, double share) {
+    using std::sqrt;
+    if (!target.tool_axis || pose.points.size() < 2) return;
+    const Point3<T> d = pose.points.back() - pose.points[pose.points.size() - 2];
+    const T n2 = d.squaredNorm();
+    const T n = n2 > T(1e-24) ? T(sqrt(n2)) : T(1e-12);
+    pose.limits.push_back({T(d.dot(*target.tool_axis) / n), std::cos(share * target.tool_tolerance),
+                           2.0, kToolLimitScale, "tool within its tolerance of its direction"});
+}
 
 /// A linear condition on a design alone, lower <= base . b + values . v <=
 /// upper (a SCARA's EE at the path's height): constrained once, not per

@@ -52,6 +52,9 @@ struct SpatialMargins {
     /// objective: a transition costs time, and without it the numbers at a
     /// join are free to differ for nothing.
     double sweep_weight = 1e-3;
+    /// The share of a tool axis's tolerance the tool keeps within at the
+    /// constrained points (kinematics::add_tool_limit).
+    double tool_share = 0.6;
 
     kinematics::PoseMargins pose() const { return {elbow_cos, axis}; }
 };
@@ -62,6 +65,10 @@ struct FamilyBounds {
     std::pair<double, double> along{0.0, 0.0};      ///< per free number
     std::vector<double> length_weights;             ///< the chain's length per value
     std::vector<kinematics::DesignRow> rows;        ///< once, on the design alone
+    /// Per primitive, per free number of its ends (start values then end
+    /// values): held at the start design's value (a tool axis fixes it,
+    /// arms/pointing.h). Empty: none is.
+    std::vector<std::vector<bool>> fixed_along;
 };
 
 struct SpatialProblem {

@@ -16,6 +16,8 @@ public:
     /// `obstacle` at `primitive`.
     void obstacle(int dof, int obstacle, int link, int primitive);
     void self_collision(int dof, int primitive);
+    /// The tool off its wanted direction (formats.md rule 6).
+    void tool_axis(int dof, int primitive);
     /// No pose reached a point of `primitive`, or (transition) the
     /// transition after it.
     void out_of_reach(int dof, int primitive, bool transition);
@@ -36,7 +38,15 @@ public:
     std::string describe_with(const std::function<std::string(int)>& name) const;
 
 private:
-    enum class Kind { Obstacle, SelfCollision, Reach, TransitionReach, Travel, Refinement };
+    enum class Kind {
+        Obstacle,
+        SelfCollision,
+        ToolAxis,
+        Reach,
+        TransitionReach,
+        Travel,
+        Refinement
+    };
     struct Tally {
         int count = 0;
         int first = -1;  ///< the primitives where it happened, first and last

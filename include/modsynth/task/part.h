@@ -46,6 +46,7 @@ public:
         BaseRegions,  ///< base_regions: all of them, where the base may stand
         BaseRegion,   ///< base_regions[i]
         Robot,        ///< robot.KEY, or robot.KEY[i] for an entry of a list
+        ToolAxis,     ///< tool_axis: the task's own, for every primitive without one
     };
 
     static TaskPart trajectory(int j) { return TaskPart(Kind::Primitive, -1, j); }
@@ -55,6 +56,7 @@ public:
     static TaskPart obstacle(int i) { return TaskPart(Kind::Obstacle, -1, i); }
     static TaskPart base_regions() { return TaskPart(Kind::BaseRegions, -1, -1); }
     static TaskPart base_region(int i) { return TaskPart(Kind::BaseRegion, -1, i); }
+    static TaskPart tool_axis() { return TaskPart(Kind::ToolAxis, -1, -1); }
     static TaskPart robot(RobotKey key, int i = -1) {
         TaskPart p(Kind::Robot, -1, i);
         p.key_ = key;

@@ -12,7 +12,9 @@
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/geometry/vec.h>
 #include <modsynth/geometry/vec3.h>
+#include <modsynth/task/part.h>
 #include <modsynth/task/task.h>
+#include <modsynth/task/tool_axis.h>
 
 namespace modsynth::task {
 
@@ -64,7 +66,49 @@ struct SpatialTask {
     /// Empty: written with `trajectory`, one stroke. Otherwise (written with
     /// `strokes`) the index in `trajectory` of each stroke's first primitive.
     std::vector<int> stroke_starts;
+    /// formats.md "Tool orientation": the task's own tool axis, for every
+    /// primitive without one, and each primitive's as written (empty: no
+    /// primitive gives one). tool_axis_of() resolves them.
+    std::optional<ToolAxis> tool_axis;
+    std::vector<std::optional<ToolAxis>> tool_axes;
 };
+
+/// The tool axis primitive j is traced with: its own, else the task's;
+/// nullptr where the tool is free.
+inline const ToolAxis* tool_axis_of(const SpatialTask& task, int j) {
+    if (!task.tool_axes.empty()) {
+        const auto& own = task.tool_axes[static_cast<std::size_t>(j)];
+        if (own) return &*own;
+    }
+    return task.tool_axis ? &*task.tool_axis : nullptr;
+}
+
+/// Whether any primitive is traced with a tool axis.
+inline bool holds_tool(const SpatialTask& task) {
+    if (task.tool_axis) return true;
+    for (const auto& a : task.tool_axes)
+        if (a) return true;
+    return false;
+}
+
+/// Which way the tool should point with the EE at `ee` on primitive j, and
+/// how far it may be off.
+struct WantedTool {
+    geometry::Vec3 direction = -geometry::Vec3::UnitZ();  ///< unit
+    double tolerance = kDefaultToolTolerance;
+};
+
+/// Nothing where primitive j leaves the tool free, or where `ee` lies on
+/// the axis a "toward" tool points at (no direction is wanted there: the
+/// verifier refuses such a pose, see has_tool_axis()).
+std::optional<WantedTool> wanted_tool(const SpatialTask& task, int j, const geometry::Vec3& ee);
+inline bool has_tool_axis(const SpatialTask& task, int j) {
+    return tool_axis_of(task, j) != nullptr;
+}
+
+/// The part that names primitive j's tool axis: its own
+/// (`trajectory[j].tool_axis`, `strokes[s][i].tool_axis`) or the task's.
+TaskPart tool_axis_part(const SpatialTask& task, int j);
 
 /// Joint counts of spatial chains (formats.md: each 3 to 6).
 constexpr int kMinSpatialDof = 3;

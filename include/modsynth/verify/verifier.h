@@ -2,6 +2,7 @@
 // Certified verification of a sampled motion: every guarantee of formats.md,
 // checked at the samples and proved between them with the second-order
 // bounds of notes/certified-verification.md.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -10,7 +11,7 @@
 namespace modsynth::verify {
 
 struct Violation {
-    enum class Kind { Structure, Deviation, Clearance, SelfCollision, JointStep, Order };
+    enum class Kind { Structure, Deviation, Clearance, SelfCollision, JointStep, Order, ToolAxis };
     Kind kind = Kind::Structure;
     int sample = -1;  ///< first sample of the offending pair, -1 for the robot itself
     /// Primitive traced there (or left, in a transition or travel) as an
@@ -34,6 +35,10 @@ struct Certificate {
     double min_self_clearance = 0.0;
     double max_deviation = 0.0;
     double max_joint_step = 0.0;
+    /// rad: certified lower bound on a tool axis's tolerance less the
+    /// tool's angle from its wanted direction, over every primitive traced
+    /// with one (formats.md rule 6); +inf when no primitive has one.
+    double min_tool_angle_margin = std::numeric_limits<double>::infinity();
     /// Violations at the samples themselves: real counterexamples.
     std::vector<Violation> violations;
     /// Sample pairs whose bound fails only because they are far apart:

@@ -319,6 +319,20 @@ public:
                       quill       ? length >= spec.tool_length - e
                       : hands > 0 ? hand >= spec.tool_length + (hands - 1) * lo
                                   : a2 >= spec.tool_length - e);
+        // The quill points straight down and the links lie flat, whatever
+        // the design: a tool axis asks for that direction within its
+        // tolerance at every sampled point.
+        for (std::size_t j = 0; j < c.points.size() && task::holds_tool(c.task); ++j) {
+            const int prim = static_cast<int>(j);
+            if (!task::has_tool_axis(c.task, prim)) continue;
+            const task::TaskPart tool = task::tool_axis_part(c.task, prim);
+            for (const Vec3& q : c.points[j])
+                if (const auto w = task::wanted_tool(c.task, prim, q))
+                    p.require({tool, twists},
+                              quill
+                                  ? Term(-w->direction.z()) >= std::cos(w->tolerance) - e
+                                  : Term(std::abs(w->direction.z())) <= std::sin(w->tolerance) + e);
+        }
         const Term height = bz + column - length;
         const Term outer = a1 + a2 + hand;
         const Term inner_a = a1 - a2 - hand, inner_b = a2 - a1 - hand;

@@ -20,6 +20,8 @@
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
 
+#include "yaw_pitch_parts.h"
+
 namespace modsynth::arms {
 namespace {
 
@@ -92,6 +94,136 @@ ArmPose<T> pose_of(const ArmShape<T>& shape, const PoseTarget<T>& target, int br
         {p.elbow_cos, -m.elbow_cos, m.elbow_cos, shorter, "elbow from its fold and stretch"});
     out.limits.push_back({p.axis_distance, m.axis, kInf, 1.0, "path off the column's axis"});
     return out;
+}
+
+}  // namespace
+
+// The conditions of the pattern: the links' bounds and the tool, and at
+// every sampled point the wrist's annulus |a_2 - a_3| - hand <= |p - S|
+// <= a_2 + a_3 + hand about the shoulder S = base + d_1 z, and the path
+// off the column's axis.
+smt::Pattern yaw_pitch_reach(const PatternContext& c) {
+    smt::Pattern p;
+    const auto& spec = c.task.robot;
+    const double e = c.slack;
+    const double lo = spec.min_link_length - e, hi = spec.max_link_length + e;
+    const task::TaskPart min_link = task::TaskPart::robot(task::RobotKey::MinLinkLength);
+    const task::TaskPart max_link = task::TaskPart::robot(task::RobotKey::MaxLinkLength);
+    const Term bx = Term::variable("base_x"), by = Term::variable("base_y"),
+               bz = Term::variable("base_z");
+    const int col = column_of(c.variant);
+    const Term column = col == 0 ? Term(0.0) : Term::variable("d1");
+    if (col > 0) p.require({min_link, max_link}, column >= lo && column <= hi);
+    if (col < 0) p.require({min_link, max_link}, column <= -lo && column >= -hi);
+    const Term a2 = Term::variable("a2"), a3 = Term::variable("a3");
+    for (const Term& a : {a2, a3}) {
+        p.require(a >= 0.0);
+        p.require({min_link}, a >= lo);
+        p.require({max_link}, a <= hi);
+    }
+    const int hands = c.dof - 3;
+    Term hand = 0.0;
+    if (hands > 0) {
+        hand = Term::variable("hand");
+        p.require({min_link}, hand >= hands * lo);
+        p.require({max_link}, hand <= hands * hi);
+    }
+    // The tool is part of the last link.
+    if (spec.tool_length > 0.0)
+        p.require(
+            {task::TaskPart::robot(task::RobotKey::ToolLength)},
+            hands > 0 ? hand >= spec.tool_length + (hands - 1) * lo : a3 >= spec.tool_length - e);
+    const Term sz = bz + column;
+    const Term outer = a2 + a3 + hand;
+    const Term inner_a = a2 - a3 - hand, inner_b = a3 - a2 - hand;
+    const double axis = std::max(0.0, c.margins.axis - e);
+    for (std::size_t j = 0; j < c.points.size(); ++j) {
+        const task::TaskPart part = task::primitive_part(c.task, static_cast<int>(j));
+        for (const Vec3& q : c.points[j]) {
+            const Term dx = q.x() - bx, dy = q.y() - by, dz = q.z() - sz;
+            const Term d2 = dx * dx + dy * dy + dz * dz;
+            p.require({part}, d2 <= outer * outer + e);
+            p.require({part}, inner_a <= 0.0 || d2 >= inner_a * inner_a - e);
+            p.require({part}, inner_b <= 0.0 || d2 >= inner_b * inner_b - e);
+            p.require({part}, dx * dx + dy * dy >= axis * axis);
+        }
+    }
+    return p;
+}
+
+std::optional<ArmShape<double>> yaw_pitch_draw(const DrawContext& c, std::mt19937& rng,
+                                               int candidate) {
+    const auto& spec = c.task.robot;
+    const double lo = spec.min_link_length, hi = spec.max_link_length;
+    const int hands = c.dof - 3;
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    kinematics::YawPitchArm arm;
+    arm.column_twist = twist_of(c.variant);
+    for (int i = 0; i < 3; ++i)
+        arm.base[i] = c.base_box.min[i] + u(rng) * (c.base_box.max[i] - c.base_box.min[i]);
+    const int sign = column_of(c.variant);
+    if (sign != 0) {
+        // Half the draws aim the shoulder at the path's heights.
+        double mag = lo + u(rng) * (hi - lo);
+        if (candidate % 2 == 1) {
+            const double z =
+                c.path_min.z() - 0.2 + u(rng) * (c.path_max.z() - c.path_min.z() + 0.4);
+            const double want = sign * (z - arm.base.z());
+            if (want >= lo && want <= hi) mag = want;
+        }
+        arm.column = sign * mag;
+    }
+    const Vec3 shoulder = arm.shoulder();
+    double far = 0.0, close = kInf;
+    for (const Vec3& p : c.probe) {
+        const double r = (p - shoulder).norm();
+        far = std::max(far, r);
+        close = std::min(close, r);
+    }
+    double hand = 0.0;
+    std::vector<double> hand_links;
+    for (int h = 0; h < hands; ++h) {
+        hand_links.push_back(lo + u(rng) * (std::min(hi, std::max(lo, 0.35)) - lo));
+        hand += hand_links.back();
+    }
+    const double need = std::max(2.0 * lo, 1.01 * far - (hands > 0 ? u(rng) * hand : 0.0));
+    const double sum = std::min(2.0 * hi, need + u(rng) * std::max(0.02, 0.5 * need));
+    const double diff = (2.0 * u(rng) - 1.0) * std::max(0.0, 0.9 * (close + hand));
+    arm.links = {std::clamp(0.5 * (sum + diff), lo, hi), std::clamp(0.5 * (sum - diff), lo, hi)};
+    for (double a : hand_links) arm.links.push_back(a);
+    arm.links.back() = std::max(arm.links.back(), std::min(hi, spec.tool_length));
+    ArmShape<double> s;
+    s.dof = c.dof;
+    s.variant = c.variant;
+    s.base = arm.base;
+    if (sign != 0) s.values.push_back(arm.column);
+    s.values.insert(s.values.end(), arm.links.begin(), arm.links.end());
+    return s;
+}
+
+namespace {
+
+// A yaw-pitch arm keeps its last segment in the vertical plane through the
+// column and the EE, so a tool axis asks the plane to pass within its
+// tolerance of the wanted direction u at every sampled point q:
+// |u_h x h| <= sin(th) |h|, h the horizontal offset of q from the base.
+void add_plane_tool_conditions(const PatternContext& c, smt::Pattern& p) {
+    if (!task::holds_tool(c.task)) return;
+    const Term bx = Term::variable("base_x"), by = Term::variable("base_y");
+    for (std::size_t j = 0; j < c.points.size(); ++j) {
+        const int prim = static_cast<int>(j);
+        if (!task::has_tool_axis(c.task, prim)) continue;
+        const task::TaskPart part = task::tool_axis_part(c.task, prim);
+        for (const Vec3& q : c.points[j]) {
+            const auto wanted = task::wanted_tool(c.task, prim, q);
+            if (!wanted) continue;
+            const Vec3& u = wanted->direction;
+            const double sin_th = std::sin(wanted->tolerance);
+            const Term hx = q.x() - bx, hy = q.y() - by;
+            const Term cross = u.x() * hy - u.y() * hx;
+            p.require({part}, cross * cross <= sin_th * sin_th * (hx * hx + hy * hy) + c.slack);
+        }
+    }
 }
 
 class YawPitchFamily final : public Family {
@@ -175,108 +307,26 @@ public:
     }
     Vec3 reach_centre(const ArmDesign& d) const override { return arm_of(d.shape).shoulder(); }
 
-    // The conditions of the pattern: the links' bounds and the tool, and at
-    // every sampled point the wrist's annulus |a_2 - a_3| - hand <= |p - S|
-    // <= a_2 + a_3 + hand about the shoulder S = base + d_1 z, and the path
-    // off the column's axis.
     smt::Pattern pattern(const PatternContext& c) const override {
-        smt::Pattern p;
-        const auto& spec = c.task.robot;
-        const double e = c.slack;
-        const double lo = spec.min_link_length - e, hi = spec.max_link_length + e;
-        const task::TaskPart min_link = task::TaskPart::robot(task::RobotKey::MinLinkLength);
-        const task::TaskPart max_link = task::TaskPart::robot(task::RobotKey::MaxLinkLength);
-        const Term bx = Term::variable("base_x"), by = Term::variable("base_y"),
-                   bz = Term::variable("base_z");
-        const int col = column_of(c.variant);
-        const Term column = col == 0 ? Term(0.0) : Term::variable("d1");
-        if (col > 0) p.require({min_link, max_link}, column >= lo && column <= hi);
-        if (col < 0) p.require({min_link, max_link}, column <= -lo && column >= -hi);
-        const Term a2 = Term::variable("a2"), a3 = Term::variable("a3");
-        for (const Term& a : {a2, a3}) {
-            p.require(a >= 0.0);
-            p.require({min_link}, a >= lo);
-            p.require({max_link}, a <= hi);
-        }
-        const int hands = c.dof - 3;
-        Term hand = 0.0;
-        if (hands > 0) {
-            hand = Term::variable("hand");
-            p.require({min_link}, hand >= hands * lo);
-            p.require({max_link}, hand <= hands * hi);
-        }
-        // The tool is part of the last link.
-        if (spec.tool_length > 0.0)
-            p.require({task::TaskPart::robot(task::RobotKey::ToolLength)},
-                      hands > 0 ? hand >= spec.tool_length + (hands - 1) * lo
-                                : a3 >= spec.tool_length - e);
-        const Term sz = bz + column;
-        const Term outer = a2 + a3 + hand;
-        const Term inner_a = a2 - a3 - hand, inner_b = a3 - a2 - hand;
-        const double axis = std::max(0.0, c.margins.axis - e);
-        for (std::size_t j = 0; j < c.points.size(); ++j) {
-            const task::TaskPart part = task::primitive_part(c.task, static_cast<int>(j));
-            for (const Vec3& q : c.points[j]) {
-                const Term dx = q.x() - bx, dy = q.y() - by, dz = q.z() - sz;
-                const Term d2 = dx * dx + dy * dy + dz * dz;
-                p.require({part}, d2 <= outer * outer + e);
-                p.require({part}, inner_a <= 0.0 || d2 >= inner_a * inner_a - e);
-                p.require({part}, inner_b <= 0.0 || d2 >= inner_b * inner_b - e);
-                p.require({part}, dx * dx + dy * dy >= axis * axis);
-            }
-        }
+        smt::Pattern p = yaw_pitch_reach(c);
+        add_plane_tool_conditions(c, p);
         return p;
     }
 
     std::optional<ArmShape<double>> draw(const DrawContext& c, std::mt19937& rng,
                                          int candidate) const override {
-        const auto& spec = c.task.robot;
-        const double lo = spec.min_link_length, hi = spec.max_link_length;
-        const int hands = c.dof - 3;
-        std::uniform_real_distribution<double> u(0.0, 1.0);
-        kinematics::YawPitchArm arm;
-        arm.column_twist = twist_of(c.variant);
-        for (int i = 0; i < 3; ++i)
-            arm.base[i] = c.base_box.min[i] + u(rng) * (c.base_box.max[i] - c.base_box.min[i]);
-        const int sign = column_of(c.variant);
-        if (sign != 0) {
-            // Half the draws aim the shoulder at the path's heights.
-            double mag = lo + u(rng) * (hi - lo);
-            if (candidate % 2 == 1) {
-                const double z =
-                    c.path_min.z() - 0.2 + u(rng) * (c.path_max.z() - c.path_min.z() + 0.4);
-                const double want = sign * (z - arm.base.z());
-                if (want >= lo && want <= hi) mag = want;
-            }
-            arm.column = sign * mag;
-        }
-        const Vec3 shoulder = arm.shoulder();
-        double far = 0.0, close = kInf;
-        for (const Vec3& p : c.probe) {
-            const double r = (p - shoulder).norm();
-            far = std::max(far, r);
-            close = std::min(close, r);
-        }
-        double hand = 0.0;
-        std::vector<double> hand_links;
-        for (int h = 0; h < hands; ++h) {
-            hand_links.push_back(lo + u(rng) * (std::min(hi, std::max(lo, 0.35)) - lo));
-            hand += hand_links.back();
-        }
-        const double need = std::max(2.0 * lo, 1.01 * far - (hands > 0 ? u(rng) * hand : 0.0));
-        const double sum = std::min(2.0 * hi, need + u(rng) * std::max(0.02, 0.5 * need));
-        const double diff = (2.0 * u(rng) - 1.0) * std::max(0.0, 0.9 * (close + hand));
-        arm.links = {std::clamp(0.5 * (sum + diff), lo, hi),
-                     std::clamp(0.5 * (sum - diff), lo, hi)};
-        for (double a : hand_links) arm.links.push_back(a);
-        arm.links.back() = std::max(arm.links.back(), std::min(hi, spec.tool_length));
-        ArmShape<double> s;
-        s.dof = c.dof;
-        s.variant = c.variant;
-        s.base = arm.base;
-        if (sign != 0) s.values.push_back(arm.column);
-        s.values.insert(s.values.end(), arm.links.begin(), arm.links.end());
-        return s;
+        return yaw_pitch_draw(c, rng, candidate);
+    }
+
+    std::vector<std::optional<double>> pointing_along(int dof, int variant, const Vec3& wanted,
+                                                      double tolerance) const override {
+        // Every link stays in a vertical plane through the column, so only a
+        // vertical tool is held whatever the plane: by the last hand link.
+        const int hands = dof - 3;
+        if (hands <= 0 || std::hypot(wanted.x(), wanted.y()) > std::sin(0.5 * tolerance)) return {};
+        std::vector<std::optional<double>> out(static_cast<std::size_t>(hands));
+        out.back() = (wanted.z() < 0.0 ? -1.0 : 1.0) * twist_of(variant) * geometry::kPi / 2.0;
+        return out;
     }
 
     std::vector<std::vector<double>> along_grid(int dof, int) const override {
