@@ -71,4 +71,13 @@ check_spatial "$tmp/bottle.json" cylinder
 "$bin" import --text "Hi" --height 0.04 -o "$tmp/text.json" --cylinder 0.5,0,0.3,0,0,1,0.1 \
     >"$tmp/out" 2>"$tmp/err" || fail "--text --cylinder: exit $?: $(cat "$tmp/err")"
 check_spatial "$tmp/text.json" cylinder
+# A line nearly along the axis, turned a hundredth of a degree: a helix of
+# a pitch no task may hold becomes its chord, within the tolerance, never
+# a refusal naming a part the user did not write.
+printf '%s' '<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100"><line x1="50" y1="10" x2="50" y2="90" stroke="black"/><line x1="20" y1="50" x2="80" y2="60" stroke="black"/></svg>' >"$tmp/axial.svg"
+for turn in 0.01 0.00001 45; do
+    "$bin" import "$tmp/axial.svg" -o "$tmp/axial.json" --cylinder 0,0,0,0,0,1,0.1 --rotate "$turn" \
+        >"$tmp/out" 2>"$tmp/err" || fail "--cylinder --rotate $turn: exit $?: $(cat "$tmp/err")"
+    "$bin" validate "$tmp/axial.json" >/dev/null 2>&1 || fail "--cylinder --rotate $turn: the task does not validate"
+done
 finish import_surface
