@@ -123,6 +123,7 @@ drawing::Drawing text_drawing(const ImportArgs& a) {
 constexpr double kWatchdogMargin = 0.6;
 
 int run_import(ImportArgs& a) {
+    io::check_outputs({{"-o", a.output}, {"--reply", a.reply}}, {a.input});
     const auto start = drawing::Clock::now();
     const auto limit = std::chrono::duration_cast<drawing::Clock::duration>(
         std::chrono::duration<double>(a.time_limit));
@@ -373,6 +374,7 @@ Command add_export_svg(CLI::App& parent) {
     sub->add_option("TASK", *input, "task file (trajectory or strokes)")->required();
     sub->add_option("-o,--output", *output, "SVG file to write")->required();
     return {sub, [input, output] {
+                io::check_outputs({{"-o", *output}}, {*input});
                 const auto strokes = task_strokes(*input);
                 io::write_file_atomically(*output, drawing::write_svg(strokes));
                 std::printf("%s -> %s: %zu stroke%s\n", input->c_str(), output->c_str(),

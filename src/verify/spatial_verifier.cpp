@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <modsynth/control/spatial_samples.h>
 #include <modsynth/geometry/distance3.h>
@@ -56,11 +57,19 @@ public:
         check_structure();
         if (!structure_ok_) return finish();
         check_order();
-        poses_.reserve(samples_.size());
+        // A pose at a time (twice each: once for the samples, once for the
+        // pairs, in that order as before): memory stays that of the
+        // samples, not of their frames, on a motion of a million samples.
         for (std::size_t i = 0; i < samples_.size(); ++i)
-            poses_.push_back(pose(static_cast<int>(i)));
-        for (std::size_t i = 0; i < samples_.size(); ++i) check_sample(static_cast<int>(i));
-        for (std::size_t i = 0; i + 1 < samples_.size(); ++i) check_pair(static_cast<int>(i));
+            check_sample(static_cast<int>(i), pose(static_cast<int>(i)));
+        if (!samples_.empty()) {
+            Pose a = pose(0);
+            for (std::size_t i = 0; i + 1 < samples_.size(); ++i) {
+                Pose b = pose(static_cast<int>(i) + 1);
+                check_pair(static_cast<int>(i), a, b);
+                a = std::move(b);
+            }
+        }
         check_fallback();
         return finish();
     }
@@ -240,8 +249,7 @@ private:
         return geometry::point_segment(p.ee, s.start, s.end) - diameter();
     }
 
-    void check_sample(int i) {
-        const Pose& p = poses_[static_cast<std::size_t>(i)];
+    void check_sample(int i, const Pose& p) {
         cert_.max_deviation = std::max(cert_.max_deviation, p.deviation);
         if (p.deviation > opt_.deviation_tolerance)
             violation(Violation::Kind::Deviation, i, p.deviation - opt_.deviation_tolerance,
@@ -283,11 +291,9 @@ private:
         return p.frames[static_cast<std::size_t>(k)].inverse() * x;
     }
 
-    void check_pair(int i) {
+    void check_pair(int i, const Pose& a, const Pose& b) {
         const Sample& sa = samples_[static_cast<std::size_t>(i)];
         const Sample& sb = samples_[static_cast<std::size_t>(i) + 1];
-        const Pose& a = poses_[static_cast<std::size_t>(i)];
-        const Pose& b = poses_[static_cast<std::size_t>(i) + 1];
         const int n = chain_.dof();
 
         std::vector<double> dq(static_cast<std::size_t>(n));
@@ -423,7 +429,6 @@ private:
     std::vector<geometry::ObstacleCore> cores_;
     Certificate cert_;
     bool structure_ok_ = false;
-    std::vector<Pose> poses_;
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <utility>
 
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
@@ -51,11 +52,19 @@ public:
         check_structure();
         if (!structure_ok_) return finish();
         check_order();
-        poses_.reserve(samples_.size());
+        // A pose at a time (twice each: once for the samples, once for the
+        // pairs, in that order as before): memory stays that of the
+        // samples, not of their poses, on a motion of a million samples.
         for (std::size_t i = 0; i < samples_.size(); ++i)
-            poses_.push_back(pose(static_cast<int>(i)));
-        for (std::size_t i = 0; i < samples_.size(); ++i) check_sample(static_cast<int>(i));
-        for (std::size_t i = 0; i + 1 < samples_.size(); ++i) check_pair(static_cast<int>(i));
+            check_sample(static_cast<int>(i), pose(static_cast<int>(i)));
+        if (!samples_.empty()) {
+            Pose a = pose(0);
+            for (std::size_t i = 0; i + 1 < samples_.size(); ++i) {
+                Pose b = pose(static_cast<int>(i) + 1);
+                check_pair(static_cast<int>(i), a, b);
+                a = std::move(b);
+            }
+        }
         return finish();
     }
 
@@ -205,8 +214,7 @@ private:
         return p;
     }
 
-    void check_sample(int i) {
-        const Pose& p = poses_[i];
+    void check_sample(int i, const Pose& p) {
         const int n = robot_.dof();
         const kinematics::ClearanceRule rule{robot_.link_diameter};
         cert_.max_deviation = std::max(cert_.max_deviation, p.deviation);
@@ -233,11 +241,9 @@ private:
         }
     }
 
-    void check_pair(int i) {
+    void check_pair(int i, const Pose& a, const Pose& b) {
         const Sample& sa = samples_[i];
         const Sample& sb = samples_[i + 1];
-        const Pose& a = poses_[i];
-        const Pose& b = poses_[i + 1];
         const int n = robot_.dof();
         const kinematics::ClearanceRule rule{robot_.link_diameter};
 
@@ -339,7 +345,6 @@ private:
     VerifyOptions opt_;
     Certificate cert_;
     bool structure_ok_ = false;
-    std::vector<Pose> poses_;
 };
 
 }  // namespace

@@ -1,13 +1,16 @@
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/check_timeout.h>
 #include <modsynth/io/spatial_task_io.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
@@ -178,6 +181,13 @@ TEST_CASE("bad spatial input is refused naming the part", "[task]") {
         {"/trajectory/3/pitch", "steep", false, "trajectory[3].pitch", "a number"},
         {"/trajectory/3/turns", 0, false, "trajectory[3].turns", "greater than 0"},
         {"/trajectory/3/turns", 5000, false, "trajectory[3].turns", "more than the 1000"},
+        // Zero length refused by name, as a line's is.
+        {"/trajectory/3/turns", 1e-12, false, "trajectory[3]", "helix has zero length"},
+        {"/trajectory/3/turns", 5e-324, false, "trajectory[3]", "helix has zero length"},
+        {"/trajectory/3/pitch", 0.0049999, false, "trajectory[3].pitch", "got 0.0049999 m"},
+        {"/robot/joint_limits/jerk", json::array({5, 5}), false, "robot.joint_limits.jerk",
+         "has 2 values"},
+        {"/robot/joint_limits/jerk", 1e-9, false, "robot.joint_limits.jerk", "outside the"},
         {"/trajectory/3/center", json::array({0.45, 0.2, 0.31}), false, "trajectory[3].center",
          "not level with start"},
         {"/trajectory/3/end", json::array({0.4, 0.2, 0.34}), false, "trajectory[3].end",
@@ -274,4 +284,48 @@ TEST_CASE("every invalid spatial fixture is refused naming its part", "[task]") 
         CHECK(e.part() == want.at("part").get<std::string>());
         CHECK_THAT(e.what(), Contains(want.at("message_contains").get<std::string>()));
     }
+}
+
+TEST_CASE("a spatial task's jerk limits are read and written as the plane's", "[task]") {
+    json doc = full_doc();
+    doc["robot"]["joint_limits"]["jerk"] = 30;
+    const SpatialTask t = parse_spatial_task(doc);
+    REQUIRE(t.robot.joint_limits);
+    CHECK(t.robot.joint_limits->jerk == std::vector<double>{30.0});
+    CHECK(to_json(t)["robot"]["joint_limits"]["jerk"] == 30.0);
+    doc["robot"]["joint_limits"]["jerk"] = json::array({1, 2, 3, 4});
+    const SpatialTask per_joint = parse_spatial_task(doc);
+    CHECK(per_joint.robot.joint_limits->jerk == std::vector<double>{1, 2, 3, 4});
+    CHECK(per_joint.robot.dof == std::vector<int>{4});
+    CHECK(to_json(parse_spatial_task(to_json(per_joint))) == to_json(per_joint));
+}
+
+TEST_CASE("checking a spatial path against its obstacles stops at the reader's deadline",
+          "[task]") {
+    // A helix of a thousand turns round posts that nearly touch it all
+    // along: each pair costs tens of milliseconds of checking.
+    json doc = json::parse(R"({"format": "modsynth-task/1", "name": "coil", "space": "3d",
+        "trajectory": [{"type": "helix", "start": [0.12, 0, 0.1], "center": [0, 0, 0.1],
+                        "axis": [0, 0, 1], "direction": "ccw", "pitch": 0.005, "turns": 1000}],
+        "base_regions": [{"min": [-0.05, -0.05, -0.9], "max": [0.05, 0.05, -0.9]}]})");
+    for (int i = 0; i < 400; ++i)
+        doc["obstacles"].push_back({{"type", "capsule"},
+                                    {"a", {0, 0, 0}},
+                                    {"b", {0, 0, 5.2}},
+                                    {"radius", 0.1199 - 1e-6 * i}});
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        parse_spatial_task(doc, modsynth::run::Deadline::in(0.3));
+        FAIL("checked to the end");
+    } catch (const modsynth::io::CheckTimeout& e) {
+        CHECK(e.task_name() == "coil");
+        CHECK_THAT(e.what(), Contains("checking trajectory[0] against obstacles["));
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    CHECK(seconds < 1.5);
+    // Without a deadline the same checks end, and a post away from the
+    // path passes them.
+    doc["obstacles"] = json::array({doc["obstacles"][0]});
+    CHECK(parse_spatial_task(doc).obstacles.size() == 1);
 }
