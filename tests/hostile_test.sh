@@ -300,6 +300,15 @@ for cmd in "validate --time-limit 2" "solve -o $tmp/coil.sol.json --time-limit 2
     grep -q "time limit" "$tmp/out" || fail "$1 of a long coil does not say why: $(head -c 300 "$tmp/out")"
 done
 grep -q '"status": "unknown"' "$tmp/coil.sol.json" || fail "solve of a long coil: $(head -c 300 "$tmp/coil.sol.json")"
+# Commands that take planar tasks only refuse it before checking it.
+for cmd in "baseline" "compare" "export-svg -o $tmp/coil.svg"; do
+    set -- $cmd
+    start=$(date +%s%N)
+    expect_exit 2 "$1 of a long coil" "$bin" "$1" "$tmp/coil.json" "${@:2}"
+    ms=$(( ($(date +%s%N) - start) / 1000000 ))
+    [ "$ms" -lt 1500 ] || fail "$1 of a long coil: $ms ms to refuse a spatial task"
+    expect_message "$1 of a long coil" "spatial tasks are not supported by $1"
+done
 
 # A spatial solution's robot within the task limits: no 309-digit base.
 python3 - "$tmp/good.json" "$tmp/far-base.json" <<'PY'
