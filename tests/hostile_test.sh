@@ -320,4 +320,44 @@ PY
 expect_exit 2 "a base at 1e308" "$bin" certify "$rose" "$tmp/far-base.json"
 expect_message "a base at 1e308" "robot.base[0]: 1e+308 m is beyond"
 
+
+# Jerk limits hold in space as in the plane: export hands a controller no
+# timing that breaks the task's jerk, and times a motion saved without one
+# within it (a CSV at 602 rad/s^3 for a limit of 1e-6 once).
+spatial=$root/tests/fixtures/spatial/s3-0001.task.json
+if "$bin" solve "$spatial" -o "$tmp/s3.json" --quiet --time-limit 60 >/dev/null 2>&1; then
+    python3 - "$spatial" "$tmp/s3.json" "$tmp/s3-jerk.task.json" "$tmp/s3-untimed.json" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+t.setdefault("robot", {})["joint_limits"] = {"velocity": 2, "acceleration": 5, "jerk": 0.5}
+json.dump(t, open(sys.argv[3], "w"))
+s = json.load(open(sys.argv[2]))
+for x in s["samples"]:
+    x.pop("qd", None)
+    x.pop("qdd", None)
+json.dump(s, open(sys.argv[4], "w"))
+PY
+    expect_exit 2 "export of a timing past the task's jerk" "$bin" export "$tmp/s3-jerk.task.json" "$tmp/s3.json" --csv "$tmp/s3.csv"
+    expect_message "export of a timing past the task's jerk" "breaks robot.joint_limits"
+    [ ! -e "$tmp/s3.csv" ] || fail "a CSV past the task's jerk was written"
+    "$bin" export "$tmp/s3-jerk.task.json" "$tmp/s3-untimed.json" --csv "$tmp/s3u.csv" >"$tmp/out" 2>"$tmp/err" ||
+        fail "export of an untimed spatial motion with jerk limits: $(head -c 300 "$tmp/err")"
+    python3 - "$tmp/s3u.csv" <<'PY' || fail "the CSV of a spatial motion breaks the task's jerk"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+keys = [k for k in rows[0] if k.startswith("qdd")]
+assert keys, rows[0].keys()
+for k in keys:
+    assert abs(float(rows[0][k])) < 1e-6 and abs(float(rows[-1][k])) < 1e-6, k
+for a, b in zip(rows, rows[1:]):
+    dt = float(b["t"]) - float(a["t"])
+    for k in keys:
+        # Between samples qdd changes by at most jerk * dt, up to the
+        # CSV's rounding (t to 1e-6 s, qdd to 1e-9).
+        assert abs(float(b[k]) - float(a[k])) <= 0.5 * (dt + 1e-6) * (1 + 1e-6) + 2e-9, (k, a["t"], b["t"])
+PY
+else
+    fail "solve of $spatial"
+fi
+
 finish hostile
