@@ -644,6 +644,14 @@ def test_import_drawing():
                                  {"Content-Type": "application/dxf"})
         check(status == 422 and body.get("part") == "cylinder" and "circumference" in body.get("error", ""),
               "a drawing wider than the cylinder, from the child: 422 naming cylinder (%s)" % body)
+        # A line nearly along the axis, turned a hundredth of a degree: its
+        # chord, never a refusal naming a helix pitch the client never wrote.
+        axial = (b'<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100">'
+                 b'<line x1="50" y1="10" x2="50" y2="90" stroke="black"/>'
+                 b'<line x1="20" y1="50" x2="80" y2="60" stroke="black"/></svg>')
+        status, _, body = s.json("POST", "/api/import?format=svg&cylinder=0,0,0,0,0,1,0.1&rotate=0.01", axial, svg_type)
+        check(status == 200 and body.get("surface") == "cylinder",
+              "a nearly axial line round a cylinder imports (%s %s)" % (status, body.get("error")))
 
         status, _, body = s.json("POST", "/api/import?format=dxf", read(os.path.join(ROOT, "tasks/drawings/bracket.dxf")),
                                  {"Content-Type": "application/dxf"})
