@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <utility>
 
 #include <modsynth/geometry/distance.h>
 #include <modsynth/geometry/polygon.h>
@@ -54,19 +53,9 @@ public:
         check_structure();
         if (!structure_ok_) return finish();
         check_order(true);
-        // A pose at a time (twice each: once for the samples, once for the
-        // pairs, in that order as before): memory stays that of the
-        // samples, not of their poses, on a motion of a million samples.
-        for (std::size_t i = 0; i < samples_.size(); ++i)
-            check_sample(static_cast<int>(i), pose(static_cast<int>(i)));
-        if (!samples_.empty()) {
-            Pose a = pose(0);
-            for (std::size_t i = 0; i + 1 < samples_.size(); ++i) {
-                Pose b = pose(static_cast<int>(i) + 1);
-                check_pair(static_cast<int>(i), a, b);
-                a = std::move(b);
-            }
-        }
+        check_poses([this](int i) { return pose(i); },
+                    [this](int i, const Pose& p) { check_sample(i, p); },
+                    [this](int i, const Pose& a, const Pose& b) { check_pair(i, a, b); });
         return finish();
     }
 
