@@ -13,7 +13,9 @@ neighbour of a cell that the cells do not hold lies inside one of the
 wall's obstacles grown by link_diameter / 2 (all eight corners strictly
 inside the grown shape, which is convex); on the enclosed side every cell
 that meets the side's box and is not inside a grown obstacle is held, and
-no held cell meets the other side's box. The base side's box is the base
+no held cell meets the other side's box. A wall may hold no cells: then
+every cell the enclosed side meets lies inside a grown obstacle, and no
+free point there can start a chain. The base side's box is the base
 region grown by link_diameter / 2; the point's is the point grown by
 tool_length + 1 mm. Every base region needs a wall.
 """
@@ -165,8 +167,6 @@ def check_wall(task, w, half, reach):
             if not all(0 < c[a] < size[a] - 1 for a in range(3)):
                 raise Bad("cell %s is on the grid's border or outside it" % (c,))
             cells.add(c)
-    if not cells:
-        raise Bad("no cells")
 
     shapes = [(obstacles[i], float_bounds(obstacles[i], float(half))) for i in ids]
     inside_cache = {}

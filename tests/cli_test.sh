@@ -135,7 +135,8 @@ expect_exit 2 "export a missing solution" "$bin" export "$root/tasks/rose.json" 
 if [ -f "$tmp/inf.json" ]; then
     expect_exit 2 "export a URDF of an infeasible solution" "$bin" export "$(ls "$root"/tasks/infeasible/*.task.json | tail -1)" "$tmp/inf.json" --urdf "$tmp/inf.urdf"
 fi
-expect_exit 1 "export to an unwritable file" "$bin" export "$root/tasks/rose.json" "$tmp/s.json" --csv "$tmp/no/such/dir/x.csv"
+# An output that cannot be written is refused before any work, naming it.
+expect_exit 2 "export to an unwritable file" "$bin" export "$root/tasks/rose.json" "$tmp/s.json" --csv "$tmp/no/such/dir/x.csv"
 
 # A stored certificate is never trusted: export verifies the motion again,
 # and an edited one is reported as not certified wherever it would claim it.
@@ -233,7 +234,7 @@ assert d["modsynth"]["figures"]["max_ee_deviation"] < 0.001
 assert d["baseline_over_modsynth"]["max_ee_deviation"] > 5
 PY
 
-# Unwritable output is an internal error, reported, not a crash.
-expect_exit 1 "unwritable output" "$bin" solve "$root/tasks/rose.json" -o "$tmp/no/such/dir/x.json" --quiet
+# Unwritable output is refused before the solve, naming it, not a crash.
+expect_exit 2 "unwritable output" "$bin" solve "$root/tasks/rose.json" -o "$tmp/no/such/dir/x.json" --quiet
 
 finish cli

@@ -175,4 +175,189 @@ import json, sys
 m = json.load(open(sys.argv[1]))["explanation"]["message"]
 assert ": ." not in m and not m.endswith(": "), m' "$tmp/x.json" || fail "solve --time-limit 0.001: $(cat "$tmp/x.json")"
 
+# Outputs are checked before any work: never a FIFO (which would block),
+# never an input (which would be lost), never in a folder that is not
+# there; each refused at once, naming the option, and the input intact.
+cp "$rose" "$tmp/in.json"
+mkfifo "$tmp/out.fifo"
+before=$(md5sum <"$tmp/in.json")
+for args in "-o $tmp/out.fifo" "-o $tmp/x.json --report $tmp/out.fifo" "-o $tmp/x.json --events $tmp/out.fifo" \
+            "-o $tmp/in.json" "-o $tmp/x.json --report $tmp/in.json" "-o $tmp/x.json --events $tmp/in.json" \
+            "-o $tmp/x.json --csv $tmp/x.json" "-o $tmp/missing/dir/x.json" "-o $tmp/x.json --events /dev/full"; do
+    start=$(date +%s%N)
+    expect_exit 2 "solve $args" "$bin" solve "$tmp/in.json" $args --quiet
+    [ $(( ($(date +%s%N) - start) / 1000000 )) -lt 2000 ] || fail "solve $args: not refused before the work"
+done
+"$bin" solve "$tmp/in.json" -o "$tmp/x.json" --csv "$tmp/x.json" >/dev/null 2>"$tmp/err"
+expect_message "solve -o X --csv X" "-o $tmp/x.json: is also the output of --csv"
+"$bin" solve "$tmp/in.json" -o "$tmp/in.json" >/dev/null 2>"$tmp/err"
+expect_message "solve -o INPUT" "-o $tmp/in.json: is the input"
+"$bin" solve "$tmp/in.json" -o "$tmp/missing/dir/x.json" >/dev/null 2>"$tmp/err"
+expect_message "solve -o in a missing folder" "does not exist"
+"$bin" solve "$rose" -o "$tmp/good.json" --quiet >/dev/null 2>&1 || fail "solve rose"
+expect_exit 2 "export onto its solution" "$bin" export "$rose" "$tmp/good.json" --csv "$tmp/good.json"
+expect_message "export onto its solution" "--csv $tmp/good.json: is the input"
+ln -s in.json "$tmp/alias.json"
+expect_exit 2 "a link to the input as output" "$bin" solve "$tmp/in.json" -o "$tmp/alias.json" --quiet
+[ "$(md5sum <"$tmp/in.json")" = "$before" ] || fail "an input was overwritten"
+python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$tmp/good.json" || fail "export destroyed its solution"
+# In a --parts folder a link is replaced, never written through.
+mkdir -p "$tmp/parts" && echo "outside" >"$tmp/outside.txt"
+ln -s ../outside.txt "$tmp/parts/link_1.scad"
+"$bin" export "$rose" "$tmp/good.json" --parts "$tmp/parts" >/dev/null 2>&1
+[ "$(cat "$tmp/outside.txt")" = "outside" ] || fail "--parts wrote through a link to a file outside the folder"
+[ -f "$tmp/parts/link_1.scad" ] && [ ! -L "$tmp/parts/link_1.scad" ] || fail "--parts left the link in place of link_1.scad"
+
+# Speed caps lie in the range of joint limits (1e-6 to 1e6): no motion of
+# centuries, no cap lost to rounding.
+for v in 1e-9 1e-100 1e-300 1e7; do
+    expect_exit 2 "--joint-speed $v" "$bin" solve "$rose" -o "$tmp/x.json" --joint-speed "$v" --quiet
+    expect_message "--joint-speed $v" "--joint-speed"
+    expect_exit 2 "--ee-speed $v" "$bin" solve "$rose" -o "$tmp/x.json" --ee-speed "$v" --quiet
+done
+
+# A task's name and the catalog's module names reach OpenSCAD, URDF,
+# Markdown and the terminal escaped: no code, no broken comment, no control
+# bytes. The catalog is copied beside a copy of the program (its installed
+# place) with an entry of such a name, a FIFO and a file past the cap.
+prefix=$tmp/prefix
+mkdir -p "$prefix/bin" "$prefix/share/modsynth"
+cp "$bin" "$prefix/bin/modsynth"
+cp -r "$root/catalog" "$prefix/share/modsynth/catalog"
+python3 - "$prefix/share/modsynth/catalog" "$rose" "$tmp" <<'PY'
+import json, sys
+cat, rose, tmp = sys.argv[1:4]
+h = json.load(open(cat + "/hebi-x-series.json"))
+evil = dict(h["entries"][0])
+evil["name"] = "X9-evil --> <x/>\ncube([500,500,500]); include <inc.scad>\n// "
+h["entries"].append(evil)
+json.dump(h, open(cat + "/hebi-x-series.json", "w"))
+t = json.load(open(rose))
+t["name"] = "rose\ncube([500,500,500]); include <inc.scad>\n"
+t["robot"]["modules"] = [evil["name"]]
+json.dump(t, open(tmp + "/evil.json", "w"))
+u = json.load(open(rose))
+u["robot"]["modules"] = ["\x1b[2J\x07\rno-such", "y" * 1000000]
+json.dump(u, open(tmp + "/unknown.json", "w"))
+PY
+evil_bin=$prefix/bin/modsynth
+"$evil_bin" solve "$tmp/evil.json" -o "$tmp/evil.sol.json" --urdf "$tmp/evil.urdf" \
+    --build-sheet "$tmp/evil.md" --parts "$tmp/evilparts" --quiet >"$tmp/out" 2>"$tmp/err" ||
+    fail "solve with a hostile name: $(head -c 300 "$tmp/err")"
+ls "$tmp"/evilparts/*.scad >/dev/null 2>&1 || fail "no OpenSCAD sources written"
+python3 - "$tmp"/evilparts/*.scad <<'PY' || fail "a name became OpenSCAD code"
+import sys
+for f in sys.argv[1:]:
+    for n, line in enumerate(open(f), 1):
+        code = line.split("//", 1)[0]
+        if "cube([500" in code or "include <" in code:
+            sys.exit("%s:%d: %s" % (f, n, line))
+PY
+python3 - "$tmp/evil.urdf" <<'PY' || fail "the URDF of a hostile module name is not well-formed XML"
+import sys, xml.dom.minidom
+xml.dom.minidom.parse(sys.argv[1])
+PY
+python3 - "$tmp/out" "$tmp/evil.md" <<'PY' || fail "control bytes of a name reached the terminal or the sheet"
+import sys
+for f in sys.argv[1:]:
+    b = open(f, "rb").read()
+    assert not any(c < 32 and c not in (9, 10) for c in b), f
+PY
+expect_exit 2 "unknown modules with control bytes" "$evil_bin" validate "$tmp/unknown.json"
+python3 - "$tmp/err" <<'PY' || fail "an unknown module name is echoed raw: $(head -c 300 "$tmp/err" | cat -v)"
+import sys
+b = open(sys.argv[1], "rb").read()
+assert b"\x1b" not in b and b"\x07" not in b and b"\r" not in b, b[:200]
+assert b"\\x1B" in b, b[:200]
+assert len(b) < 20000, len(b)
+PY
+mkfifo "$prefix/share/modsynth/catalog/pipe.json"
+expect_exit 2 "a FIFO in the catalog" "$evil_bin" validate "$tmp/unknown.json"
+expect_message "a FIFO in the catalog" "pipe.json: is not a regular file"
+rm "$prefix/share/modsynth/catalog/pipe.json"
+truncate -s 2M "$prefix/share/modsynth/catalog/huge.json"
+expect_exit 2 "a catalog file past its cap" "$evil_bin" validate "$tmp/unknown.json"
+expect_message "a catalog file past its cap" "huge.json: 2097152 bytes, more than the"
+
+# Spatial checks count against the time limit: a helix of a thousand turns
+# round posts that nearly touch it all along takes minutes to check.
+python3 - "$tmp/coil.json" <<'PY'
+import json, sys
+obs = [{"type": "capsule", "a": [0, 0, 0], "b": [0, 0, 5.2], "radius": round(0.1199 - 1e-6 * i, 7)}
+       for i in range(1000)]
+json.dump({"format": "modsynth-task/1", "name": "coil", "space": "3d",
+           "trajectory": [{"type": "helix", "start": [0.12, 0, 0.1], "center": [0, 0, 0.1],
+                           "axis": [0, 0, 1], "direction": "ccw", "pitch": 0.005, "turns": 1000}],
+           "obstacles": obs, "base_regions": [{"min": [-0.05, -0.05, -0.9], "max": [0.05, 0.05, -0.9]}]},
+          open(sys.argv[1], "w"))
+PY
+for cmd in "validate --time-limit 2" "solve -o $tmp/coil.sol.json --time-limit 2 --quiet" "explain --time-limit 2"; do
+    set -- $cmd
+    start=$(date +%s%N)
+    expect_exit 4 "$1 of a long coil" "$bin" "$1" "$tmp/coil.json" "${@:2}"
+    ms=$(( ($(date +%s%N) - start) / 1000000 ))
+    [ "$ms" -lt 3500 ] || fail "$1 of a long coil: $ms ms, past its 2 s limit"
+    grep -q "time limit" "$tmp/out" || fail "$1 of a long coil does not say why: $(head -c 300 "$tmp/out")"
+done
+grep -q '"status": "unknown"' "$tmp/coil.sol.json" || fail "solve of a long coil: $(head -c 300 "$tmp/coil.sol.json")"
+# Commands that take planar tasks only refuse it before checking it.
+for cmd in "baseline" "compare" "export-svg -o $tmp/coil.svg"; do
+    set -- $cmd
+    start=$(date +%s%N)
+    expect_exit 2 "$1 of a long coil" "$bin" "$1" "$tmp/coil.json" "${@:2}"
+    ms=$(( ($(date +%s%N) - start) / 1000000 ))
+    [ "$ms" -lt 1500 ] || fail "$1 of a long coil: $ms ms to refuse a spatial task"
+    expect_message "$1 of a long coil" "spatial tasks are not supported by $1"
+done
+
+# A spatial solution's robot within the task limits: no 309-digit base.
+python3 - "$tmp/good.json" "$tmp/far-base.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+s["robot"]["base"] = [1e308, 0.0]
+json.dump(s, open(sys.argv[2], "w"))
+PY
+expect_exit 2 "a base at 1e308" "$bin" certify "$rose" "$tmp/far-base.json"
+expect_message "a base at 1e308" "robot.base[0]: 1e+308 m is beyond"
+
+
+# Jerk limits hold in space as in the plane: export hands a controller no
+# timing that breaks the task's jerk, and times a motion saved without one
+# within it (a CSV at 602 rad/s^3 for a limit of 1e-6 once).
+spatial=$root/tests/fixtures/spatial/s3-0001.task.json
+if "$bin" solve "$spatial" -o "$tmp/s3.json" --quiet --time-limit 60 >/dev/null 2>&1; then
+    python3 - "$spatial" "$tmp/s3.json" "$tmp/s3-jerk.task.json" "$tmp/s3-untimed.json" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+t.setdefault("robot", {})["joint_limits"] = {"velocity": 2, "acceleration": 5, "jerk": 0.5}
+json.dump(t, open(sys.argv[3], "w"))
+s = json.load(open(sys.argv[2]))
+for x in s["samples"]:
+    x.pop("qd", None)
+    x.pop("qdd", None)
+json.dump(s, open(sys.argv[4], "w"))
+PY
+    expect_exit 2 "export of a timing past the task's jerk" "$bin" export "$tmp/s3-jerk.task.json" "$tmp/s3.json" --csv "$tmp/s3.csv"
+    expect_message "export of a timing past the task's jerk" "breaks robot.joint_limits"
+    [ ! -e "$tmp/s3.csv" ] || fail "a CSV past the task's jerk was written"
+    "$bin" export "$tmp/s3-jerk.task.json" "$tmp/s3-untimed.json" --csv "$tmp/s3u.csv" >"$tmp/out" 2>"$tmp/err" ||
+        fail "export of an untimed spatial motion with jerk limits: $(head -c 300 "$tmp/err")"
+    python3 - "$tmp/s3u.csv" <<'PY' || fail "the CSV of a spatial motion breaks the task's jerk"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+keys = [k for k in rows[0] if k.startswith("qdd")]
+assert keys, rows[0].keys()
+for k in keys:
+    assert abs(float(rows[0][k])) < 1e-6 and abs(float(rows[-1][k])) < 1e-6, k
+for a, b in zip(rows, rows[1:]):
+    dt = float(b["t"]) - float(a["t"])
+    for k in keys:
+        # Between samples qdd changes by at most jerk * dt, up to the
+        # CSV's rounding (t to 1e-6 s, qdd to 1e-9).
+        assert abs(float(b[k]) - float(a[k])) <= 0.5 * (dt + 1e-6) * (1 + 1e-6) + 2e-9, (k, a["t"], b["t"])
+PY
+else
+    fail "solve of $spatial"
+fi
+
 finish hostile

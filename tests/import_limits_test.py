@@ -41,6 +41,25 @@ SPLINE_1E160 = ("0\nSPLINE\n8\n0\n70\n8\n71\n3\n72\n8\n73\n4\n" +
                         (("0", "0"), ("1e-160", "2e-160"), ("2e-160", "-1e-160"), ("3e-160", "0"))))
 ONE_CURVE = svg('<path id="c" d="M 10,50 C 30,10 70,90 90,50"/>')
 
+
+def curves(n):
+    """A closed path of n cubic curves across the page: a large clip shape."""
+    return "M10 10 " + " ".join("C%d 5 %d 95 %d 90" % (10 + k % 80, 12 + k % 80, 14 + k % 80)
+                                for k in range(n)) + " Z"
+
+
+def line(i, clip):
+    y = 20 + i % 60
+    return '<line x1="20" y1="%d" x2="80" y2="%d" stroke="black" clip-path="url(#%s)"/>' % (y, y, clip)
+
+
+# Every line clipped by one clip path of thousands of curves (its outline
+# once flattened per line: 7.5 GB), and every line by its own.
+CLIP_SHARED = svg('<clipPath id="c"><path d="%s"/></clipPath>' % curves(5000) +
+                  "".join(line(i, "c") for i in range(10000)))
+CLIP_EACH = svg("".join('<clipPath id="c%d"><path d="%s"/></clipPath>' % (i, curves(150))
+                        for i in range(400)) + "".join(line(i, "c%d" % i) for i in range(400)))
+
 # (name, file content, extra options, expected exit code, text the error names)
 CASES = [
     ("long-comment.dxf", "999\n" + "c" * 5000 + "\n" + dxf(LINE), [], 0, None),
@@ -78,6 +97,8 @@ CASES = [
     ("slow-fit.svg", open(SKETCH).read(), ["--tolerance", "1e-9", "--width", "100", "--time-limit", "1"],
      4, "the time limit was reached while fitting path#"),
     ("time-limit.svg", open(SKETCH).read(), ["--time-limit", "0.001"], 4, "time limit"),
+    ("clip-shared.svg", CLIP_SHARED, [], 4, "the time limit was reached while clipping"),
+    ("clip-each.svg", CLIP_EACH, [], 2, "points of outline in all"),
 ]
 
 

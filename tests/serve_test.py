@@ -644,6 +644,14 @@ def test_import_drawing():
                                  {"Content-Type": "application/dxf"})
         check(status == 422 and body.get("part") == "cylinder" and "circumference" in body.get("error", ""),
               "a drawing wider than the cylinder, from the child: 422 naming cylinder (%s)" % body)
+        # A line nearly along the axis, turned a hundredth of a degree: its
+        # chord, never a refusal naming a helix pitch the client never wrote.
+        axial = (b'<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100">'
+                 b'<line x1="50" y1="10" x2="50" y2="90" stroke="black"/>'
+                 b'<line x1="20" y1="50" x2="80" y2="60" stroke="black"/></svg>')
+        status, _, body = s.json("POST", "/api/import?format=svg&cylinder=0,0,0,0,0,1,0.1&rotate=0.01", axial, svg_type)
+        check(status == 200 and body.get("surface") == "cylinder",
+              "a nearly axial line round a cylinder imports (%s %s)" % (status, body.get("error")))
 
         status, _, body = s.json("POST", "/api/import?format=dxf", read(os.path.join(ROOT, "tasks/drawings/bracket.dxf")),
                                  {"Content-Type": "application/dxf"})
@@ -670,7 +678,11 @@ def test_import_drawing():
         for query, part in [("format=png", "format"), ("format=svg&width=-1", "width"),
                             ("format=svg&at=1", "at"), ("format=svg&at=1,x", "at"),
                             ("format=svg&tolerance=5", "tolerance"), ("format=svg&width=1&scale=1", "scale"),
-                            ("format=svg&rotate=1e9", "rotate")]:
+                            ("format=svg&rotate=1e9", "rotate"),
+                            # Numbers as people write them, a parameter once.
+                            ("format=svg&width=0x10", "width"), ("format=svg&at=0x1,0", "at"),
+                            ("format=svg&width=inf", "width"), ("format=svg&width=%200.1", "width"),
+                            ("format=svg&format=dxf", "format"), ("format=svg&width=0.1&width=0.2", "width")]:
             status, _, body = s.json("POST", "/api/import?" + query, read(sketch), svg_type)
             check(status == 400 and body.get("part") == part, "%s: 400 naming %s (%s %s)" % (query, part, status, body))
         status, _, body = s.json("POST", "/api/import?format=svg", read(sketch), {"Content-Type": "text/plain"})
@@ -684,6 +696,62 @@ def test_import_drawing():
             status, body = None, {"error": str(e)}
         check(status == 413, "a drawing over 1 MB: 413 (%s)" % status)
         check(s.alive(), "server alive after bad drawings")
+
+
+def coil_task(posts):
+    """A helix of a thousand turns round posts that nearly touch it all along:
+    checking it takes tens of milliseconds per post."""
+    return json.dumps({
+        "format": "modsynth-task/1", "name": "coil", "space": "3d",
+        "trajectory": [{"type": "helix", "start": [0.12, 0, 0.1], "center": [0, 0, 0.1], "axis": [0, 0, 1],
+                        "direction": "ccw", "pitch": 0.005, "turns": 1000}],
+        "obstacles": [{"type": "capsule", "a": [0, 0, 0], "b": [0, 0, 5.2], "radius": round(0.1199 - 1e-6 * i, 7)}
+                      for i in range(posts)],
+        "base_regions": [{"min": [-0.05, -0.05, -0.9], "max": [0.05, 0.05, -0.9]}]}).encode()
+
+
+def cpu_seconds(pid):
+    with open("/proc/%d/stat" % pid) as f:
+        fields = f.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def test_spatial_checks_bounded():
+    """A task that takes minutes to check holds a worker at most a few seconds,
+    whether its client waits or leaves; a solve of it goes to a job, which
+    checks it within its own time limit."""
+    body = coil_task(1000)
+    with Server() as s:
+        start = time.monotonic()
+        status, _, reply = s.json("POST", "/api/validate", body, JSON_TYPE)
+        took = time.monotonic() - start
+        check(status == 200 and reply.get("checked") is False and not reply.get("valid")
+              and "time limit" in json.dumps(reply.get("errors")),
+              "validate of a coil says it was not checked: %s %s" % (status, reply))
+        check(took < 8, "validate of a coil answered in %.1f s" % took)
+        # Clients that send it and leave: the server's CPU stops soon after.
+        for _ in range(3):
+            sock = socket.create_connection(("127.0.0.1", s.port), timeout=5)
+            sock.sendall(b"POST /api/validate HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/json\r\n"
+                         b"Content-Length: %d\r\n\r\n" % len(body) + body)
+            time.sleep(0.2)
+            sock.close()
+        time.sleep(7)
+        before = cpu_seconds(s.proc.pid)
+        time.sleep(5)
+        spent = cpu_seconds(s.proc.pid) - before
+        check(spent < 1.0, "the server kept checking a coil after its clients left: %.1f s of CPU" % spent)
+        status, _, reply = s.json("POST", "/api/solve?time_limit=3", body, JSON_TYPE)
+        check(status == 202, "a coil to solve becomes a job: %s %s" % (status, reply))
+        if status == 202:
+            # Reading the outcome needs the task's name, not its checks: the
+            # job ends soon after its child, and the jobs API answers all along.
+            start = time.monotonic()
+            job = s.wait(reply["id"], done, 20)
+            took = time.monotonic() - start
+            check(job and job.get("status") == "unknown", "the coil's job answers unknown: %s" % job)
+            check(took < 15, "the coil's job ended %.1f s after it was sent (a 3 s limit)" % took)
+        check(s.alive(), "server alive after coils")
 
 
 def hostile_dxf(n):
@@ -850,7 +918,7 @@ def main():
              test_chunked_body_limit, test_host_rule, test_port_in_use, test_media_type,
              test_whole_replies, test_slow_clients, test_solves_hold_no_sockets,
              test_shutdown_kills_solves, test_import_drawing, test_hostile_imports_and_slow_bodies,
-             test_slow_body_keeps_alive, test_connection_burst]
+             test_slow_body_keeps_alive, test_connection_burst, test_spatial_checks_bounded]
     for t in tests:
         started = time.monotonic()
         try:

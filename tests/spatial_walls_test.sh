@@ -55,4 +55,35 @@ PY
     grep -q '"enclosure":\[{"inside"' "$tmp/$name.html" || fail "$name: the report carries no wall"
 done
 [ "$count" -ge 2 ] || fail "only $count walled examples in tasks/spatial/infeasible/"
+# Walls of no cells: a base region inside an obstacle, a tube too thick for
+# the path's surroundings. The obstacle that fills the cells is the wall and
+# in the core, the checker accepts the witness and refuses it without that
+# obstacle, and explain names the obstacle rather than the base region alone.
+for task in "$root"/tests/fixtures/spatial-walls-empty/*.task.json; do
+    name=$(basename "$task" .task.json)
+    sol=$tmp/$name.solution.json
+    "$bin" solve "$task" -o "$sol" --time-limit 30 >"$tmp/out" 2>&1
+    code=$?
+    [ "$code" -eq 3 ] || { fail "$name: solve exit $code, not 3: $(head -c 300 "$tmp/out")"; continue; }
+    grep -q "no free point there" "$tmp/out" || fail "$name: the answer does not say why: $(head -c 300 "$tmp/out")"
+    $check "$task" "$sol" >"$tmp/check" 2>&1 || fail "$name: the checker refuses the wall: $(cat "$tmp/check")"
+    python3 - "$sol" "$tmp/thin.json" <<'PY' || fail "$name: the wall or the core lacks its obstacle"
+import json, sys
+s = json.load(open(sys.argv[1]))
+w = s["explanation"]["enclosure"]["walls"][0]
+assert w["obstacles"] and not w["cells"], w
+for i in w["obstacles"]:
+    assert "obstacles[%d]" % i in s["explanation"]["core"], s["explanation"]["core"]
+w["obstacles"] = []
+json.dump(s, open(sys.argv[2], "w"))
+PY
+    $check "$task" "$tmp/thin.json" >/dev/null 2>&1 && fail "$name: the checker accepts the wall without its obstacles"
+    "$bin" explain "$task" --json --time-limit 20 >"$tmp/explain.json" 2>"$tmp/err"
+    python3 - "$tmp/explain.json" <<'PY' || fail "$name: explain does not name the wall's obstacle"
+import json, sys
+e = json.load(open(sys.argv[1]))
+assert e["status"] == "infeasible", e["status"]
+assert any(p.startswith("obstacles[") for p in e["core"]), e["core"]
+PY
+done
 finish spatial_walls

@@ -53,6 +53,7 @@ void print_result(const task::Task& task, const baseline::BaselineResult& r) {
 }
 
 int run_baseline(BaselineArgs& a) {
+    io::check_outputs({{"-o", a.output}}, {a.task});
     const task::Task task = load_planar_task(a.task, "baseline");
     if (!a.quiet)
         a.options.progress = [](const run::ProgressEvent& e) {

@@ -228,6 +228,11 @@ private:
 int run_batch(const BatchArgs& a) {
     const Shard shard = parse_shard(a.shard);
     const std::vector<std::string> all = all_tasks(a.input);
+    {
+        std::vector<std::string> inputs = all;
+        inputs.push_back(a.input);
+        io::check_outputs({{"--out", a.out}}, inputs);
+    }
     std::error_code ignored;
     // Named after the path below the suite folder, so that a/x and b/x
     // keep apart and a task's files keep their names as the suite grows.

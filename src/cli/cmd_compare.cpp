@@ -96,6 +96,7 @@ void print_table(const baseline::Comparison& c, int points) {
 constexpr double kWatchdogMargin = 1.0;
 
 int run_compare(CompareArgs& a) {
+    io::check_outputs({{"--report", a.report}}, {a.task});
     const task::Task task = load_planar_task(a.task, "compare");
     const double limit = a.time_limit + a.options.time_limit;
     Watchdog watchdog(limit + kWatchdogMargin, [&] {

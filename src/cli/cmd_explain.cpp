@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/explanation/explain.h>
+#include <modsynth/io/check_timeout.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
@@ -160,7 +161,26 @@ int run_explain(const ExplainArgs& a, const TaskT& task, const run::Stopwatch& c
 
 int run_explain(const ExplainArgs& a) {
     const run::Stopwatch clock;
-    io::TaskDocument doc = io::load_task_document(a.task);
+    io::TaskDocument doc;
+    try {
+        // Checking the task is part of the command's time.
+        doc = io::load_task_document(a.task, run::Deadline::in(a.time_limit));
+    } catch (const io::CheckTimeout& e) {
+        const std::string message =
+            "Not proved infeasible: the task's checks did not end (" + std::string(e.what()) + ").";
+        if (a.json) {
+            const nlohmann::json out = {{"task", e.task_name()},
+                                        {"status", synth::to_string(synth::Status::Kind::Unknown)},
+                                        {"message", message},
+                                        {"core", nlohmann::json::array()},
+                                        {"suggestions", nlohmann::json::array()}};
+            std::printf("%s\n",
+                        out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+        } else {
+            std::printf("%s\n", message.c_str());
+        }
+        return kUnknown;
+    }
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
         return run_explain(a, *spatial, clock);
     return run_explain(a, std::get<task::Task>(doc), clock);

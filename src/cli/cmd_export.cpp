@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -6,6 +8,8 @@
 #include <variant>
 #include <vector>
 
+#include <modsynth/control/joint_limits.h>
+#include <modsynth/control/retime.h>
 #include <modsynth/hardware/select_dh_modules.h>
 #include <modsynth/hardware/task_catalog.h>
 #include <modsynth/io/solution_io.h>
@@ -16,6 +20,7 @@
 #include <modsynth/output/recertify.h>
 #include <modsynth/synth/module_choice.h>
 #include <modsynth/synth/spatial_module_choice.h>
+#include <modsynth/text/printable.h>
 
 #include "command.h"
 
@@ -28,23 +33,44 @@ struct ExportArgs {
     bool write_uncertified = false;
 };
 
-/// Warns of a solved motion that is not certified and, unless the user
-/// asked for them, takes its controller files (CSV, joint trajectory) out of
-/// `paths`: a controller commands what these files say, so a motion that
-/// fails verification is not handed to one. Returns a line per file left out.
+/// Where the saved timing breaks the task's joint limits (when it has
+/// them, formats.md "Timing a controller accepts"), or "".
+std::string timing_fault(const task::Task& task, const synth::Solution& s) {
+    const bool solved = s.status == synth::Status::Solved;
+    if (!solved || !task.robot.joint_limits) return "";
+    return control::timing_fault(s.samples, control::joint_limits_for(task, s.robot.dof()));
+}
+std::string timing_fault(const task::SpatialTask& task, const synth::Solution& s) {
+    const bool solved = s.status == synth::Status::Solved;
+    if (!solved || !task.robot.joint_limits || !s.dh_robot) return "";
+    return control::timing_fault(s.samples, control::joint_limits_for(task, s.dh_robot->dof()));
+}
+
+/// Warns of a solved motion that is not certified, or whose timing breaks
+/// the task's joint limits (a file solved before them, or edited), and,
+/// unless the user asked for them, takes its controller files (CSV, joint
+/// trajectory) out of `paths`: a controller commands what these files say,
+/// so such a motion is not handed to one. Returns a line per file left out.
 std::vector<std::string> refuse_uncertified(const ExportArgs& a, const synth::Solution& s,
-                                            output::ExportPaths& paths) {
+                                            output::ExportPaths& paths,
+                                            const std::string& timing = "") {
     std::vector<std::string> refused;
-    if (s.status != synth::Status::Solved || s.certificate.ok) return refused;
-    std::fprintf(stderr, "warning: %s: not certified: %s\n", a.solution.c_str(),
-                 output::uncertified_reason(s.certificate).c_str());
+    if (s.status != synth::Status::Solved || (s.certificate.ok && timing.empty())) return refused;
+    const std::string why =
+        !s.certificate.ok ? "the motion is not certified" : "its timing breaks robot.joint_limits";
+    if (!s.certificate.ok)
+        std::fprintf(stderr, "warning: %s: not certified: %s\n",
+                     text::printable(a.solution, 200).c_str(),
+                     output::uncertified_reason(s.certificate).c_str());
+    else
+        std::fprintf(stderr, "warning: %s: the timing breaks robot.joint_limits: %s\n",
+                     text::printable(a.solution, 200).c_str(), timing.c_str());
     if (a.write_uncertified) return refused;
     for (auto [path, option] : {std::pair{&paths.csv, "--csv"},
                                 std::pair{&paths.joint_trajectory, "--joint-trajectory"}}) {
         if (path->empty()) continue;
-        refused.push_back(std::string(option) + " " + *path +
-                          ": not written; the motion is not certified (give "
-                          "--write-uncertified to write it anyway)");
+        refused.push_back(std::string(option) + " " + *path + ": not written; " + why +
+                          " (give --write-uncertified to write it anyway)");
         path->clear();
     }
     return refused;
@@ -94,9 +120,9 @@ int export_spatial(const ExportArgs& a, const task::SpatialTask& task) {
     const synth::Solution& s = parsed.solution;
     if (s.modules && s.modules->checked && !s.modules->carried())
         std::fprintf(stderr, "warning: the certified robot overloads its modules: %s\n",
-                     s.modules->message.c_str());
+                     text::printable(s.modules->message, 2000).c_str());
     output::ExportPaths paths = a.exports;
-    const std::vector<std::string> refused = refuse_uncertified(a, s, paths);
+    const std::vector<std::string> refused = refuse_uncertified(a, s, paths, timing_fault(task, s));
     for (auto& line : output::write_exports(task, parsed.solution, paths, figures,
                                             printed ? &*printed : nullptr))
         skipped.push_back(std::move(line));
@@ -110,6 +136,7 @@ int run_export(const ExportArgs& a) {
                      "--joint-trajectory, --build-sheet and/or --parts\n");
         return kInvalid;
     }
+    io::check_outputs(export_outputs(a.exports), {a.task, a.solution});
     if (!a.exports.parts.empty()) parts::prepare_parts_folder(a.exports.parts);
     const io::TaskDocument doc = io::load_task_document(a.task);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
@@ -128,7 +155,7 @@ int run_export(const ExportArgs& a) {
     if (!overload.empty()) std::fprintf(stderr, "warning: %s\n", overload.c_str());
     const synth::Solution& s = parsed.solution;
     output::ExportPaths paths = a.exports;
-    const std::vector<std::string> refused = refuse_uncertified(a, s, paths);
+    const std::vector<std::string> refused = refuse_uncertified(a, s, paths, timing_fault(task, s));
     for (auto& line : output::write_exports(task, parsed.solution, paths, figures,
                                             printed ? &*printed : nullptr))
         skipped.push_back(std::move(line));
@@ -136,6 +163,21 @@ int run_export(const ExportArgs& a) {
 }
 
 }  // namespace
+
+std::vector<io::OutputFile> export_outputs(const output::ExportPaths& paths) {
+    std::vector<io::OutputFile> out = {{"--report", paths.report},
+                                       {"--urdf", paths.urdf},
+                                       {"--csv", paths.csv},
+                                       {"--joint-trajectory", paths.joint_trajectory},
+                                       {"--build-sheet", paths.build_sheet}};
+    // A folder that is not there yet holds nothing to check.
+    std::error_code ec;
+    if (!paths.parts.empty() && std::filesystem::is_directory(paths.parts, ec))
+        for (const std::string& p :
+             parts::part_paths(paths.parts, std::max(task::kMaxDof, task::kMaxSpatialDof)))
+            out.push_back({"--parts", p});
+    return out;
+}
 
 void add_export_options(CLI::App& sub, output::ExportPaths& paths) {
     sub.add_option("--report", paths.report, "write a visual report (self-contained HTML)");

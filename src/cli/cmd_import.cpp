@@ -131,6 +131,7 @@ drawing::Drawing text_drawing(const ImportArgs& a) {
 constexpr double kWatchdogMargin = 0.6;
 
 int run_import(ImportArgs& a) {
+    io::check_outputs({{"-o", a.output}, {"--reply", a.reply}}, {a.input});
     const auto start = drawing::Clock::now();
     const auto limit = std::chrono::duration_cast<drawing::Clock::duration>(
         std::chrono::duration<double>(a.time_limit));
@@ -342,8 +343,9 @@ Command add_import(CLI::App& parent) {
         ->check(within(0.0, 1e3));
     sub->add_option("--tool", a->tool,
                     "with --plane or --cylinder: 'square' holds the tool square into the "
-                    "surface while it traces (a pen on an easel, a brush on a pipe)")
-        ->check(CLI::IsMember({"square"}));
+                    "surface while it traces (a pen on an easel, a brush on a pipe); "
+                    "'toward', round a cylinder, the same: at its axis")
+        ->check(CLI::IsMember({"square", "toward"}));
     sub->add_option("--tool-tolerance", a->tool_tolerance_degrees,
                     "with --tool: how far the tool may tilt from square, degrees (default 5)")
         ->check(within(1e-3, 90.0));
@@ -378,6 +380,9 @@ Command add_import(CLI::App& parent) {
                     throw InputError("--tool-length", "only with --plane or --cylinder");
                 if (!a->spatial() && !a->tool.empty())
                     throw InputError("--tool", "only with --plane or --cylinder");
+                if (a->tool == "toward" && a->cylinder.empty())
+                    throw InputError("--tool", "'toward' points at a cylinder's axis: only with "
+                                               "--cylinder ('square' on a plane)");
                 return run_import(*a);
             }};
 }
@@ -390,6 +395,7 @@ Command add_export_svg(CLI::App& parent) {
     sub->add_option("TASK", *input, "task file (trajectory or strokes)")->required();
     sub->add_option("-o,--output", *output, "SVG file to write")->required();
     return {sub, [input, output] {
+                io::check_outputs({{"-o", *output}}, {*input});
                 const auto strokes = task_strokes(*input);
                 io::write_file_atomically(*output, drawing::write_svg(strokes));
                 std::printf("%s -> %s: %zu stroke%s\n", input->c_str(), output->c_str(),

@@ -101,7 +101,8 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
                 std::printf("    %s\n", stretch_text(task, solution.samples, st).c_str());
         }
     }
-    if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
+    if (solution.modules)
+        std::printf("  %s\n", text::printable(solution.modules->message, 2000).c_str());
 }
 
 /// The part of the time limit kept for what follows the search: module
@@ -116,8 +117,20 @@ double output_reserve(const task::Task& task, double time_limit) {
 
 int run_solve(const SolveArgs& a) {
     const run::Stopwatch clock;
+    std::vector<io::OutputFile> outputs = export_outputs(a.exports);
+    outputs.push_back({"-o", a.output});
+    outputs.push_back({"--events", a.events});
+    // Before the parts folder is made: a bad output leaves nothing behind.
+    io::check_outputs(outputs, {a.task});
     if (!a.exports.parts.empty()) parts::prepare_parts_folder(a.exports.parts);
-    io::TaskDocument doc = io::load_task_document(a.task);
+    // Checking the task counts against the time limit: a long path among
+    // many obstacles takes minutes to check.
+    io::TaskDocument doc;
+    try {
+        doc = io::load_task_document(a.task, run::Deadline::in(a.time_limit - clock.seconds()));
+    } catch (const io::CheckTimeout& e) {
+        return answer_unchecked(e, a.output, a.exports, a.time_limit, clock.seconds());
+    }
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
         return run_spatial_solve(*spatial, a, clock.started());
     const task::Task task = std::get<task::Task>(std::move(doc));
@@ -151,6 +164,7 @@ int run_solve(const SolveArgs& a) {
                  {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}},
                  printed ? &*printed : nullptr);
     print_summary(task, solution, seconds, stats, a.output, a.ee_speed);
+    progress.finish();
     return exit_code(solution.status);
 }
 
@@ -177,10 +191,10 @@ Command add_solve(CLI::App& parent) {
                     "end-effector speed along the path, m/s: held where the joint limits allow, "
                     "and the summary says where they force it slower (default: none; the "
                     "joint limits decide)")
-        ->check(positive());
+        ->check(speed());
     sub->add_option("--joint-speed", a->joint_speed,
                     "cap on every joint's speed below its limit, rad/s (default: none)")
-        ->check(positive());
+        ->check(speed());
     sub->add_option("--swept", a->swept,
                     "model of the swept area the refinement starts from: auto (SV-over for two "
                     "joints where it can hold, then lines), app (paper III-D), over (paper "

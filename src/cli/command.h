@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <modsynth/baseline/baseline.h>
+#include <modsynth/io/output_check.h>
 #include <modsynth/kinematics/robot.h>
 #include <modsynth/output/exports.h>
 
@@ -35,6 +36,9 @@ Command add_export_svg(CLI::App& parent);
 
 /// --report, --urdf, --csv, --build-sheet: shared by solve and export.
 void add_export_options(CLI::App& sub, output::ExportPaths& paths);
+/// The files those options name, with every file --parts may write, for
+/// io::check_outputs.
+std::vector<io::OutputFile> export_outputs(const output::ExportPaths& paths);
 
 /// "2 joints, base (x, y), links a b m (total t m), elbow +1": the robot
 /// line of solve's summary, and of baseline's.

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/hardware/catalog.h>
+#include <modsynth/io/atomic_file.h>
 #include <modsynth/task/input_error.h>
 
 #include "command.h"
@@ -29,6 +31,15 @@ int main(int argc, char** argv) {
     } catch (const modsynth::task::InputError& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return kInvalid;
+    } catch (const modsynth::hardware::CatalogError& e) {
+        // The module catalog is an input like the task: a file in it that
+        // cannot be read is refused by name.
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return kInvalid;
+    } catch (const modsynth::io::WriteError& e) {
+        // An output not written: exit 1 as README says, but not a defect.
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return kInternal;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "internal error: %s\n", e.what());
         return kInternal;

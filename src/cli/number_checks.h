@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <modsynth/task/task.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
@@ -38,6 +39,11 @@ inline CLI::Validator seconds() { return finite_in(0.0, kMaxSeconds, true, "SECO
 inline CLI::Validator seconds_or_zero() { return finite_in(0.0, kMaxSeconds, false, "SECONDS"); }
 /// A positive finite number (a speed).
 inline CLI::Validator positive() { return finite_in(0.0, 1e9, true, "POSITIVE"); }
+/// A speed cap beside the joint limits (m/s or rad/s): within the range a
+/// joint limit may take (task::kMinJointLimit to kMaxJointLimit).
+inline CLI::Validator speed() {
+    return finite_in(task::kMinJointLimit, task::kMaxJointLimit, false, "SPEED");
+}
 /// A finite number in [lo, hi].
 inline CLI::Validator within(double lo, double hi) { return finite_in(lo, hi, false, "NUMBER"); }
 

@@ -3,12 +3,12 @@
 // writes when its time limit passes inside a library call (the watchdog),
 // and the exit code an answer ends the command with (README, "Exit codes").
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <modsynth/io/check_timeout.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/output/exports.h>
 #include <modsynth/output/parts_export.h>
@@ -41,15 +41,23 @@ private:
 
 /// Where a solve's progress events go: the guard's stage, the console
 /// unless quiet, and the events file (JSON lines, io/progress_json.h) when
-/// one is asked for.
+/// one is asked for (a regular file or a new one: io::check_outputs).
 class SolveProgress {
 public:
-    /// Throws task::InputError naming `events_path` when it cannot be written.
+    /// Throws task::InputError naming `events_path` when it cannot be opened.
     SolveProgress(const std::string& events_path, bool quiet);
+    ~SolveProgress();
+    SolveProgress(const SolveProgress&) = delete;
+    SolveProgress& operator=(const SolveProgress&) = delete;
     run::ProgressSink sink(SolveGuard& guard);
+    /// Throws io::WriteError naming the events file when a line of it could
+    /// not be written (a full disk): the run's events are then incomplete.
+    void finish() const;
 
 private:
-    std::ofstream events_;
+    std::string path_;
+    int fd_ = -1;
+    int error_ = 0;  ///< errno of the first line that failed
     bool quiet_;
 };
 
@@ -82,5 +90,12 @@ std::optional<parts::PrintedParts> print_parts(const TaskT& task,
 
 /// kOk, kInfeasible or kUnknown.
 int exit_code(const synth::Status& status);
+
+/// The answer of a solve whose task was not checked within its time limit
+/// (io::CheckTimeout): the solution file says "unknown" and why, the other
+/// outputs are not written (each a note), the summary line is printed.
+/// Returns kUnknown.
+int answer_unchecked(const io::CheckTimeout& timeout, const std::string& output,
+                     const output::ExportPaths& exports, double time_limit, double seconds);
 
 }  // namespace modsynth::app

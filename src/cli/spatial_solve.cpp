@@ -61,7 +61,8 @@ void print_summary(const task::SpatialTask& task, const synth::Solution& solutio
             : "");
     std::printf("  control: %zu samples over %.2f s -> %s\n", solution.samples.size(),
                 solution.samples.back().t, output.c_str());
-    if (solution.modules) std::printf("  %s\n", solution.modules->message.c_str());
+    if (solution.modules)
+        std::printf("  %s\n", text::printable(solution.modules->message, 2000).c_str());
 }
 
 }  // namespace
@@ -99,6 +100,7 @@ int run_spatial_solve(const task::SpatialTask& task, const SolveRequest& a,
                  {stats.front_seconds, stats.refine_seconds, stats.verify_seconds, {}},
                  printed ? &*printed : nullptr);
     print_summary(task, solution, seconds, stats, a.output);
+    progress.finish();
     return exit_code(solution.status);
 }
 

@@ -8,6 +8,7 @@
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/kinematics/chain_layout.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/task/limits.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -84,9 +85,12 @@ std::optional<std::vector<double>> transition_configuration(const task::Task& ta
 
 std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                                                const kinematics::Robot& robot,
-                                               const MotionOptions& options,
-                                               MotionFailure* failure) {
-    text::require_valid(options);
+                                               const MotionOptions& given, MotionFailure* failure) {
+    text::require_valid(given);
+    // No more samples than a solution file holds (task/limits.h): every
+    // motion written can be read back.
+    MotionOptions options = given;
+    options.max_samples = std::min(options.max_samples, task::max_motion_samples(robot.dof()));
     std::vector<Sample> out;
     double failed_at = 0.0;
     bool gave_up = false;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -203,10 +204,16 @@ double rest_to_rest(const Sample& a, const Sample& b, const Vec& amax, const Vec
 
 bool RetimeOptions::IsValid(std::string* error) const {
     return text::OptionCheck("RetimeOptions", error)
-        .holds("ee_speed", ee_speed > 0.0 && !std::isnan(ee_speed),
-               "must be greater than 0 (infinity: none)")
-        .holds("joint_speed", joint_speed > 0.0 && !std::isnan(joint_speed),
-               "must be greater than 0 (infinity: no cap)")
+        .holds("ee_speed",
+               std::isinf(ee_speed)
+                   ? ee_speed > 0.0
+                   : ee_speed >= task::kMinJointLimit && ee_speed <= task::kMaxJointLimit,
+               "must lie within 1e-06 to 1e+06 m/s (infinity: none)")
+        .holds("joint_speed",
+               std::isinf(joint_speed)
+                   ? joint_speed > 0.0
+                   : joint_speed >= task::kMinJointLimit && joint_speed <= task::kMaxJointLimit,
+               "must lie within 1e-06 to 1e+06 rad/s (infinity: no cap)")
         .within("corner_angle", corner_angle, 0.0, std::numbers::pi)
         .at_least("corner_ratio", corner_ratio, 1.0)
         .at_least("still_length", still_length, 0.0)
@@ -329,6 +336,58 @@ std::vector<Sample> retime(std::vector<Sample> samples, const JointLimits& limit
     retime_detail::find_slow_stretches(path, samples, limits, options, local);
     if (stats) *stats = local;
     return samples;
+}
+
+std::string timing_fault(const std::vector<Sample>& samples, const JointLimits& limits) {
+    constexpr double kSlack = 1e-6;  // formats.md: relative on limits, absolute on the rest
+    if (samples.empty()) return "";
+    const std::size_t n = limits.velocity.size();
+    const bool jerk = !limits.jerk.empty();
+    const auto at = [](std::size_t i) { return "samples[" + std::to_string(i) + "]: "; };
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const Sample& x = samples[i];
+        if (x.qd.size() != n || x.qdd.size() != n || x.q.size() != n)
+            return at(i) + "no joint velocities and accelerations for every joint";
+        for (std::size_t k = 0; k < n; ++k) {
+            const auto over = [&](const char* what, double v, double limit, const char* unit) {
+                return at(i) + text::format("joint %zu's %s %.6g %s is over its %.6g %s limit",
+                                            k + 1, what, v, unit, limit, unit);
+            };
+            if (std::abs(x.qd[k]) > limits.velocity[k] * (1.0 + kSlack))
+                return over("velocity", x.qd[k], limits.velocity[k], "rad/s");
+            if (std::abs(x.qdd[k]) > limits.acceleration[k] * (1.0 + kSlack))
+                return over("acceleration", x.qdd[k], limits.acceleration[k], "rad/s^2");
+            const bool end = i == 0 || i + 1 == samples.size();
+            if (end && std::abs(x.qd[k]) > kSlack)
+                return at(i) +
+                       text::format("joint %zu is not at rest (%.6g rad/s)", k + 1, x.qd[k]);
+            if (end && jerk && std::abs(x.qdd[k]) > kSlack)
+                return at(i) + text::format("joint %zu accelerates (%.6g rad/s^2) at rest", k + 1,
+                                            x.qdd[k]);
+        }
+        if (i == 0) continue;
+        const Sample& a = samples[i - 1];
+        const double dt = x.t - a.t;
+        if (!(dt > 0.0)) return at(i) + "t does not increase";
+        for (std::size_t k = 0; k < n; ++k) {
+            const double amax = limits.acceleration[k];
+            const auto rule = [&](const char* what) {
+                return at(i) + text::format("joint %zu's %s breaks the limits since samples[%zu]",
+                                            k + 1, what, i - 1);
+            };
+            if (std::abs(x.qd[k] - a.qd[k]) > amax * dt + kSlack) return rule("velocity change");
+            const double mean = (x.q[k] - a.q[k]) / dt - 0.5 * (a.qd[k] + x.qd[k]);
+            if (std::abs(mean) > 0.25 * amax * dt + kSlack) return rule("motion");
+            if (!jerk) continue;
+            const double j = limits.jerk[k];
+            if (std::abs(x.qdd[k] - a.qdd[k]) > j * dt * (1.0 + kSlack) + kSlack)
+                return rule("acceleration change (its jerk)");
+            const double rate = (x.qd[k] - a.qd[k]) / dt - 0.5 * (a.qdd[k] + x.qdd[k]);
+            if (std::abs(rate) > 0.25 * j * dt * (1.0 + kSlack) + kSlack)
+                return rule("velocity change against its accelerations (its jerk)");
+        }
+    }
+    return "";
 }
 
 }  // namespace modsynth::control

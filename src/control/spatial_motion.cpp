@@ -9,6 +9,7 @@
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/kinematics/dh_motion_bound.h>
 #include <modsynth/kinematics/kinematics.h>
+#include <modsynth/task/limits.h>
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
@@ -99,10 +100,15 @@ std::optional<std::vector<double>> spatial_configuration_at(const task::SpatialT
 
 std::optional<std::vector<Sample>> plan_spatial_motion(const task::SpatialTask& task,
                                                        const kinematics::ArmDesign& design,
-                                                       const SpatialMotionOptions& options,
+                                                       const SpatialMotionOptions& given,
                                                        MotionFailure* failure) {
-    text::require_valid(options);
+    text::require_valid(given);
     check_fits(task, design);
+    // No more samples than a solution file holds (task/limits.h): every
+    // motion written can be read back.
+    SpatialMotionOptions options = given;
+    options.max_samples =
+        std::min(options.max_samples, task::max_motion_samples(design.chain().dof()));
     std::vector<Sample> out;
     const kinematics::DhChain chain = design.chain();
     const double total = chain.total_length();

@@ -176,8 +176,11 @@ ImportResult import_drawing(std::string_view text, DrawingFormat format,
     if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance)) {
         throw InputError("--tolerance", "must be a positive number of metres");
     }
+    // The reading counts against the import's time too.
+    ReadOptions read = options.read;
+    read.deadline = options.deadline;
     const Drawing drawing =
-        format == DrawingFormat::Svg ? read_svg(text, options.read) : read_dxf(text, options.read);
+        format == DrawingFormat::Svg ? read_svg(text, read) : read_dxf(text, read);
     check_deadline(options.deadline, "reading the drawing");
     return import_drawing(drawing, options);
 }

@@ -195,8 +195,19 @@ struct Fitter {
             }
             const double turns = std::abs(dx) / (kTwoPi * s.radius);
             const double pitch = dy / turns;
-            if (std::abs(pitch) >= kMinPitch) {
+            if (std::abs(pitch) >= kMinPitch && std::abs(pitch) <= task::kMaxLength) {
                 add(out, geometry::make_helix3(a, level, s.axis, dx > 0.0, pitch, turns));
+                return;
+            }
+            // Nearly along the axis: a helix of a pitch no task may hold
+            // (past kMaxLength), which strays from its chord by its sagitta
+            // only. Within the tolerance that chord is the primitive;
+            // otherwise the fit below follows it.
+            const double half_sweep_sine = std::sin(0.5 * geometry::kPi * turns);
+            const double sagitta = 2.0 * s.radius * half_sweep_sine * half_sweep_sine;
+            if (std::abs(pitch) > task::kMaxLength && sagitta <= 0.5 * tolerance) {
+                deviation = std::max(deviation, sagitta);
+                add(out, Line3{a, b});
                 return;
             }
         }

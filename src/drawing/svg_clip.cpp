@@ -68,6 +68,13 @@ Segment piece(const Segment& s, double t0, double t1, const std::string& source)
     throw task::InputError(source, "a spline cannot be clipped");
 }
 
+/// Each test of a point against a large region takes as long as its edges:
+/// the deadline is asked before each.
+void stop_at(Clock::time_point deadline, const Curve& curve) {
+    if (deadline != kNoDeadline && Clock::now() >= deadline)
+        throw ImportTimeout("the time limit was reached while clipping " + curve.source);
+}
+
 }  // namespace
 
 bool inside(const Region& region, const Vec2& p) {
@@ -85,7 +92,7 @@ void flatten(const Segment& s, std::vector<Vec2>& ring) {
     for (int i = 1; i <= kCurveChords; ++i) ring.push_back(point(s, double(i) / kCurveChords));
 }
 
-std::vector<Curve> clipped(const Curve& curve, const Region& region) {
+std::vector<Curve> clipped(const Curve& curve, const Region& region, Clock::time_point deadline) {
     std::vector<Curve> out;
     Curve current{curve.source, {}};
     const auto close = [&] {
@@ -97,6 +104,7 @@ std::vector<Curve> clipped(const Curve& curve, const Region& region) {
         const int chords = line ? 1 : kCurveChords / 4;
         std::vector<double> cuts = {0.0, 1.0};
         for (int k = 0; k < chords; ++k) {
+            stop_at(deadline, curve);
             const double ta = double(k) / chords, tb = double(k + 1) / chords;
             const Vec2 a = point(s, ta), b = point(s, tb);
             for (const Shape& shape : region.shapes) {
@@ -111,6 +119,7 @@ std::vector<Curve> clipped(const Curve& curve, const Region& region) {
                         if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) continue;
                         double t = ta + u * (tb - ta);
                         if (!line) {
+                            stop_at(deadline, curve);
                             // The chord crosses near the curve: bisect on the
                             // curve where its ends lie on either side.
                             double lo = ta, hi = tb;
@@ -134,6 +143,7 @@ std::vector<Curve> clipped(const Curve& curve, const Region& region) {
                    cuts.end());
         if (cuts.back() < 1.0) cuts.back() = 1.0;
         for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+            stop_at(deadline, curve);
             if (inside(region, point(s, 0.5 * (cuts[i] + cuts[i + 1])))) {
                 current.segments.push_back(piece(s, cuts[i], cuts[i + 1], curve.source));
             } else {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <modsynth/drawing/curve.h>
+#include <modsynth/drawing/deadline.h>
 
 namespace modsynth::drawing::svg_clip {
 
@@ -28,8 +29,11 @@ bool inside(const Region& region, const Vec2& p);
 
 /// The pieces of `curve` inside `region`, each a curve of its own (same
 /// source). Lines are cut exactly where they cross an edge; curves where
-/// a fine polyline of them does, refined by bisection.
-std::vector<Curve> clipped(const Curve& curve, const Region& region);
+/// a fine polyline of them does, refined by bisection. The work grows with
+/// the chords times the region's edges: past `deadline` it stops with
+/// ImportTimeout.
+std::vector<Curve> clipped(const Curve& curve, const Region& region,
+                           Clock::time_point deadline = kNoDeadline);
 
 /// Appends points along a segment to a ring, its start left out (the
 /// ring's last point) and its end kept: a line as itself, a curve as 256

@@ -1,6 +1,7 @@
 #include <modsynth/drawing/svg_reader.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -641,6 +642,11 @@ void check_elements(XmlElement e, const Rendering& rendering, const ReadOptions&
     }
 }
 
+/// Points of clip outline a drawing may take in all (a curve of a clip path
+/// is 256 of them): 64 MB, where a hundred clipped letters take a few
+/// thousand.
+constexpr std::size_t kMaxClipPoints = 4'000'000;
+
 /// Shared by every element's context: what has been read so far.
 struct SvgState {
     const ReadOptions* options = nullptr;
@@ -658,6 +664,12 @@ struct SvgState {
     /// where they are used.
     std::map<std::string, XmlElement, std::less<>> clip_paths;
     std::vector<svg_clip::Region> clips;
+    /// The region of each clipPath in each user space it was used in, an
+    /// index in `clips`: elements clipped alike share one region, however
+    /// many there are.
+    std::map<std::pair<XmlElement, std::array<double, 6>>, std::size_t> clip_of;
+    /// Points of every region's outline: the clipping's memory and work.
+    std::size_t clip_points = 0;
     std::vector<geometry::Disc> obstacles;
     /// Subpaths of zero length (an icon's dots, drawn by round caps),
     /// skipped: a stroke of the tool cannot make a dot.
@@ -704,8 +716,24 @@ public:
             throw InputError(element_label(e), "clip-path '" + text::printable(value, 60) +
                                                    "' does not name a clipPath of the file");
         }
+        const std::array<double, 6> space = {ctm_.m(0, 0), ctm_.m(0, 1),    ctm_.m(1, 0),
+                                             ctm_.m(1, 1), ctm_.offset.x(), ctm_.offset.y()};
+        const auto key = std::make_pair(found->second, space);
+        if (const auto known = state_->clip_of.find(key); known != state_->clip_of.end()) {
+            clips_.push_back(known->second);
+            return *this;
+        }
+        check_deadline(state_->options->deadline, "reading the clip paths");
+        svg_clip::Region region = clip_region(found->second, ctm_, element_label(e), *state_);
+        for (const auto& shape : region.shapes)
+            for (const auto& ring : shape.rings) state_->clip_points += ring.size();
+        if (state_->clip_points > kMaxClipPoints)
+            throw InputError(element_label(e),
+                             "its clip paths take more than " + std::to_string(kMaxClipPoints) +
+                                 " points of outline in all: too large for a drawing");
+        state_->clip_of.emplace(key, state_->clips.size());
         clips_.push_back(state_->clips.size());
-        state_->clips.push_back(clip_region(found->second, ctm_, element_label(e), *state_));
+        state_->clips.push_back(std::move(region));
         return *this;
     }
 
@@ -1087,6 +1115,19 @@ svg_clip::Region clip_region(XmlElement clip_path, const Affine& ctm, const std:
     }
     if (!property(clip_path, "clip-path").empty() && property(clip_path, "clip-path") != "none")
         throw InputError(user, what + " is clipped itself, which cannot be honoured");
+    // Nor can a shape of it that has a clip of its own (wherever that clip
+    // is defined): said so, not called missing.
+    const std::function<void(XmlElement)> no_inner_clips = [&](XmlElement e) {
+        for (XmlElement c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+            const std::string inner = property(c, "clip-path");
+            if (!inner.empty() && inner != "none")
+                throw InputError(user, what + " holds " + element_label(c) + " clipped by '" +
+                                           text::printable(inner, 60) +
+                                           "', a clip inside a clip, which cannot be honoured");
+            no_inner_clips(c);
+        }
+    };
+    no_inner_clips(clip_path);
     // The clip path's shapes are read as a drawing of their own, in the
     // user space of the element they clip.
     tinyxml2::XMLDocument doc;
@@ -1224,7 +1265,7 @@ Drawing read_svg(std::string_view text, const ReadOptions& options) {
             for (const std::size_t clip : state.curve_clips[i]) {
                 std::vector<Curve> inner;
                 for (const Curve& p : pieces) {
-                    for (Curve& q : svg_clip::clipped(p, state.clips[clip]))
+                    for (Curve& q : svg_clip::clipped(p, state.clips[clip], options.deadline))
                         inner.push_back(std::move(q));
                 }
                 pieces = std::move(inner);

@@ -210,6 +210,13 @@ private:
         }
         g->InsertEndChild(copy);
         use->Parent()->InsertAfterChild(use, g);
+        // The group now draws what the use did, under its id: a use that
+        // refers to this one (SVG allows a use of a use) copies the group,
+        // never the use element deleted below.
+        if (const char* own = use->Attribute("id")) {
+            const auto mine = ids_.find(own);
+            if (mine != ids_.end() && mine->second == use) mine->second = g;
+        }
         use->Parent()->DeleteChild(use);
 
         chain.push_back(id);

@@ -140,14 +140,17 @@ constexpr std::size_t kObstacleTries = 8;
 constexpr std::size_t kMoveTries = 3;
 
 /// Whether the path keeps kClear off every obstacle (a task a reader
-/// accepts).
-bool path_clear(const task::SpatialTask& task) {
+/// accepts). Past the deadline a change counts as not clear: each pair of
+/// a long helix and an obstacle may take tens of milliseconds.
+bool path_clear(const task::SpatialTask& task, const run::Deadline& deadline) {
     for (const auto& o : task.obstacles) {
         const auto gap = [&](const geometry::Vec3& p) {
             return std::max(0.0, geometry::point_gap(p, o));
         };
-        for (const auto& p : task.trajectory)
+        for (const auto& p : task.trajectory) {
+            if (deadline.expired()) return false;
             if (geometry::comes_within(p, gap, kClear)) return false;
+        }
     }
     return true;
 }
@@ -347,12 +350,12 @@ void SpatialRelaxers::obstacle_changes() {
         };
         const auto v = smallest(0.0, farthest, options_.length_tolerance, [&](double d) {
             const task::SpatialTask t = shifted(d);
-            return path_clear(t) && opens(t);
+            return path_clear(t, deadline_) && opens(t);
         });
         if (!v) continue;
         const double d = std::ceil(*v * 100.0) / 100.0;
         const task::SpatialTask t = shifted(d);
-        if (!path_clear(t)) continue;
+        if (!path_clear(t, deadline_)) continue;
         if (offer(TaskPart::obstacle(i),
                   "move " + task::to_string(TaskPart::obstacle(i)) +
                       text::format(" %.2f m outwards, by ", d) + vec_text(d * dir) +
@@ -386,12 +389,12 @@ void SpatialRelaxers::moved_path(const TaskPart& part) {
     };
     const auto v = smallest(0.0, distance, options_.length_tolerance, [&](double d) {
         const task::SpatialTask m = shifted(d);
-        return path_clear(m) && opens(m);
+        return path_clear(m, deadline_) && opens(m);
     });
     if (!v) return;
     const double d = std::min(distance, std::ceil(*v * 100.0) / 100.0);
     const task::SpatialTask m = shifted(d);
-    if (!path_clear(m)) return;
+    if (!path_clear(m, deadline_)) return;
     offer(part,
           "move the path" + text::format(" %.2f m towards ", d) + vec_text(target) + ", by " +
               vec_text(d * dir),

@@ -3,14 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <system_error>
 
 #include <nlohmann/json.hpp>
+
+#include <modsynth/task/input_error.h>
+#include <modsynth/task/input_file.h>
+#include <modsynth/text/printable.h>
 
 namespace modsynth::hardware {
 namespace {
@@ -18,6 +20,10 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "modsynth-catalog/1";
+/// A catalog file lists a family of modules or parts: tens of kilobytes.
+constexpr std::size_t kMaxCatalogFileBytes = 1u << 20;
+/// Files in the catalog folder: a few families and the parts.
+constexpr std::size_t kMaxCatalogFiles = 100;
 
 /// "file: entries[i] (name): key: message", each part only when known.
 [[noreturn]] void fail(const std::string& where, const std::string& message) {
@@ -28,7 +34,7 @@ std::string entry_place(const std::string& file, std::size_t i, const json& entr
     std::string s = file + ": entries[" + std::to_string(i) + "]";
     const auto name = entry.is_object() ? entry.find("name") : entry.end();
     if (entry.is_object() && name != entry.end() && name->is_string())
-        s += " (" + name->get<std::string>() + ")";
+        s += " (" + text::printable(name->get<std::string>()) + ")";
     return s;
 }
 
@@ -139,12 +145,15 @@ Adapter parse_adapter(const json& e, const std::string& place) {
     return a;
 }
 
+/// A catalog file is read like any other input (task/input_file.h): a FIFO
+/// or device among them is refused rather than waited on or read for ever,
+/// and a file past kMaxCatalogFileBytes before it is read.
 std::string read_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw CatalogError(path.string() + ": cannot be read");
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
+    try {
+        return task::read_input_file(path.string(), "catalog", kMaxCatalogFileBytes);
+    } catch (const task::InputError& e) {
+        throw CatalogError(e.what());
+    }
 }
 
 }  // namespace
@@ -203,7 +212,8 @@ void parse_catalog_file(const std::string& text, const std::string& file, Catalo
         fail(file, "kind: expected \"actuator\", \"tube\" or \"adapter\"");
     const std::string kind = kind_it->get<std::string>();
     if (kind != "actuator" && kind != "tube" && kind != "adapter")
-        fail(file, "kind: expected \"actuator\", \"tube\" or \"adapter\", got \"" + kind + "\"");
+        fail(file, "kind: expected \"actuator\", \"tube\" or \"adapter\", got \"" +
+                       text::printable(kind) + "\"");
     std::string family;
     bool default_choice = false;
     if (kind == "actuator") {
@@ -239,7 +249,11 @@ Catalog load_catalog(const std::string& folder) {
     std::error_code ec;
     std::vector<fs::path> files;
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        if (it->path().extension() == ".json") files.push_back(it->path());
+        if (it->path().extension() != ".json") continue;
+        files.push_back(it->path());
+        if (files.size() > kMaxCatalogFiles)
+            throw CatalogError(folder + ": more than " + std::to_string(kMaxCatalogFiles) +
+                               " catalog files");
     }
     if (ec) throw CatalogError(folder + ": the module catalog cannot be read: " + ec.message());
     std::sort(files.begin(), files.end());
@@ -251,7 +265,8 @@ Catalog load_catalog(const std::string& folder) {
     std::set<std::string> names;
     const auto unique = [&](const std::string& name) {
         if (!names.insert(name).second)
-            throw CatalogError(folder + ": the name \"" + name + "\" appears twice in the catalog");
+            throw CatalogError(folder + ": the name \"" + text::printable(name) +
+                               "\" appears twice in the catalog");
     };
     for (const auto& a : catalog.actuators) unique(a.name);
     for (const auto& t : catalog.tubes) unique(t.name);
@@ -259,7 +274,7 @@ Catalog load_catalog(const std::string& folder) {
     for (const auto& f : catalog.families()) {
         if (names.count(f))
             throw CatalogError(
-                folder + ": the family \"" + f +
+                folder + ": the family \"" + text::printable(f) +
                 "\" has the name of a part; robot.modules could not tell them apart");
     }
     return catalog;

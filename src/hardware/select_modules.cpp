@@ -8,6 +8,7 @@
 #include <modsynth/hardware/dynamics.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/printable.h>
 
 namespace modsynth::hardware {
 namespace {
@@ -178,12 +179,14 @@ std::vector<const Actuator*> allowed_actuators(const std::vector<std::string>& n
             const std::vector<const Actuator*> family = catalog.family(names[i]);
             if (family.empty()) {
                 std::string families, models;
+                // Names echoed to a terminal: the user's and the catalog's
+                // as printable text, never its control characters.
                 for (const auto& f : catalog.families())
-                    families += (families.empty() ? "" : ", ") + f;
+                    families += (families.empty() ? "" : ", ") + text::printable(f);
                 for (const auto& c : catalog.actuators)
-                    models += (models.empty() ? "" : ", ") + c.name;
+                    models += (models.empty() ? "" : ", ") + text::printable(c.name);
                 throw task::InputError("robot.modules[" + std::to_string(i) + "]",
-                                       "the module catalog has no \"" + names[i] +
+                                       "the module catalog has no \"" + text::printable(names[i]) +
                                            "\"; its families are " + families + ", its models " +
                                            models);
             }

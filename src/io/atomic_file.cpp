@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
 namespace modsynth::io {
@@ -62,44 +63,92 @@ bool write_all(int fd, const std::string& text) {
 // A device or a pipe (-o /dev/stdout) cannot be replaced, only written to.
 void write_in_place(const std::string& path, const std::string& text) {
     const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-    if (fd < 0) throw std::runtime_error(failure(path, "cannot open for writing", errno));
+    if (fd < 0) throw WriteError(failure(path, "cannot open for writing", errno));
     const bool written = write_all(fd, text);
     const int err = errno;
     ::close(fd);
-    if (!written) throw std::runtime_error(failure(path, "write failed", err));
+    if (!written) throw WriteError(failure(path, "write failed", err));
 }
 
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::string& text) {
-    if (path.empty()) throw std::runtime_error("cannot write a file with an empty name");
+    if (path.empty()) throw WriteError("cannot write a file with an empty name");
     std::error_code ec;
     const fs::file_status st = fs::status(path, ec);
     if (fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st))
         return write_in_place(path, text);
+    AtomicFile file(path);
+    file.write(text);
+    file.commit();
+}
+
+struct AtomicFile::Open {
+    DeferTermination defer;
+    std::string path, temp, target;
+    int fd = -1;
+    int error = 0;  ///< the first write's errno that failed, 0 if none
+};
+
+AtomicFile::AtomicFile(const std::string& path) {
+    if (path.empty()) throw WriteError("cannot write a file with an empty name");
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
     // Renaming onto a symbolic link would replace the link, not its file.
     fs::path target = path;
     if (fs::is_symlink(fs::symlink_status(target, ec)) && fs::is_regular_file(st)) {
         const fs::path real = fs::canonical(target, ec);
         if (!ec) target = real;
     }
-    DeferTermination defer;
-    const std::string temp = temporary_name(target);
-    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0) throw std::runtime_error(failure(path, "cannot open for writing", errno));
+    auto open = std::make_unique<Open>();
+    open->path = path;
+    open->target = target.string();
+    open->temp = temporary_name(target);
+    open->fd = ::open(open->temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (open->fd < 0) throw WriteError(failure(path, "cannot open for writing", errno));
+    open_ = std::move(open);
+}
+
+AtomicFile::~AtomicFile() {
+    if (!open_) return;
+    ::close(open_->fd);
+    ::unlink(open_->temp.c_str());
+}
+
+void AtomicFile::write(std::string_view text) {
+    if (!open_) throw WriteError("write to a file already closed");
+    if (open_->error != 0) return;
+    const char* p = text.data();
+    std::size_t left = text.size();
+    while (left > 0) {
+        const ssize_t n = ::write(open_->fd, p, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            open_->error = n < 0 ? errno : ENOSPC;
+            return;
+        }
+        p += n;
+        left -= static_cast<std::size_t>(n);
+    }
+    bytes_ += text.size();
+}
+
+void AtomicFile::commit() {
+    if (!open_) throw WriteError("commit of a file already closed");
+    const std::unique_ptr<Open> open = std::move(open_);
     // fsync before rename: otherwise a power cut may leave the new name on
     // an empty file.
-    const bool written = write_all(fd, text) && ::fsync(fd) == 0;
-    const int write_errno = errno;
-    if (::close(fd) != 0 || !written) {
-        const int err = written ? errno : write_errno;
-        ::unlink(temp.c_str());
-        throw std::runtime_error(failure(path, "write failed", err));
+    int err = open->error;
+    if (err == 0 && ::fsync(open->fd) != 0) err = errno;
+    if (::close(open->fd) != 0 && err == 0) err = errno;
+    if (err != 0) {
+        ::unlink(open->temp.c_str());
+        throw WriteError(failure(open->path, "write failed", err));
     }
-    if (::rename(temp.c_str(), target.c_str()) != 0) {
-        const int err = errno;
-        ::unlink(temp.c_str());
-        throw std::runtime_error(failure(path, "cannot replace", err));
+    if (::rename(open->temp.c_str(), open->target.c_str()) != 0) {
+        err = errno;
+        ::unlink(open->temp.c_str());
+        throw WriteError(failure(open->path, "cannot replace", err));
     }
 }
 

@@ -5,10 +5,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <istream>
+#include <streambuf>
 #include <utility>
 
 #include <nlohmann/json.hpp>
@@ -70,56 +73,77 @@ std::string json_error_detail(const std::exception& e) {
 
 }  // namespace
 
-std::string read_input_file(const std::string& path, const std::string& what,
-                            std::size_t max_bytes) {
-    // Opened without waiting (a FIFO with no writer would block here), then
-    // judged by what was opened, so that nothing can be swapped in between.
-    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) {
-        const int err = errno;
-        std::error_code ec;
-        if (std::filesystem::is_directory(path, ec))
-            throw InputError(path, "is a folder, not a " + what + " file");
-        throw InputError(path, "cannot open the " + what + " file: " + std::strerror(err));
-    }
-    struct Closer {
-        int fd;
-        ~Closer() { ::close(fd); }
-    } closer{fd};
-    struct stat st {};
-    if (::fstat(fd, &st) != 0)
-        throw InputError(path, "cannot read the " + what + " file: " + std::strerror(errno));
-    if (S_ISDIR(st.st_mode)) throw InputError(path, "is a folder, not a " + what + " file");
-    if (!S_ISREG(st.st_mode)) {
-        throw InputError(
-            path, "is not a regular file (a device, FIFO or socket), not a " + what + " file");
-    }
-    const auto too_large = [&](std::size_t bytes) {
-        return InputError(path, std::to_string(bytes) + " bytes, more than the " +
-                                    std::to_string(max_bytes) + " allowed for a " + what + " file");
-    };
-    if (static_cast<std::uintmax_t>(st.st_size) > max_bytes)
-        throw too_large(static_cast<std::size_t>(st.st_size));
-    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-    // Read to the end, never past the cap: the file may grow meanwhile.
-    std::string content;
-    content.resize(std::min<std::size_t>(static_cast<std::size_t>(st.st_size), max_bytes) + 1);
-    std::size_t got = 0;
-    for (;;) {
-        if (got == content.size()) {
-            if (got > max_bytes) throw too_large(got);
-            content.resize(std::min(max_bytes + 1, std::max<std::size_t>(2 * got, 4096)));
-        }
-        const ssize_t n = ::read(fd, content.data() + got, content.size() - got);
-        if (n < 0 && errno == EINTR) continue;
+namespace {
+
+/// The file's bytes as a stream, a buffer at a time, never past the cap.
+class FileBuffer : public std::streambuf {
+public:
+    explicit FileBuffer(const InputFile& file) : file_(file) {}
+
+protected:
+    int_type underflow() override {
+        if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+        ssize_t n;
+        do {
+            n = ::read(file_.fd(), buffer_.data(), buffer_.size());
+        } while (n < 0 && errno == EINTR);
         if (n < 0)
-            throw InputError(path, "cannot read the " + what + " file: " + std::strerror(errno));
-        if (n == 0) break;
-        got += static_cast<std::size_t>(n);
+            throw InputError(file_.path(),
+                             "cannot read the " + file_.what() + " file: " + std::strerror(errno));
+        if (n == 0) return traits_type::eof();
+        read_ += static_cast<std::size_t>(n);
+        if (read_ > file_.max_bytes()) file_.too_large(read_);
+        setg(buffer_.data(), buffer_.data(), buffer_.data() + n);
+        return traits_type::to_int_type(*gptr());
     }
-    if (got > max_bytes) throw too_large(got);
-    content.resize(got);
-    return content;
+
+private:
+    const InputFile& file_;
+    std::array<char, 1 << 16> buffer_{};
+    std::size_t read_ = 0;
+};
+
+/// Line and column of the byte at 1-based position `byte` of the file,
+/// read back from its start.
+std::pair<std::size_t, std::size_t> file_line_column(const InputFile& file, std::size_t byte) {
+    std::array<char, 1 << 16> buffer{};
+    std::size_t line = 1, column = 1, at = 0;
+    const std::size_t end = byte == 0 ? 0 : byte - 1;
+    while (at < end) {
+        const ssize_t n = ::pread(file.fd(), buffer.data(), std::min(buffer.size(), end - at),
+                                  static_cast<off_t>(at));
+        if (n <= 0) break;
+        for (ssize_t i = 0; i < n; ++i) {
+            if (buffer[static_cast<std::size_t>(i)] == '\n') {
+                ++line;
+                column = 1;
+            } else {
+                ++column;
+            }
+        }
+        at += static_cast<std::size_t>(n);
+    }
+    return {line, column};
+}
+
+}  // namespace
+
+nlohmann::json parse_json_file(const InputFile& file, const JsonCallback& callback) {
+    using nlohmann::json;
+    FileBuffer buffer(file);
+    std::istream in(&buffer);
+    try {
+        return json::parse(in, callback);
+    } catch (const json::parse_error& e) {
+        const auto [line, column] = file_line_column(file, e.byte);
+        throw InputError(kDocument, "not valid JSON at line " + std::to_string(line) + ", column " +
+                                        std::to_string(column) + ": " + parse_detail(e));
+    } catch (const json::out_of_range& e) {
+        throw InputError(kDocument, "a number is too large (" + json_error_detail(e) +
+                                        "); numbers must be finite");
+    } catch (const json::exception& e) {
+        throw InputError(kDocument, "not valid JSON: " + json_error_detail(e));
+    }
 }
 
 nlohmann::json parse_json_text(std::string_view text) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <modsynth/task/limits.h>
+#include <modsynth/task/task.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
@@ -114,6 +115,47 @@ std::string text(const json& j, const std::string& part, const char* what) {
     return j.get<std::string>();
 }
 
+task::JointLimitsSpec joint_limits(const json& limits, const std::string& part,
+                                   std::vector<int>& dof) {
+    require_object(limits, part, "{\"velocity\": 3.35, \"acceleration\": 10}");
+    const char* why = "joint limits need \"velocity\" (rad/s) and \"acceleration\" (rad/s^2)";
+    task::JointLimitsSpec spec;
+    spec.velocity = joint_limit_values(required(limits, part, "velocity", why),
+                                       member(part, "velocity"), "rad/s", dof);
+    spec.acceleration = joint_limit_values(required(limits, part, "acceleration", why),
+                                           member(part, "acceleration"), "rad/s^2", dof);
+    const std::size_t nv = spec.velocity.size(), na = spec.acceleration.size();
+    if (nv > 1 && na > 1 && nv != na) {
+        throw InputError(member(part, "acceleration"),
+                         "has " + std::to_string(na) + " values but velocity has " +
+                             std::to_string(nv) + "; both lists need one value per joint");
+    }
+    if (const json* jerk = optional(limits, "jerk")) {
+        spec.jerk = joint_limit_values(*jerk, member(part, "jerk"), "rad/s^3", dof);
+        const std::size_t nj = spec.jerk.size(), other = std::max(nv, na);
+        if (nj > 1 && other > 1 && nj != other) {
+            throw InputError(member(part, "jerk"), "has " + std::to_string(nj) + " values but " +
+                                                       (nv > 1 ? "velocity" : "acceleration") +
+                                                       " has " + std::to_string(other) +
+                                                       "; every list needs one value per joint");
+        }
+    }
+    const std::size_t per_joint = std::max({nv, na, spec.jerk.size()});
+    if (per_joint > 1) dof = {static_cast<int>(per_joint)};
+    return spec;
+}
+
+json joint_limits_json(const task::JointLimitsSpec& limits) {
+    // One value for every joint is written as a number, as it was read.
+    const auto values = [](const std::vector<double>& v) {
+        return v.size() == 1 ? json(v[0]) : json(v);
+    };
+    json out = {{"velocity", values(limits.velocity)},
+                {"acceleration", values(limits.acceleration)}};
+    if (!limits.jerk.empty()) out["jerk"] = values(limits.jerk);
+    return out;
+}
+
 int whole_number(const json& j, const std::string& part, int lo, int hi, const char* what) {
     const bool integral =
         j.is_number_integer() || (j.is_number_float() && std::isfinite(j.get<double>()) &&
@@ -169,15 +211,6 @@ geometry::Vec3 direction3(const json& j, const std::string& part) {
     return v;
 }
 
-namespace {
-
-/// Joint limits outside this range are typing mistakes rather than actuators,
-/// and would make the motion's times overflow or vanish.
-constexpr double kMinJointLimit = 1e-6;
-constexpr double kMaxJointLimit = 1e6;
-
-}  // namespace
-
 std::vector<double> joint_limit_values(const json& j, const std::string& part, const char* unit,
                                        const std::vector<int>& dof) {
     const auto value = [&](const json& v, const std::string& p) {
@@ -185,10 +218,10 @@ std::vector<double> joint_limit_values(const json& j, const std::string& part, c
         if (x <= 0.0)
             throw InputError(
                 p, "must be greater than 0 " + std::string(unit) + ", got " + text::compact(x));
-        if (x < kMinJointLimit || x > kMaxJointLimit)
+        if (x < task::kMinJointLimit || x > task::kMaxJointLimit)
             throw InputError(p, text::compact(x) + " " + unit + " is outside the " +
-                                    text::compact(kMinJointLimit) + " to " +
-                                    text::compact(kMaxJointLimit) + " allowed");
+                                    text::compact(task::kMinJointLimit) + " to " +
+                                    text::compact(task::kMaxJointLimit) + " allowed");
         return x;
     };
     if (!j.is_array()) return {value(j, part)};

@@ -10,6 +10,7 @@
 
 #include <modsynth/geometry/vec3.h>
 #include <modsynth/task/input_error.h>
+#include <modsynth/task/task.h>
 
 namespace modsynth::io::values {
 
@@ -40,6 +41,16 @@ std::string text(const nlohmann::json& j, const std::string& part, const char* w
 /// count (`dof`).
 std::vector<double> joint_limit_values(const nlohmann::json& j, const std::string& part,
                                        const char* unit, const std::vector<int>& dof);
+/// `robot.joint_limits` (formats.md "Joint limits and timing"), the same in
+/// the plane and in space: velocity, acceleration and optional jerk, each a
+/// number or a list per joint (lists of one length). `dof` is narrowed to a
+/// list's length.
+task::JointLimitsSpec joint_limits(const nlohmann::json& limits, const std::string& part,
+                                   std::vector<int>& dof);
+/// The limits as the readers take them: one value for every joint written
+/// as a number.
+nlohmann::json joint_limits_json(const task::JointLimitsSpec& limits);
+
 /// A whole number of joints from lo to hi.
 int whole_number(const nlohmann::json& j, const std::string& part, int lo, int hi,
                  const char* what);

@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -54,6 +57,17 @@ double finite_number(const json& j, const std::string& part) {
     return j.get<double>();
 }
 
+/// A number of at most `most` in magnitude: a robot's sizes and place lie
+/// within the task's limits (task/limits.h), so that no message or output
+/// prints hundreds of digits for one.
+double within(const json& j, const std::string& part, double most, const char* unit) {
+    const double v = finite_number(j, part);
+    if (std::abs(v) > most)
+        throw InputError(part, text::compact(v) + " " + unit + " is beyond the " +
+                                   text::compact(most) + " " + unit + " allowed");
+    return v;
+}
+
 double positive_number(const json& j, const std::string& part) {
     const double v = finite_number(j, part);
     if (v <= 0.0) throw InputError(part, "must be greater than 0, got " + describe(j));
@@ -78,13 +92,17 @@ std::string text(const json& j, const std::string& part) {
     return j.get<std::string>();
 }
 
+/// A list of numbers, one per joint: `count` of them, or any number of
+/// them when count is negative (a sample read before the robot: its count
+/// is checked once the robot is known, check_joint_count).
 std::vector<double> numbers(const json& j, const std::string& part, int count) {
     require_array(j, part, "numbers");
-    if (static_cast<int>(j.size()) != count) {
+    if (count >= 0 && static_cast<int>(j.size()) != count) {
         throw InputError(part, "expected " + std::to_string(count) +
                                    " numbers (one per joint), got " + std::to_string(j.size()));
     }
     std::vector<double> out;
+    out.reserve(j.size());
     for (std::size_t i = 0; i < j.size(); ++i) out.push_back(finite_number(j[i], element(part, i)));
     return out;
 }
@@ -278,16 +296,26 @@ kinematics::Robot parse_robot(const json& doc) {
         integer(required(r, part, "dof"), member(part, "dof"), task::kMinDof, task::kMaxDof);
     const json& base = required(r, part, "base");
     const std::vector<double> b = numbers(base, member(part, "base"), 2);
+    for (int k = 0; k < 2; ++k)
+        within(base[static_cast<std::size_t>(k)], element(member(part, "base"), k),
+               task::kMaxCoordinate, "m");
     robot.base = {b[0], b[1]};
     const std::string lp = member(part, "link_lengths");
     robot.link_lengths = numbers(required(r, part, "link_lengths"), lp, dof);
-    for (int k = 0; k < dof; ++k) positive_number(r["link_lengths"][k], element(lp, k));
+    for (int k = 0; k < dof; ++k) {
+        positive_number(r["link_lengths"][k], element(lp, k));
+        within(r["link_lengths"][k], element(lp, k), task::kMaxLength, "m");
+    }
     robot.link_diameter =
         positive_number(required(r, part, "link_diameter"), member(part, "link_diameter"));
+    within(r["link_diameter"], member(part, "link_diameter"), task::kMaxLength, "m");
     robot.elbow = 0;
     if (const json* e = optional(r, "elbow")) robot.elbow = parse_elbow(*e, member(part, "elbow"));
     return robot;
 }
+
+/// rad: a twist is an angle; a few turns either way hold every one.
+constexpr double kLargestTwist = 100.0;
 
 /// A spatial solution's robot (formats.md "Spatial tasks"): base [x, y, z]
 /// and one DH row per joint.
@@ -297,6 +325,8 @@ kinematics::DhChain parse_dh_robot(const json& r) {
     const int dof = integer(required(r, part, "dof"), member(part, "dof"), task::kMinSpatialDof,
                             task::kMaxSpatialDof);
     const std::vector<double> b = numbers(required(r, part, "base"), member(part, "base"), 3);
+    for (std::size_t k = 0; k < 3; ++k)
+        within(r["base"][k], element(member(part, "base"), k), task::kMaxCoordinate, "m");
     chain.base = {b[0], b[1], b[2]};
     const std::string dp = member(part, "dh");
     const json& dh = required(r, part, "dh");
@@ -308,13 +338,14 @@ kinematics::DhChain parse_dh_robot(const json& r) {
         const std::string rp = element(dp, k);
         require_object(dh[k], rp);
         kinematics::DhRow row;
-        row.a = finite_number(required(dh[k], rp, "a"), member(rp, "a"));
-        row.alpha = finite_number(required(dh[k], rp, "alpha"), member(rp, "alpha"));
-        row.d = finite_number(required(dh[k], rp, "d"), member(rp, "d"));
+        row.a = within(required(dh[k], rp, "a"), member(rp, "a"), task::kMaxLength, "m");
+        row.alpha = within(required(dh[k], rp, "alpha"), member(rp, "alpha"), kLargestTwist, "rad");
+        row.d = within(required(dh[k], rp, "d"), member(rp, "d"), task::kMaxLength, "m");
         chain.rows.push_back(row);
     }
     chain.link_diameter =
         positive_number(required(r, part, "link_diameter"), member(part, "link_diameter"));
+    within(r["link_diameter"], member(part, "link_diameter"), task::kMaxLength, "m");
     return chain;
 }
 
@@ -327,27 +358,25 @@ control::Phase parse_phase(const json& j, const std::string& part) {
                                text::printable(p) + "\"");
 }
 
-/// Seconds: no motion a robot executes lasts longer (32 years), and a ROS 2
-/// Duration holds its whole seconds in 32 bits.
-constexpr double kLongestMotion = 1e9;
-
-control::Sample parse_sample(const json& j, const std::string& part, int dof) {
+/// A sample with any number of joints (check_joint_count says whether
+/// they are the robot's).
+control::Sample parse_sample(const json& j, const std::string& part) {
     require_object(j, part);
     control::Sample s;
     s.t = finite_number(required(j, part, "t"), member(part, "t"));
-    if (!(s.t >= 0.0 && s.t <= kLongestMotion)) {
+    if (!(s.t >= 0.0 && s.t <= task::kLongestMotion)) {
         throw InputError(member(part, "t"), text::compact(s.t) +
                                                 " s: a motion's times lie within 0 to " +
-                                                text::compact(kLongestMotion) + " s");
+                                                text::compact(task::kLongestMotion) + " s");
     }
     s.phase = parse_phase(required(j, part, "phase"), member(part, "phase"));
     s.primitive = integer(required(j, part, "primitive"), member(part, "primitive"), 0,
                           std::numeric_limits<int>::max());
-    s.q = numbers(required(j, part, "q"), member(part, "q"), dof);
+    s.q = numbers(required(j, part, "q"), member(part, "q"), -1);
     if (const json* k = optional(j, "stroke"))
         s.stroke = integer(*k, member(part, "stroke"), 0, std::numeric_limits<int>::max());
-    if (const json* v = optional(j, "qd")) s.qd = numbers(*v, member(part, "qd"), dof);
-    if (const json* v = optional(j, "qdd")) s.qdd = numbers(*v, member(part, "qdd"), dof);
+    if (const json* v = optional(j, "qd")) s.qd = numbers(*v, member(part, "qd"), -1);
+    if (const json* v = optional(j, "qdd")) s.qdd = numbers(*v, member(part, "qdd"), -1);
     return s;
 }
 
@@ -361,22 +390,99 @@ void require_like_first(const std::vector<double>& values, const std::vector<dou
                                                   "give it on every sample or on none");
 }
 
+/// The samples of a document, one at a time as the parser completes them:
+/// a long motion's file is never held as a tree (about 1 KB per sample)
+/// but as its samples. What is wrong with one is kept, not thrown, until
+/// the document is known to be a solved one whose robot is valid: the
+/// errors then come in the order of the document's checks.
+class SampleReader {
+public:
+    /// The parser's callback: takes the elements of the document's
+    /// top-level "samples" list out of the tree as they complete.
+    bool on_event(int depth, json::parse_event_t event, json& parsed) {
+        using E = json::parse_event_t;
+        if (depth == 1 && event == E::key) {
+            samples_key_ = parsed.is_string() && parsed.get_ref<const std::string&>() == "samples";
+            return true;
+        }
+        if (depth == 1 && event == E::array_start && samples_key_) {
+            // A later "samples" key wins, as in a tree.
+            *this = SampleReader{};
+            in_list_ = seen_ = true;
+            return true;
+        }
+        if (depth == 1 && event == E::array_end && in_list_) {
+            in_list_ = false;
+            return true;
+        }
+        if (!in_list_ || depth != 2) return true;
+        if (event == E::object_end || event == E::value || event == E::array_end) {
+            add(parsed);
+            return false;
+        }
+        return true;
+    }
+
+    /// One sample of the list, in order.
+    void add(const json& j) {
+        const std::size_t i = count_++;
+        if (error_) return;
+        try {
+            const std::string part = element("samples", i);
+            control::Sample s = parse_sample(j, part);
+            if (i > 0 && s.t < samples_.back().t)
+                throw InputError(member(part, "t"), "time goes backwards");
+            // Velocities and accelerations are on every sample or on none.
+            if (i > 0) {
+                require_like_first(s.qd, samples_.front().qd, part, "qd");
+                require_like_first(s.qdd, samples_.front().qdd, part, "qdd");
+            }
+            samples_.push_back(std::move(s));
+        } catch (const InputError& e) {
+            error_ = e;
+            samples_.clear();
+            samples_.shrink_to_fit();
+        }
+    }
+
+    /// Whether a list of samples was taken out of the document.
+    bool seen() const { return seen_; }
+
+    /// The samples, each with `dof` joints; throws the first error found.
+    std::vector<control::Sample> take(int dof) {
+        if (error_) throw *error_;
+        if (samples_.empty())
+            throw InputError("samples", "is empty; a solved solution needs its motion");
+        for (std::size_t i = 0; i < samples_.size(); ++i) {
+            const std::string part = element("samples", i);
+            const control::Sample& s = samples_[i];
+            for (const auto& [values, key] :
+                 {std::pair{&s.q, "q"}, std::pair{&s.qd, "qd"}, std::pair{&s.qdd, "qdd"}}) {
+                if (values->empty() && key != std::string("q")) continue;
+                if (static_cast<int>(values->size()) != dof)
+                    throw InputError(member(part, key), "expected " + std::to_string(dof) +
+                                                            " numbers (one per joint), got " +
+                                                            std::to_string(values->size()));
+            }
+        }
+        return std::move(samples_);
+    }
+
+private:
+    std::vector<control::Sample> samples_;
+    std::optional<InputError> error_;
+    std::size_t count_ = 0;
+    bool samples_key_ = false, in_list_ = false, seen_ = false;
+};
+
+/// The samples under "samples" of a document held as a tree.
 std::vector<control::Sample> parse_samples(const json& doc, int dof) {
     const std::string part = "samples";
     const json& list = required(doc, "", "samples");
     require_array(list, part, "samples");
-    if (list.empty()) throw InputError(part, "is empty; a solved solution needs its motion");
-    std::vector<control::Sample> out;
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        out.push_back(parse_sample(list[i], element(part, i), dof));
-        if (i > 0 && out[i].t < out[i - 1].t) {
-            throw InputError(member(element(part, i), "t"), "time goes backwards");
-        }
-        // Velocities and accelerations are on every sample or on none.
-        require_like_first(out[i].qd, out[0].qd, element(part, i), "qd");
-        require_like_first(out[i].qdd, out[0].qdd, element(part, i), "qdd");
-    }
-    return out;
+    SampleReader reader;
+    for (const json& x : list) reader.add(x);
+    return reader.take(dof);
 }
 
 verify::Certificate parse_certificate(const json& c) {
@@ -416,9 +522,9 @@ void check_format(const json& doc) {
     }
 }
 
-}  // namespace
-
-ParsedSolution parse_solution(const json& doc) {
+/// The solution; its samples from `taken` when the parser took them out of
+/// the document, else from the document.
+ParsedSolution parse_solution_document(const json& doc, SampleReader* taken) {
     if (!doc.is_object()) {
         throw InputError(kDocument,
                          "expected a JSON object {\"format\": \"modsynth-solution/1\", "
@@ -436,12 +542,15 @@ ParsedSolution parse_solution(const json& doc) {
     }
     // A robot with `dh` is a spatial one (formats.md "Spatial tasks").
     const json* robot = optional(doc, "robot");
+    const auto samples = [&](int dof) {
+        return taken && taken->seen() ? taken->take(dof) : parse_samples(doc, dof);
+    };
     if (robot && robot->is_object() && robot->contains("dh")) {
         s.dh_robot = parse_dh_robot(*robot);
-        s.samples = parse_samples(doc, s.dh_robot->dof());
+        s.samples = samples(s.dh_robot->dof());
     } else {
         s.robot = parse_robot(doc);
-        s.samples = parse_samples(doc, s.robot.dof());
+        s.samples = samples(s.robot.dof());
         if (s.robot.elbow == 0) s.robot.elbow = elbow_from_samples(s.samples);
     }
     if (const json* c = optional(doc, "certificate")) {
@@ -451,12 +560,35 @@ ParsedSolution parse_solution(const json& doc) {
     return out;
 }
 
+}  // namespace
+
+ParsedSolution parse_solution(const json& doc) { return parse_solution_document(doc, nullptr); }
+
 ParsedSolution parse_solution_text(std::string_view text) {
-    return parse_solution(parse_json_text(text));
+    SampleReader reader;
+    json doc;
+    try {
+        doc = json::parse(text.begin(), text.end(),
+                          [&](int depth, json::parse_event_t event, json& parsed) {
+                              return reader.on_event(depth, event, parsed);
+                          });
+    } catch (const json::exception&) {
+        // The messages with their line and column.
+        parse_json_text(text);
+        throw;
+    }
+    return parse_solution_document(doc, &reader);
 }
 
 ParsedSolution load_solution(const std::string& path) {
-    return parse_solution_text(read_input_file(path, "solution", task::kMaxSolutionBytes));
+    // Read as it is parsed, its samples taken out as they complete: memory
+    // is the motion's, not the file's text and tree.
+    const InputFile file(path, "solution", task::kMaxSolutionBytes);
+    SampleReader reader;
+    const json doc = parse_json_file(file, [&](int depth, json::parse_event_t event, json& parsed) {
+        return reader.on_event(depth, event, parsed);
+    });
+    return parse_solution_document(doc, &reader);
 }
 
 void check_solution_fits(const task::Task& task, const synth::Solution& solution) {

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
 #include <modsynth/io/atomic_file.h>
 #include <modsynth/io/json_numbers.h>
+#include <modsynth/task/limits.h>
 
 namespace modsynth::io {
 namespace {
@@ -138,6 +141,11 @@ void append_number(std::string& out, double v) {
     out.append(buf.data(), end);
 }
 
+bool has_strokes(const std::vector<control::Sample>& samples) {
+    return std::any_of(samples.begin(), samples.end(),
+                       [](const control::Sample& x) { return x.stroke != 0; });
+}
+
 void append_array(std::string& out, const char* key, const std::vector<double>& values) {
     out += "\n   \"";
     out += key;
@@ -153,34 +161,28 @@ void append_array(std::string& out, const char* key, const std::vector<double>& 
     out += "\n   ]";
 }
 
-/// The samples as the members of `to_json(solution).dump(1)`'s "samples"
-/// array (keys in nlohmann's sorted order).
-void append_samples(std::string& out, const std::vector<control::Sample>& samples) {
-    const bool strokes = std::any_of(samples.begin(), samples.end(),
-                                     [](const control::Sample& x) { return x.stroke != 0; });
-    out.reserve(out.size() + samples.size() * 160);
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-        const auto& x = samples[i];
-        out += i ? ",\n  {" : "\n  {";
-        out += "\n   \"phase\": \"";
-        out += phase_name(x.phase);
-        out += "\",\n   \"primitive\": ";
-        out += std::to_string(x.primitive);
+/// Sample i as a member of `to_json(solution).dump(1)`'s "samples" array
+/// (keys in nlohmann's sorted order), its separator before it.
+void append_sample(std::string& out, const control::Sample& x, std::size_t i, bool strokes) {
+    out += i ? ",\n  {" : "\n  {";
+    out += "\n   \"phase\": \"";
+    out += phase_name(x.phase);
+    out += "\",\n   \"primitive\": ";
+    out += std::to_string(x.primitive);
+    out += ",";
+    append_array(out, "q", x.q);
+    if (!x.qd.empty()) {
         out += ",";
-        append_array(out, "q", x.q);
-        if (!x.qd.empty()) {
-            out += ",";
-            append_array(out, "qd", x.qd);
-        }
-        if (!x.qdd.empty()) {
-            out += ",";
-            append_array(out, "qdd", x.qdd);
-        }
-        if (strokes) out += ",\n   \"stroke\": " + std::to_string(x.stroke);
-        out += ",\n   \"t\": ";
-        append_number(out, x.t);
-        out += "\n  }";
+        append_array(out, "qd", x.qd);
     }
+    if (!x.qdd.empty()) {
+        out += ",";
+        append_array(out, "qdd", x.qdd);
+    }
+    if (strokes) out += ",\n   \"stroke\": " + std::to_string(x.stroke);
+    out += ",\n   \"t\": ";
+    append_number(out, x.t);
+    out += "\n  }";
 }
 
 nlohmann::json document(const synth::Solution& s, bool with_samples) {
@@ -206,8 +208,7 @@ nlohmann::json document(const synth::Solution& s, bool with_samples) {
     }
     // `stroke` only when the motion has several (formats.md "Several
     // strokes": default 0), so one-stroke solutions read as the base format.
-    const bool strokes = std::any_of(s.samples.begin(), s.samples.end(),
-                                     [](const control::Sample& x) { return x.stroke != 0; });
+    const bool strokes = has_strokes(s.samples);
     nlohmann::json samples = nlohmann::json::array();
     if (with_samples) {
         for (const auto& x : s.samples) {
@@ -237,20 +238,55 @@ nlohmann::json document(const synth::Solution& s, bool with_samples) {
 nlohmann::json to_json(const synth::Solution& s) { return document(s, true); }
 
 void write_solution(const synth::Solution& solution, const std::string& path) {
-    // A motion has up to ~10^6 samples: building a JSON value per sample
-    // took longer than the rest of a solve on long tasks, past the time
-    // limit. The samples are written straight into the text that
-    // `to_json(solution).dump(1)` gives, byte for byte.
-    std::string text = document(solution, false).dump(1);
+    // A motion has up to hundreds of thousands of samples: building a JSON
+    // value per sample took longer than the rest of a solve on long tasks,
+    // and holding the text whole several times the file's size. The
+    // samples are written straight into the file, a piece at a time, as the
+    // text `to_json(solution).dump(1)` gives, byte for byte.
+    const std::string text = document(solution, false).dump(1);
     const std::string empty = "\n \"samples\": []";
     const std::size_t at = text.find(empty);
-    if (at == std::string::npos || solution.samples.empty())
-        return write_file_atomically(path, text + '\n');
-    std::string samples = "\n \"samples\": [";
-    append_samples(samples, solution.samples);
-    samples += "\n ]";
-    text.replace(at, empty.size(), samples);
-    write_file_atomically(path, text + '\n');
+    std::error_code ec;
+    const auto st = std::filesystem::status(path, ec);
+    const bool device = std::filesystem::exists(st) && !std::filesystem::is_regular_file(st) &&
+                        !std::filesystem::is_directory(st);
+    if (at == std::string::npos || solution.samples.empty() || device) {
+        std::string whole = text;
+        if (at != std::string::npos && !solution.samples.empty()) {
+            std::string samples = "\n \"samples\": [";
+            const bool strokes = has_strokes(solution.samples);
+            for (std::size_t i = 0; i < solution.samples.size(); ++i)
+                append_sample(samples, solution.samples[i], i, strokes);
+            whole.replace(at, empty.size(), samples + "\n ]");
+        }
+        return write_file_atomically(path, whole + '\n');
+    }
+    AtomicFile file(path);
+    file.write(std::string_view(text).substr(0, at));
+    std::string piece = "\n \"samples\": [";
+    constexpr std::size_t kPiece = 1u << 20;
+    piece.reserve(kPiece + 4096);
+    const bool strokes = has_strokes(solution.samples);
+    // The planners keep a motion within what a file holds
+    // (task::max_motion_samples); a file past the readers' cap all the same
+    // (a task name of megabytes) is not left behind as if it could be read.
+    const auto put = [&] {
+        if (file.bytes() + piece.size() > task::kMaxSolutionBytes)
+            throw WriteError(path + ": the solution would take more than the " +
+                             std::to_string(task::kMaxSolutionBytes) +
+                             " bytes a solution file may have; not written");
+        file.write(piece);
+        piece.clear();
+    };
+    for (std::size_t i = 0; i < solution.samples.size(); ++i) {
+        append_sample(piece, solution.samples[i], i, strokes);
+        if (piece.size() >= kPiece) put();
+    }
+    piece += "\n ]";
+    piece.append(text, at + empty.size(), std::string::npos);
+    piece += '\n';
+    put();
+    file.commit();
 }
 
 }  // namespace modsynth::io

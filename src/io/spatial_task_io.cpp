@@ -11,6 +11,7 @@
 
 #include <modsynth/geometry/curve_distance.h>
 #include <modsynth/geometry/distance3.h>
+#include <modsynth/io/check_timeout.h>
 #include <modsynth/io/input.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/task/limits.h>
@@ -164,8 +165,8 @@ ReadPrimitive read_helix(const json& prim, const std::string& part) {
                                        "an advance along the axis per turn in metres");
     if (!(std::abs(pitch) >= kMinPitch))
         throw InputError(pp, "|pitch| must be at least " + metres(kMinPitch) +
-                                 " m so that neighbouring turns stay apart, got " + metres(pitch) +
-                                 " m");
+                                 " m so that neighbouring turns stay apart, got " +
+                                 text::compact(pitch) + " m");
     if (std::abs(pitch) > task::kMaxLength)
         throw InputError(pp, metres(pitch) + " m is more than the " +
                                  text::compact(task::kMaxLength) + " m allowed for a size");
@@ -182,6 +183,12 @@ ReadPrimitive read_helix(const json& prim, const std::string& part) {
     require_off_axis(start, center, axis, part, "helix", "axis");
     check_radius_key(prim, part, (start - center).norm());
     const geometry::Helix3 helix = geometry::make_helix3(start, center, given, ccw, pitch, turns);
+    // As a line's: a helix of a vanishing part of a turn (1e-12 of one, or
+    // the least double) is no path to follow.
+    if (!(geometry::length(geometry::Primitive3(helix)) >= kDegenerate))
+        throw InputError(
+            part, "helix has zero length: " + text::compact(turns) + " turns of it are " +
+                      text::compact(geometry::length(geometry::Primitive3(helix))) + " m long");
     const Vec3 end = geometry::end_point(helix);
     for (int k = 0; k < 3; ++k)
         if (std::abs(end[k]) > task::kMaxCoordinate)
@@ -436,25 +443,10 @@ std::vector<double> read_twists(const json& j, const std::string& part) {
     return out;
 }
 
+/// As in the plane (jerk included): one reader of the key for both.
 void read_joint_limits(const json& robot, const std::string& robot_part, SpatialRobotSpec& r) {
-    const json* limits = optional(robot, "joint_limits");
-    if (!limits) return;
-    const std::string part = member(robot_part, "joint_limits");
-    require_object(*limits, part, "{\"velocity\": 3.35, \"acceleration\": 10}");
-    const char* why = "joint limits need \"velocity\" (rad/s) and \"acceleration\" (rad/s^2)";
-    task::JointLimitsSpec spec;
-    spec.velocity = joint_limit_values(required(*limits, part, "velocity", why),
-                                       member(part, "velocity"), "rad/s", r.dof);
-    spec.acceleration = joint_limit_values(required(*limits, part, "acceleration", why),
-                                           member(part, "acceleration"), "rad/s^2", r.dof);
-    const std::size_t nv = spec.velocity.size(), na = spec.acceleration.size();
-    if (nv > 1 && na > 1 && nv != na)
-        throw InputError(member(part, "acceleration"),
-                         "has " + std::to_string(na) + " values but velocity has " +
-                             std::to_string(nv) + "; both lists need one value per joint");
-    const std::size_t per_joint = std::max(nv, na);
-    if (per_joint > 1) r.dof = {static_cast<int>(per_joint)};
-    r.joint_limits = std::move(spec);
+    if (const json* limits = optional(robot, "joint_limits"))
+        r.joint_limits = values::joint_limits(*limits, member(robot_part, "joint_limits"), r.dof);
 }
 
 void read_loads(const json& robot, const std::string& part, SpatialRobotSpec& r) {
@@ -558,8 +550,10 @@ geometry::Sphere bounding_ball(const Primitive3& p) {
 }
 
 /// Nothing can trace a path that runs through an obstacle, whatever the
-/// robot: the path must stay outside every obstacle (as in the plane).
-void check_clearance(const SpatialTask& task) {
+/// robot: the path must stay outside every obstacle (as in the plane). A
+/// curve's pair with an obstacle may take tens of milliseconds (a helix of
+/// a thousand turns round a post), so the deadline is asked before each.
+void check_clearance(const SpatialTask& task, const run::Deadline& deadline) {
     std::vector<geometry::Sphere> balls;
     balls.reserve(task.trajectory.size());
     for (const Primitive3& p : task.trajectory) balls.push_back(bounding_ball(p));
@@ -588,6 +582,10 @@ void check_clearance(const SpatialTask& task) {
             const Primitive3& p = task.trajectory[j];
             if ((balls[j].center - around.center).norm() > balls[j].radius + around.radius + 1e-9)
                 continue;
+            if (deadline.expired())
+                throw CheckTimeout(task.name, "checking " +
+                                                  task::part_name(task, static_cast<int>(j)) +
+                                                  " against " + element("obstacles", i));
             // A line's distance to a core is exact; a curve's is decided by
             // the branch and bound of curve_distance.h.
             const auto* line = std::get_if<geometry::Line3>(&p);
@@ -704,7 +702,7 @@ json obstacle_json(const Obstacle3& o) {
 
 }  // namespace
 
-SpatialTask parse_spatial_task(const json& doc) {
+SpatialTask parse_spatial_task(const json& doc, const run::Deadline& deadline) {
     if (!doc.is_object())
         throw InputError(kDocument,
                          "expected a JSON object {\"format\": \"modsynth-task/1\", \"space\": "
@@ -732,20 +730,27 @@ SpatialTask parse_spatial_task(const json& doc) {
             return read_box(j, part, false, "a base region needs \"min\" and \"max\" corners");
         });
     task.robot = read_robot(doc);
-    check_clearance(task);
+    check_clearance(task, deadline);
     return task;
 }
 
-SpatialTask parse_spatial_task_text(std::string_view text) {
+SpatialTask parse_spatial_task_text(std::string_view text, const run::Deadline& deadline) {
     if (text.size() > task::kMaxTaskBytes)
         throw InputError(kDocument, std::to_string(text.size()) + " bytes, more than the " +
                                         std::to_string(task::kMaxTaskBytes) +
                                         " allowed for a task");
-    return parse_spatial_task(parse_json_text(text));
+    return parse_spatial_task(parse_json_text(text), deadline);
 }
 
-SpatialTask load_spatial_task(const std::string& path) {
-    SpatialTask task = parse_spatial_task_text(read_input_file(path, "task", task::kMaxTaskBytes));
+SpatialTask load_spatial_task(const std::string& path, const run::Deadline& deadline) {
+    SpatialTask task;
+    try {
+        task =
+            parse_spatial_task_text(read_input_file(path, "task", task::kMaxTaskBytes), deadline);
+    } catch (const CheckTimeout& e) {
+        if (!e.task_name().empty()) throw;
+        throw CheckTimeout(std::filesystem::path(path).stem().string(), e.doing());
+    }
     if (task.name.empty()) task.name = std::filesystem::path(path).stem().string();
     return task;
 }
@@ -782,13 +787,7 @@ json to_json(const SpatialTask& task) {
                   {"module_height", r.module_height},
                   {"adapter_length", r.adapter_length},
                   {"ee_rod_diameter", r.ee_rod_diameter}};
-    if (const auto& l = r.joint_limits) {
-        const auto values = [](const std::vector<double>& v) {
-            return v.size() == 1 ? json(v[0]) : json(v);
-        };
-        robot["joint_limits"] = {{"velocity", values(l->velocity)},
-                                 {"acceleration", values(l->acceleration)}};
-    }
+    if (const auto& l = r.joint_limits) robot["joint_limits"] = values::joint_limits_json(*l);
     if (!r.modules.empty()) robot["modules"] = r.modules;
     if (r.payload > 0.0) robot["payload"] = r.payload;
     if (r.gravity != SpatialRobotSpec{}.gravity) robot["gravity"] = point_json(r.gravity);

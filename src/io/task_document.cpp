@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/check_timeout.h>
 #include <modsynth/io/input.h>
 #include <modsynth/io/spatial_task_io.h>
 #include <modsynth/io/task_io.h>
@@ -17,21 +18,28 @@ bool is_spatial(const nlohmann::json& doc) {
     return it != doc.end() && it->is_string() && it->get<std::string>() == "3d";
 }
 
-TaskDocument parse_task_document(const nlohmann::json& doc) {
-    if (is_spatial(doc)) return parse_spatial_task(doc);
+TaskDocument parse_task_document(const nlohmann::json& doc, const run::Deadline& deadline) {
+    if (is_spatial(doc)) return parse_spatial_task(doc, deadline);
     return parse_task(doc);
 }
 
-TaskDocument parse_task_document_text(std::string_view text) {
+TaskDocument parse_task_document_text(std::string_view text, const run::Deadline& deadline) {
     if (text.size() > task::kMaxTaskBytes)
         throw task::InputError("(document)",
                                std::to_string(text.size()) + " bytes, more than the " +
                                    std::to_string(task::kMaxTaskBytes) + " allowed for a task");
-    return parse_task_document(parse_json_text(text));
+    return parse_task_document(parse_json_text(text), deadline);
 }
 
-TaskDocument load_task_document(const std::string& path) {
-    TaskDocument doc = parse_task_document_text(read_input_file(path, "task", task::kMaxTaskBytes));
+TaskDocument load_task_document(const std::string& path, const run::Deadline& deadline) {
+    TaskDocument doc;
+    try {
+        doc =
+            parse_task_document_text(read_input_file(path, "task", task::kMaxTaskBytes), deadline);
+    } catch (const CheckTimeout& e) {
+        if (!e.task_name().empty()) throw;
+        throw CheckTimeout(std::filesystem::path(path).stem().string(), e.doing());
+    }
     std::visit(
         [&](auto& t) {
             if (t.name.empty()) t.name = std::filesystem::path(path).stem().string();

@@ -380,40 +380,11 @@ void parse_loads(const json& robot, const std::string& part, RobotSpec& r) {
     }
 }
 
-using values::joint_limit_values;
-
 /// `robot.joint_limits`. A list with one value per joint fixes the joint
 /// count: the search then considers only that count.
 void parse_joint_limits(const json& robot, const std::string& robot_part, RobotSpec& r) {
-    const json* limits = optional(robot, "joint_limits");
-    if (!limits) return;
-    const std::string part = member(robot_part, "joint_limits");
-    require_object(*limits, part, "{\"velocity\": 3.35, \"acceleration\": 10}");
-    const char* why = "joint limits need \"velocity\" (rad/s) and \"acceleration\" (rad/s^2)";
-    task::JointLimitsSpec spec;
-    spec.velocity = joint_limit_values(required(*limits, part, "velocity", why),
-                                       member(part, "velocity"), "rad/s", r.dof);
-    spec.acceleration = joint_limit_values(required(*limits, part, "acceleration", why),
-                                           member(part, "acceleration"), "rad/s^2", r.dof);
-    const std::size_t nv = spec.velocity.size(), na = spec.acceleration.size();
-    if (nv > 1 && na > 1 && nv != na) {
-        throw InputError(member(part, "acceleration"),
-                         "has " + std::to_string(na) + " values but velocity has " +
-                             std::to_string(nv) + "; both lists need one value per joint");
-    }
-    if (const json* jerk = optional(*limits, "jerk")) {
-        spec.jerk = joint_limit_values(*jerk, member(part, "jerk"), "rad/s^3", r.dof);
-        const std::size_t nj = spec.jerk.size(), other = std::max(nv, na);
-        if (nj > 1 && other > 1 && nj != other) {
-            throw InputError(member(part, "jerk"), "has " + std::to_string(nj) + " values but " +
-                                                       (nv > 1 ? "velocity" : "acceleration") +
-                                                       " has " + std::to_string(other) +
-                                                       "; every list needs one value per joint");
-        }
-    }
-    const std::size_t per_joint = std::max({nv, na, spec.jerk.size()});
-    if (per_joint > 1) r.dof = {static_cast<int>(per_joint)};
-    r.joint_limits = std::move(spec);
+    if (const json* limits = optional(robot, "joint_limits"))
+        r.joint_limits = values::joint_limits(*limits, member(robot_part, "joint_limits"), r.dof);
 }
 
 RobotSpec parse_robot(const json& doc) {
@@ -591,15 +562,8 @@ json to_json(const Task& task) {
                   {"module_height", task.robot.module_height},
                   {"adapter_length", task.robot.adapter_length},
                   {"ee_rod_diameter", task.robot.ee_rod_diameter}};
-    if (const auto& l = task.robot.joint_limits) {
-        // One value for every joint is written as a number, as it was read.
-        const auto values = [](const std::vector<double>& v) {
-            return v.size() == 1 ? json(v[0]) : json(v);
-        };
-        robot["joint_limits"] = {{"velocity", values(l->velocity)},
-                                 {"acceleration", values(l->acceleration)}};
-        if (!l->jerk.empty()) robot["joint_limits"]["jerk"] = values(l->jerk);
-    }
+    if (const auto& l = task.robot.joint_limits)
+        robot["joint_limits"] = values::joint_limits_json(*l);
     add_loads_json(task.robot, robot);
     json doc = {{"format", kFormat},
                 {"name", task.name},

@@ -126,8 +126,8 @@ std::string modules_section(const synth::Solution& solution) {
     if (!solution.modules) return "";
     const hardware::ModuleSelection& m = *solution.modules;
     std::string s = "## Modules\n\n";
-    if (!m.checked) return s + m.message + ".\n\n";
-    if (m.overloaded_joint > 0) s += "**Warning:** " + m.message + ".\n\n";
+    if (!m.checked) return s + text::markdown_literal(m.message) + ".\n\n";
+    if (m.overloaded_joint > 0) s += "**Warning:** " + text::markdown_literal(m.message) + ".\n\n";
     s += "Lightest allowed module per joint that carries the motion: peak |torque| within its "
          "peak torque, RMS torque within its continuous torque, |speed| within its top speed. "
          "Margin: rating minus load.\n\n"

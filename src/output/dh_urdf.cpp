@@ -13,6 +13,8 @@
 #include <modsynth/kinematics/dh_chain.h>
 #include <modsynth/output/urdf.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/printable.h>
+#include <modsynth/text/xml.h>
 
 namespace modsynth::output {
 namespace {
@@ -84,7 +86,9 @@ std::vector<const hardware::Actuator*> modules_of(const task::SpatialTask& task,
         std::vector<const hardware::Actuator*> out;
         for (const auto& j : solution.modules->joints) {
             const hardware::Actuator* a = catalog.actuator(j.module);
-            if (!a) throw std::runtime_error("the module catalog has no \"" + j.module + "\"");
+            if (!a)
+                throw std::runtime_error("the module catalog has no \"" +
+                                         text::printable(j.module) + "\"");
             out.push_back(a);
         }
         return out;
@@ -132,7 +136,7 @@ std::string robot_urdf(const task::SpatialTask& task, const synth::Solution& sol
          "axis of link \"tool\" "
          "there is the tool's axis. Joint "
          "angles are those of the solution's samples. Modules (joint 1 first): " +
-         names +
+         text::xml_comment(names) +
          (chosen ? " (chosen to carry the motion)"
                  : " (not chosen for a load: the strongest allowed)") +
          ". Limits: the motion's range plus " + text::format("%.2f", kJointLimitMargin) +

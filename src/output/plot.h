@@ -37,8 +37,6 @@ std::string pt(const Frame& f, const Vec2& p);
 std::vector<Vec2> polyline(const geometry::Primitive& p, const Frame& f);
 /// Path data "M .. L .." through the points (closed with Z when asked).
 std::string path_data(const Frame& f, const std::vector<Vec2>& points, bool closed);
-/// Escapes text for HTML and attribute values.
-std::string escape(const std::string& text);
 /// One colour per primitive, repeating after ten.
 std::string primitive_colour(int j);
 

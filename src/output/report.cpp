@@ -7,6 +7,7 @@
 #include <modsynth/output/recertify.h>
 #include <modsynth/task/strokes.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/xml.h>
 
 #include "plot.h"
 #include "report_assets.h"
@@ -18,7 +19,7 @@
 namespace modsynth::output {
 namespace {
 
-using plot::escape;
+using text::xml_text;
 using namespace figures;
 using plot::Frame;
 
@@ -276,10 +277,10 @@ std::string header(const task::Task& task, const synth::Solution& s) {
     const std::string name = task.name.empty() ? "task" : task.name;
     return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta "
            "charset=\"utf-8\">\n<title>modsynth: " +
-           escape(name) + "</title>\n<style>" + assets::kStyle +
+           xml_text(name) + "</title>\n<style>" + assets::kStyle +
            "</style>\n</head>\n<body>\n"
            "<header><h1>" +
-           escape(name) + " <span class=\"status " + status + "\">" + status +
+           xml_text(name) + " <span class=\"status " + status + "\">" + status +
            "</span></h1>\n<p class=\"note\">" +
            (task::has_strokes(task) ? std::to_string(task::stroke_count(task)) + " strokes, "
                                     : std::string()) +
@@ -307,7 +308,7 @@ std::string html_report(const task::Task& task, const synth::Solution& solution,
     if (figures.comparison) out += comparison::section(*figures.comparison);
     out += legend(task, solved ? layers::Core{} : solution.explanation.core);
     if (solved) {
-        out += "<p class=\"note\" id=\"reach-caption\">" + escape(caption) +
+        out += "<p class=\"note\" id=\"reach-caption\">" + xml_text(caption) +
                " Coloured areas: the region the arm sweeps while tracing each primitive "
                "(dashed: transitions). Grey outlines: the arm at the start of each primitive. "
                "Dotted circles: how close a link's axis may come to each obstacle.</p>\n";

@@ -14,6 +14,7 @@
 #include <modsynth/task/part.h>
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/xml.h>
 
 #include "plot.h"
 #include "report_assets.h"
@@ -31,7 +32,7 @@ extern const std::string_view kViewerScript;
 namespace {
 
 using geometry::Vec3;
-using plot::escape;
+using text::xml_text;
 using namespace figures;
 
 std::string deg(double radians) {
@@ -241,7 +242,7 @@ std::string solved_figures(const task::SpatialTask& task, const synth::Solution&
         out += row("fig-modules", "Modules",
                    (s.modules->checked && !s.modules->carried() ? "<strong>overloaded</strong>: "
                                                                 : std::string()) +
-                       escape(s.modules->message));
+                       xml_text(s.modules->message));
     out += row("fig-samples", "Motion",
                std::to_string(s.samples.size()) + " samples over " +
                    text::format("%.2f s", s.samples.back().t - s.samples.front().t));
@@ -313,8 +314,8 @@ std::string html_report(const task::SpatialTask& task, const synth::Solution& so
     const std::string name = task.name.empty() ? "task" : task.name;
     std::string out =
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>modsynth: " +
-        escape(name) + "</title>\n<style>" + assets::kStyle + kStyle3d +
-        "</style>\n</head>\n<body>\n<header><h1>" + escape(name) + " <span class=\"status " +
+        xml_text(name) + "</title>\n<style>" + assets::kStyle + kStyle3d +
+        "</style>\n</head>\n<body>\n<header><h1>" + xml_text(name) + " <span class=\"status " +
         status + "\">" + status + "</span></h1>\n<p class=\"note\">" +
         (task::has_strokes(task) ? std::to_string(task::stroke_count(task)) + " strokes, "
                                  : std::string()) +

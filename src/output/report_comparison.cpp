@@ -5,6 +5,7 @@
 
 #include <modsynth/kinematics/kinematics.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/xml.h>
 
 namespace modsynth::output::comparison {
 namespace {
@@ -87,7 +88,7 @@ std::string section(const baseline::Comparison& c) {
         "both "
         "motions the same way, by dense sampling; modsynth's is also certified.</p>\n";
     if (!b.message.empty())
-        out += "<p class=\"note\">Baseline: " + plot::escape(b.message) + "</p>\n";
+        out += "<p class=\"note\">Baseline: " + text::xml_text(b.message) + "</p>\n";
     return out;
 }
 

@@ -4,12 +4,13 @@
 
 #include <modsynth/output/recertify.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/xml.h>
 
 #include "plot.h"
 
 namespace modsynth::output::figures {
 
-using plot::escape;
+using text::xml_text;
 
 std::string mm(double metres, const char* format) {
     return text::format(format, 1000.0 * metres) + " mm";
@@ -47,9 +48,10 @@ std::string certificate_rows(const synth::Solution& s, const ReportFigures& figu
     out += row("fig-joint-step", "Max. joint step", text::format("%.4f rad", c.max_joint_step));
     if (!c.ok)
         out += row("fig-certificate", "Certificate",
-                   "<strong>not certified</strong>: " + escape(uncertified_reason(c)));
+                   "<strong>not certified</strong>: " + xml_text(uncertified_reason(c)));
     if (!figures.certificate_note.empty())
-        out += row("fig-certificate-note", "Certificate source", escape(figures.certificate_note));
+        out +=
+            row("fig-certificate-note", "Certificate source", xml_text(figures.certificate_note));
     return out;
 }
 
@@ -67,15 +69,16 @@ std::string explanation(const synth::Solution& s, const char* core_caption,
     std::string out = "<section id=\"explanation\">\n<h2>";
     out += s.status == synth::Status::Infeasible ? "Why no robot can do this task"
                                                  : "Why no robot was found";
-    out += "</h2>\n<p id=\"explanation-message\">" + escape(s.explanation.message) + "</p>\n";
+    out += "</h2>\n<p id=\"explanation-message\">" + xml_text(s.explanation.message) + "</p>\n";
     if (!s.explanation.core.empty()) {
         out += std::string("<p>The task parts that together cannot be satisfied (") + core_caption +
                "):</p>\n<ul id=\"core\">\n";
         for (const auto& part : s.explanation.core) {
             const std::string what = describe(part);
             const std::string name = task::to_string(part);
-            out += "<li class=\"core-part\" data-part=\"" + escape(name) + "\"><code>" +
-                   escape(name) + "</code>" + (what.empty() ? "" : ": " + escape(what)) + "</li>\n";
+            out += "<li class=\"core-part\" data-part=\"" + xml_text(name) + "\"><code>" +
+                   xml_text(name) + "</code>" + (what.empty() ? "" : ": " + xml_text(what)) +
+                   "</li>\n";
         }
         out += "</ul>\n";
     }

@@ -7,6 +7,7 @@
 #include <modsynth/control/joint_limits.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/xml.h>
 
 #include "plot.h"
 
@@ -77,8 +78,8 @@ std::string chart(const char* id, const std::string& title, const Samples& s, co
     std::string out = std::string("<svg class=\"chart\" id=\"") + id + "\" width=\"" +
                       plot::n2(kWidth) + "\" height=\"" + plot::n2(kHeight) + "\" viewBox=\"0 0 " +
                       plot::n2(kWidth) + " " + plot::n2(kHeight) + "\" role=\"img\">\n";
-    out += "<text x=\"" + plot::n2(kLeft) + "\" y=\"14\" font-size=\"12\">" + plot::escape(title) +
-           "</text>\n";
+    out += "<text x=\"" + plot::n2(kLeft) + "\" y=\"14\" font-size=\"12\">" +
+           text::xml_text(title) + "</text>\n";
     // Frame, zero line and the axis figures.
     out += "<rect x=\"" + plot::n2(kLeft) + "\" y=\"" + plot::n2(kTop) + "\" width=\"" +
            plot::n2(kWidth - kLeft - kRight) + "\" height=\"" + plot::n2(kHeight - kTop - kBottom) +

@@ -12,6 +12,8 @@
 #include <modsynth/hardware/select_modules.h>
 #include <modsynth/output/hardware.h>
 #include <modsynth/text/format.h>
+#include <modsynth/text/printable.h>
+#include <modsynth/text/xml.h>
 
 namespace modsynth::output {
 namespace {
@@ -147,7 +149,7 @@ std::string preamble(const task::Task& task, const std::string& modules, bool ch
     s += "  <!-- Planar arm synthesised by modsynth. Frame \"world\" is the task plane (z up); "
          "the tip link \"ee\" touches it. Joint angles are those of the solution's samples. "
          "Modules (joint 1 first): " +
-         modules +
+         text::xml_comment(modules) +
          (chosen ? " (chosen to carry the motion)"
                  : " (not chosen for a load: the strongest allowed)") +
          ". Limits: the motion's range plus " + std::to_string(kJointLimitMargin).substr(0, 4) +
@@ -170,7 +172,9 @@ std::vector<const hardware::Actuator*> urdf_modules(const task::Task& task,
         static_cast<int>(solution.modules->joints.size()) == n) {
         for (const auto& j : solution.modules->joints) {
             const hardware::Actuator* a = catalog.actuator(j.module);
-            if (!a) throw std::runtime_error("the module catalog has no \"" + j.module + "\"");
+            if (!a)
+                throw std::runtime_error("the module catalog has no \"" +
+                                         text::printable(j.module) + "\"");
             out.push_back(a);
         }
         return out;

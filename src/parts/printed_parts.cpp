@@ -1,8 +1,13 @@
 #include <modsynth/parts/printed_parts.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include <modsynth/parts/external_tool.h>
@@ -15,6 +20,24 @@ namespace modsynth::parts {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+/// Removes a symbolic link at `path`, so that what is then written there
+/// lands in the folder, not where the link points.
+void unlink_if_link(const std::string& path) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) ::unlink(path.c_str());
+}
+
+/// Opens `path` for writing without following a link: one there is
+/// replaced. -1 (errno set) on failure.
+int open_in_folder(const std::string& path, int flags) {
+    unlink_if_link(path);
+    return ::open(path.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC | flags, 0666);
+}
+
+}  // namespace
+
 void prepare_parts_folder(const std::string& folder) {
     const std::string part = "--parts " + folder;
     if (folder.empty()) throw task::InputError("--parts", "an empty folder name");
@@ -24,12 +47,28 @@ void prepare_parts_folder(const std::string& folder) {
     fs::create_directories(folder, ec);
     if (ec || !fs::is_directory(folder))
         throw task::InputError(part, "cannot be created: " + ec.message());
-    const fs::path probe = fs::path(folder) / ".modsynth-write-probe";
-    {
-        std::ofstream out(probe);
-        if (!out) throw task::InputError(part, "cannot be written to");
+    // A new file of its own, never one that is there (a link, say).
+    const std::string probe = (fs::path(folder) / ".modsynth-write-probe").string();
+    const int fd =
+        ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    if (fd < 0 && errno != EEXIST)
+        throw task::InputError(part, std::string("cannot be written to: ") + std::strerror(errno));
+    if (fd >= 0) {
+        ::close(fd);
+        ::unlink(probe.c_str());
     }
-    fs::remove(probe, ec);
+}
+
+std::vector<std::string> part_paths(const std::string& folder, int max_links) {
+    std::vector<std::string> names;
+    for (int k = 1; k <= max_links; ++k) names.push_back(text::format("link_%d", k));
+    names.push_back("base_plate");
+    names.push_back("tool_holder");
+    std::vector<std::string> out;
+    for (const std::string& n : names)
+        for (const char* ext : {".scad", ".stl"})
+            out.push_back((fs::path(folder) / (n + ext)).string());
+    return out;
 }
 
 std::vector<LinkDesign> planar_links(const task::RobotSpec& spec, const kinematics::Robot& robot,
@@ -107,9 +146,23 @@ hardware::RigidBody link_solid(const Mesh& mesh_mm, const PrintSettings& setting
 namespace {
 
 void write_source(const std::string& path, const std::string& text) {
-    std::ofstream out(path);
-    out << text;
-    if (!out) throw std::runtime_error(path + ": cannot be written");
+    const int fd = open_in_folder(path, O_TRUNC);
+    if (fd < 0) throw std::runtime_error(path + ": cannot be written: " + std::strerror(errno));
+    const char* p = text.data();
+    std::size_t left = text.size();
+    int err = 0;
+    while (left > 0) {
+        const ssize_t n = ::write(fd, p, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            err = n < 0 ? errno : ENOSPC;
+            break;
+        }
+        p += n;
+        left -= static_cast<std::size_t>(n);
+    }
+    if (::close(fd) != 0 && err == 0) err = errno;
+    if (err != 0) throw std::runtime_error(path + ": cannot be written: " + std::strerror(err));
 }
 
 /// Renders one source and runs the checks every mesh gets; the spacing
@@ -117,6 +170,8 @@ void write_source(const std::string& path, const std::string& text) {
 void render_and_check(PartFile& f, const LinkDesign* link, PrintedParts& parts, double time_limit,
                       bool admesh) {
     const std::string stl = (fs::path(parts.folder) / (f.name + ".stl")).string();
+    // openscad writes through a link at the mesh's name; none is left there.
+    unlink_if_link(stl);
     const ToolRun run = run_tool({"openscad", "-o", stl, f.scad}, time_limit);
     if (!run.ok() || !fs::exists(stl)) {
         f.checks = run.timed_out ? text::format("openscad gave up at the %.0f s limit", time_limit)

@@ -1,12 +1,16 @@
 #include <modsynth/parts/scad_writer.h>
 
 #include <modsynth/text/format.h>
+#include <modsynth/text/scad.h>
 
 namespace modsynth::parts {
 
 namespace {
 
 using text::format;
+// Every name written below is a comment's text: a line break in a task's or
+// a module's name must not turn the rest of it into code.
+using text::scad_comment;
 
 constexpr double kMm = 1000.0;
 /// Wall round the horn and round the rod, mm.
@@ -29,8 +33,9 @@ std::string body_parameters(const ModuleMount& m) {
         "body_output_offset = %.3f;   // housing centre to its output axis, along its length\n"
         "body_holes = %s;  // from the housing centre, x towards its output\n"
         "body_hole = %.3f;\n",
-        m.body.length * kMm, m.name.c_str(), m.body.width * kMm, m.mounting.output_offset * kMm,
-        points_mm(m.mounting.body_holes).c_str(), m.mounting.body_hole_diameter * kMm);
+        m.body.length * kMm, scad_comment(m.name).c_str(), m.body.width * kMm,
+        m.mounting.output_offset * kMm, points_mm(m.mounting.body_holes).c_str(),
+        m.mounting.body_hole_diameter * kMm);
 }
 
 std::string provenance(const ModuleMount& m) {
@@ -38,7 +43,7 @@ std::string provenance(const ModuleMount& m) {
                ? format(
                      "// %s's bolt pattern is the generic one for its housing (the catalog "
                      "gives none):\n// check it against the module before printing.\n",
-                     m.name.c_str())
+                     scad_comment(m.name).c_str())
                : std::string();
 }
 
@@ -50,14 +55,14 @@ double tool_screw_offset(double rod_diameter) {
 
 std::string link_scad(const LinkDesign& link, const std::string& title) {
     const Mounting& h = link.horn.mounting;
-    std::string s = format("// %s\n", title.c_str());
+    std::string s = format("// %s\n", scad_comment(title).c_str());
     s += format(
         "// Printed link %d: %s's output (its horn) is bolted under the end at the\n"
         "// origin; %s, at link_length along +x.\n"
         "// Units: mm. Print it flat, the end plates on the bed, without supports.\n"
         "// Edit the parameters; the two axes stay link_length apart.\n",
-        link.index, link.horn.name.c_str(),
-        link.body ? (link.body->name + "'s housing stands on the far end").c_str()
+        link.index, scad_comment(link.horn.name).c_str(),
+        link.body ? (scad_comment(link.body->name) + "'s housing stands on the far end").c_str()
                   : "the tool holder hangs from the far end");
     s += provenance(link.horn);
     if (link.body && link.body->name != link.horn.name) s += provenance(*link.body);
@@ -76,7 +81,7 @@ std::string link_scad(const LinkDesign& link, const std::string& title) {
         "horn_hole = %.3f;\n"
         "horn_bore = %.3f;      // over the horn's hub; its centre is the horn axis\n",
         link.length * kMm, link.beam.plate * kMm, link.beam.flange_width * kMm,
-        link.horn.name.c_str(), link.peak_torque, link.beam.rib_thickness * kMm,
+        scad_comment(link.horn.name).c_str(), link.peak_torque, link.beam.rib_thickness * kMm,
         link.beam.rib_height * kMm, kRim, h.horn_diameter * kMm, h.horn_bolt_circle * kMm,
         h.horn_holes, h.horn_hole_diameter * kMm, link.horn_bore * kMm);
     if (link.body) {
@@ -142,7 +147,7 @@ difference() {
 }
 
 std::string base_plate_scad(const ModuleMount& first, double plate, const std::string& title) {
-    std::string s = format("// %s\n", title.c_str());
+    std::string s = format("// %s\n", scad_comment(title).c_str());
     s += "// The base plate: module 1's housing stands on it, and it is bolted to the\n"
          "// table at its corners (M5). The origin is module 1's axis, the robot's\n"
          "// base. Units: mm. Print it flat, without supports.\n";
@@ -169,7 +174,7 @@ difference() {
 }
 
 std::string tool_holder_scad(double rod_diameter, double plate, const std::string& title) {
-    std::string s = format("// %s\n", title.c_str());
+    std::string s = format("// %s\n", scad_comment(title).c_str());
     s += "// The tool holder: a collar round the end-effector rod, bolted under the\n"
          "// last link's far end with two M3 screws; an M3 set screw clamps the rod.\n"
          "// Units: mm. Print it on its flange, the collar up, without supports.\n";

@@ -535,8 +535,17 @@ bool RegionSearch::minimise(Shell& s) {
             g.restore(id);
         }
     }
-    // The wall: what blocks a neighbour of the cells now.
-    const std::set<int> wall = shell_of(g, s.cells);
+    // The wall: what blocks a neighbour of the cells now; with no free cell
+    // on the enclosed side (a base region deep inside an obstacle, or a
+    // tube as thick as the region's surroundings), what blocks the cells
+    // that side meets: the chain has no free point there to start from.
+    std::set<int> wall = shell_of(g, s.cells);
+    if (s.cells.empty()) {
+        bool out = false;
+        const auto side = g.meeting(inside ? seed_ : around(s.wall.point, reach_slack(task_)), out);
+        for (std::size_t c : side)
+            for (int id : g.blockers_of(c)) wall.insert(id);
+    }
     s.wall.obstacles.assign(wall.begin(), wall.end());
     s.wall.cells = runs_of(g, s.cells);
     return complete;
@@ -581,6 +590,7 @@ std::optional<Proof> prove_spatial_enclosure(const task::SpatialTask& task,
     std::set<int> obstacles;
     std::vector<int> primitives;
     std::string said;
+    bool cells = false;  ///< some wall holds cells (the others none)
     for (int r = 0; r < static_cast<int>(task.base_regions.size()); ++r) {
         RegionSearch search(task, r, deadline, options.minimise);
         bool timed_out = false;
@@ -594,14 +604,24 @@ std::optional<Proof> prove_spatial_enclosure(const task::SpatialTask& task,
             primitives.push_back(w.primitive);
         const std::string region = task::to_string(task::TaskPart::base_region(r));
         const std::string point = task::part_name(task, w.primitive) + " at " + point_text(w.point);
-        said += (said.empty() ? "" : "; ") + std::string("obstacles ") + index_ranges(w.obstacles) +
-                " close a shell round " +
-                (w.base_inside ? region + ", and " + point + " lies outside it"
-                               : point + ", and " + region + " lies outside it") +
-                text::format(
-                    " (%zu free cells of %g m inside, every neighbour inside an obstacle "
-                    "grown by link_diameter / 2)",
-                    cell_total(w), w.grid.cell);
+        cells = cells || !w.cells.empty();
+        if (w.cells.empty())
+            said += (said.empty() ? "" : "; ") + std::string("obstacles ") +
+                    index_ranges(w.obstacles) +
+                    " grown by link_diameter / 2 fill every cell round " +
+                    (w.base_inside ? region + " (grown by link_diameter / 2)"
+                                   : point + " (within tool_length and 1 mm of it)") +
+                    text::format(" (cells of %g m): no free point there for a chain to leave",
+                                 w.grid.cell);
+        else
+            said += (said.empty() ? "" : "; ") + std::string("obstacles ") +
+                    index_ranges(w.obstacles) + " close a shell round " +
+                    (w.base_inside ? region + ", and " + point + " lies outside it"
+                                   : point + ", and " + region + " lies outside it") +
+                    text::format(
+                        " (%zu free cells of %g m inside, every neighbour inside an obstacle "
+                        "grown by link_diameter / 2)",
+                        cell_total(w), w.grid.cell);
         witness.walls.push_back(std::move(w));
     }
     std::sort(primitives.begin(), primitives.end());
@@ -611,9 +631,9 @@ std::optional<Proof> prove_spatial_enclosure(const task::SpatialTask& task,
     if (tube) proof.core.push_back(task::TaskPart::robot(task::RobotKey::LinkDiameter));
     if (task.robot.tool_length > 0.0)
         proof.core.push_back(task::TaskPart::robot(task::RobotKey::ToolLength));
-    proof.message = said +
-                    ": a chain is one tube from its base to the path, and would have to "
-                    "pass through the shell.";
+    proof.message = said + (cells ? ": a chain is one tube from its base to the path, and would "
+                                    "have to pass through the shell."
+                                  : ".");
     if (!proof.minimal && options.minimise)
         proof.message += " (core not minimised within the time limit)";
     proof.enclosure = std::move(witness);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <variant>
 
+#include <modsynth/io/check_timeout.h>
 #include <modsynth/io/solution_io.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
@@ -110,10 +111,18 @@ void read_solution(const std::string& path, SolveOutcome& o) {
         o.clearance_margin = s.certificate.min_clearance;
 }
 
+/// Seconds the name of a task may take to read: its checks are the child
+/// solve's business (within its time limit), and a spatial path among many
+/// obstacles takes hours to check.
+constexpr double kNameSeconds = 0.5;
+
 /// The task's name, or the file's stem when the task cannot be read.
 std::string task_name(const std::string& task_path) {
     try {
-        return std::visit([](const auto& t) { return t.name; }, io::load_task_document(task_path));
+        return std::visit([](const auto& t) { return t.name; },
+                          io::load_task_document(task_path, run::Deadline::in(kNameSeconds)));
+    } catch (const io::CheckTimeout& e) {
+        return e.task_name();
     } catch (const task::InputError&) {
         return task_stem(task_path);
     }

@@ -1,6 +1,7 @@
 #include "api_routes.h"
 
 #include <modsynth/drawing/import.h>
+#include <modsynth/io/check_timeout.h>
 #include <modsynth/io/input.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
@@ -39,6 +40,11 @@ using nlohmann::json;
 // it is still there (a stream) or answers unchanged (a poll).
 constexpr auto kHeartbeat = std::chrono::milliseconds(1000);
 constexpr double kLongestPoll = 20.0;
+/// Seconds a request's worker may spend checking a task's geometry (a long
+/// helix among many obstacles takes minutes): a worker is never held
+/// longer, whether the client waits or has left. A solve's child process
+/// checks the task again within the job's own time limit.
+constexpr double kCheckSeconds = 5.0;
 // What a POST may name: a request body is read only for these.
 const std::regex kPostRoutes(R"(/api/validate|/api/solve|/api/import|/api/jobs/[0-9a-f]+/cancel)");
 // Longer paths name nothing here; refusing them early also spares the route
@@ -209,18 +215,35 @@ std::optional<json> read_body(const std::string& text, Response& res) {
 
 /// A positive number from the query string, at most `largest`; nothing when
 /// absent. Throws task::InputError naming the parameter when it is not one.
+/// The one value of a query parameter. One given twice is refused: which
+/// of its values would count is a guess the client cannot see.
+std::string query_text(const Request& req, const char* name) {
+    const std::size_t n = req.get_param_value_count(name);
+    if (n > 1) throw task::InputError(name, "given " + std::to_string(n) + " times; give it once");
+    return req.get_param_value(name);
+}
+
+/// A decimal number as a person writes it ("0.5", "-2", "1e-3"), nothing
+/// else: std::stod alone also takes hexadecimal ("0x10"), "inf", "nan" and
+/// leading spaces.
+bool decimal(const std::string& text, double& v) {
+    static const std::regex kDecimal(R"([+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)");
+    if (text.size() > 64 || !std::regex_match(text, kDecimal)) return false;
+    try {
+        std::size_t used = 0;
+        v = std::stod(text, &used);
+        return used == text.size();
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
 std::optional<double> query_number(const Request& req, const char* name,
                                    double largest = std::numeric_limits<double>::max()) {
     if (!req.has_param(name)) return std::nullopt;
-    const std::string text = req.get_param_value(name);
-    std::size_t used = 0;
+    const std::string text = query_text(req, name);
     double v = 0.0;
-    try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || !std::isfinite(v) || v <= 0.0)
+    if (!decimal(text, v) || !std::isfinite(v) || v <= 0.0)
         throw task::InputError(name, "not a positive number: '" + printable(text) + "'");
     if (v > largest)
         throw task::InputError(name, text::format("%g is more than the %g allowed", v, largest));
@@ -234,21 +257,14 @@ std::optional<std::vector<double>> query_numbers(
     const Request& req, const char* name, std::size_t count,
     double largest = std::numeric_limits<double>::max()) {
     if (!req.has_param(name)) return std::nullopt;
-    const std::string text = req.get_param_value(name);
+    const std::string text = query_text(req, name);
     std::vector<double> out;
     std::size_t at = 0;
     while (out.size() < count && at <= text.size()) {
         const std::size_t comma = std::min(text.find(',', at), text.size());
         const std::string item = text.substr(at, comma - at);
-        std::size_t used = 0;
         double v = 0.0;
-        try {
-            v = std::stod(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (item.empty() || used != item.size() || !std::isfinite(v) || std::abs(v) > largest)
-            break;
+        if (!decimal(item, v) || !std::isfinite(v) || std::abs(v) > largest) break;
         out.push_back(v);
         at = comma + 1;
     }
@@ -262,7 +278,7 @@ std::optional<std::vector<double>> query_numbers(
 /// Throws task::InputError naming the parameter otherwise.
 bool query_switch(const Request& req, const char* name) {
     if (!req.has_param(name)) return false;
-    const std::string text = req.get_param_value(name);
+    const std::string text = query_text(req, name);
     if (text == "1" || text == "true") return true;
     if (text == "0" || text == "false") return false;
     throw task::InputError(name, "expected 1 or 0 (true or false), not '" + printable(text) + "'");
@@ -273,7 +289,7 @@ bool query_switch(const Request& req, const char* name) {
 std::vector<std::string> query_names(const Request& req, const char* name) {
     std::vector<std::string> out;
     if (!req.has_param(name)) return out;
-    const std::string text = req.get_param_value(name);
+    const std::string text = query_text(req, name);
     for (std::size_t at = 0; at <= text.size();) {
         const std::size_t comma = std::min(text.find(',', at), text.size());
         if (comma == at)
@@ -457,12 +473,23 @@ private:
                                {"base_regions", t.base_regions.size()},
                                {"errors", json::array()}});
                 },
-                io::parse_task_document(*doc));
+                io::parse_task_document(*doc, run::Deadline::in(kCheckSeconds)));
         } catch (const task::InputError& e) {
             send_json(res, 200,
                       {{"valid", false},
                        {"errors", json::array({{{"part", printable(e.part())},
                                                 {"message", printable(e.what())}}})}});
+        } catch (const io::CheckTimeout& e) {
+            // Neither valid nor invalid: "checked": false says which.
+            send_json(
+                res, 200,
+                {{"valid", false},
+                 {"checked", false},
+                 {"errors", json::array({{{"part", "(document)"},
+                                          {"message", printable(text::format(
+                                                          "not checked within the %g s a check may "
+                                                          "take here: %s",
+                                                          kCheckSeconds, e.what()))}}})}});
         }
     }
 
@@ -476,13 +503,13 @@ private:
         request.base.name = "drawing";
         drawing::ImportOptions& options = request.options;
         try {
-            const std::string f = req.has_param("format") ? req.get_param_value("format") : "";
+            const std::string f = req.has_param("format") ? query_text(req, "format") : "";
             if (equals_ignoring_case(f, "dxf")) {
                 request.format = drawing::DrawingFormat::Dxf;
             } else if (!equals_ignoring_case(f, "svg")) {
                 throw task::InputError("format", "expected svg or dxf, not '" + printable(f) + "'");
             }
-            if (req.has_param("name")) request.base.name = req.get_param_value("name");
+            if (req.has_param("name")) request.base.name = query_text(req, "name");
             request.spatial_base.name = request.base.name;
             // The ranges `modsynth import` takes.
             options.placement.width = query_number(req, "width", kLargestScale);
@@ -557,7 +584,13 @@ private:
         double time_limit = 0.0;
         try {
             // Either kind: the child `modsynth solve` (and `explain`) take both.
-            io::parse_task_document(*doc);
+            // A task whose checks take longer than a worker may spend goes
+            // to the job, which checks it within its own time limit and can
+            // be cancelled.
+            try {
+                io::parse_task_document(*doc, run::Deadline::in(kCheckSeconds));
+            } catch (const io::CheckTimeout&) {
+            }
             time_limit = query_number(req, "time_limit").value_or(0.0);
         } catch (const task::InputError& e) {
             send_error(res, e.part() == "time_limit" ? 400 : 422, e.what(), e.part());

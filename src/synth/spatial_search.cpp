@@ -109,7 +109,8 @@ private:
                                                    variant,
                                                    front_.sampled_points(),
                                                    opt_.front.slack,
-                                                   opt_.margins.pose()};
+                                                   opt_.margins.pose(),
+                                                   opt_.margins.tool_share};
                 const smt::Pattern pattern = family->pattern(context);
                 for (int r = 0; r < regions; ++r) {
                     const int region = task_.base_regions.empty() ? -1 : r;

@@ -1,5 +1,7 @@
 #include <modsynth/text/markdown.h>
 
+#include "utf8.h"
+
 namespace modsynth::text {
 
 std::string markdown_literal(std::string_view text) {
@@ -7,24 +9,9 @@ std::string markdown_literal(std::string_view text) {
     out.reserve(text.size());
     for (const char c : text) {
         const auto u = static_cast<unsigned char>(c);
-        switch (c) {
-            case '<':
-                out += "&lt;";
-                continue;
-            case '>':
-                out += "&gt;";
-                continue;
-            case '&':
-                out += "&amp;";
-                continue;
-            case '"':
-                out += "&quot;";
-                continue;
-            case '\'':
-                out += "&#39;";
-                continue;
-            default:
-                break;
+        if (const char* ref = markup_reference(c)) {
+            out += ref;
+            continue;
         }
         if (u < 0x20 || u == 0x7f) {
             out += "\xEF\xBF\xBD";

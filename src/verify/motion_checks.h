@@ -48,6 +48,24 @@ protected:
         violation(Violation::Kind::Structure, -1, 0.0, message);
     }
 
+    /// Each sample's pose checked, then each pair of neighbours', a pose at
+    /// a time (each computed twice): memory stays that of the samples, not
+    /// of their poses, on a motion of a million samples, and the checks
+    /// (so the violations) come in the order a list of every pose gave.
+    template <class PoseOf, class CheckSample, class CheckPair>
+    void check_poses(const PoseOf& pose, const CheckSample& check_sample,
+                     const CheckPair& check_pair) {
+        const int n = static_cast<int>(samples_.size());
+        for (int i = 0; i < n; ++i) check_sample(i, pose(i));
+        if (n == 0) return;
+        auto a = pose(0);
+        for (int i = 0; i + 1 < n; ++i) {
+            auto b = pose(i + 1);
+            check_pair(i, a, b);
+            a = std::move(b);
+        }
+    }
+
     /// Every sample names a stroke and a primitive of the task and holds
     /// `dof` joint angles; sets structure_ok_ when nothing is wrong so far.
     void check_samples(int dof) {

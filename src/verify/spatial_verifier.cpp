@@ -66,11 +66,9 @@ public:
         check_structure();
         if (!structure_ok_) return finish();
         check_order(false);
-        poses_.reserve(samples_.size());
-        for (std::size_t i = 0; i < samples_.size(); ++i)
-            poses_.push_back(pose(static_cast<int>(i)));
-        for (std::size_t i = 0; i < samples_.size(); ++i) check_sample(static_cast<int>(i));
-        for (std::size_t i = 0; i + 1 < samples_.size(); ++i) check_pair(static_cast<int>(i));
+        check_poses([this](int i) { return pose(i); },
+                    [this](int i, const Pose& p) { check_sample(i, p); },
+                    [this](int i, const Pose& a, const Pose& b) { check_pair(i, a, b); });
         check_fallback();
         return finish();
     }
@@ -178,8 +176,7 @@ private:
         return geometry::point_segment(p.ee, s.start, s.end) - diameter();
     }
 
-    void check_sample(int i) {
-        const Pose& p = poses_[static_cast<std::size_t>(i)];
+    void check_sample(int i, const Pose& p) {
         cert_.max_deviation = std::max(cert_.max_deviation, p.deviation);
         if (p.tool_angle) {
             const double margin = p.tool_tolerance - *p.tool_angle;
@@ -231,11 +228,9 @@ private:
         return p.frames[static_cast<std::size_t>(k)].inverse() * x;
     }
 
-    void check_pair(int i) {
+    void check_pair(int i, const Pose& a, const Pose& b) {
         const Sample& sa = samples_[static_cast<std::size_t>(i)];
         const Sample& sb = samples_[static_cast<std::size_t>(i) + 1];
-        const Pose& a = poses_[static_cast<std::size_t>(i)];
-        const Pose& b = poses_[static_cast<std::size_t>(i) + 1];
         const int n = chain_.dof();
 
         std::vector<double> dq(static_cast<std::size_t>(n));
@@ -392,7 +387,6 @@ private:
     std::vector<kinematics::SegmentLayout> layout_;
     std::vector<kinematics::SegmentPart> parts_;
     std::vector<geometry::ObstacleCore> cores_;
-    std::vector<Pose> poses_;
 };
 
 }  // namespace

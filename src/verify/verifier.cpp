@@ -53,11 +53,9 @@ public:
         check_structure();
         if (!structure_ok_) return finish();
         check_order(true);
-        poses_.reserve(samples_.size());
-        for (std::size_t i = 0; i < samples_.size(); ++i)
-            poses_.push_back(pose(static_cast<int>(i)));
-        for (std::size_t i = 0; i < samples_.size(); ++i) check_sample(static_cast<int>(i));
-        for (std::size_t i = 0; i + 1 < samples_.size(); ++i) check_pair(static_cast<int>(i));
+        check_poses([this](int i) { return pose(i); },
+                    [this](int i, const Pose& p) { check_sample(i, p); },
+                    [this](int i, const Pose& a, const Pose& b) { check_pair(i, a, b); });
         return finish();
     }
 
@@ -102,8 +100,7 @@ private:
         return p;
     }
 
-    void check_sample(int i) {
-        const Pose& p = poses_[i];
+    void check_sample(int i, const Pose& p) {
         const int n = robot_.dof();
         const kinematics::ClearanceRule rule{robot_.link_diameter};
         cert_.max_deviation = std::max(cert_.max_deviation, p.deviation);
@@ -130,11 +127,9 @@ private:
         }
     }
 
-    void check_pair(int i) {
+    void check_pair(int i, const Pose& a, const Pose& b) {
         const Sample& sa = samples_[i];
         const Sample& sb = samples_[i + 1];
-        const Pose& a = poses_[i];
-        const Pose& b = poses_[i + 1];
         const int n = robot_.dof();
         const kinematics::ClearanceRule rule{robot_.link_diameter};
 
@@ -226,7 +221,6 @@ private:
     }
 
     const kinematics::Robot& robot_;
-    std::vector<Pose> poses_;
 };
 
 }  // namespace

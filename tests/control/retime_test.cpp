@@ -10,6 +10,7 @@
 #include <modsynth/control/retime.h>
 #include <modsynth/geometry/primitive.h>
 #include <modsynth/task/input_error.h>
+#include <modsynth/task/limits.h>
 #include <modsynth/verify/verifier.h>
 
 #include "../output/output_fixtures.h"
@@ -336,4 +337,45 @@ TEST_CASE("jerk limits hold along planned motions of two and three joints",
         CHECK(testing::timing_violation(timed, limits).empty());
         CHECK(testing::jerk_violation(timed, limits.jerk).empty());
     }
+}
+
+TEST_CASE("speed caps lie in the range of the joint limits", "[control][retime]") {
+    const auto s = straight(0.1, 0.01);
+    // 1e-9 rad/s would make a motion of centuries; 1e-300 would drop out
+    // of the arithmetic and leave every qd 0 while the joints move.
+    for (const double cap : {1e-9, 1e-300, 1e7}) {
+        control::RetimeOptions o;
+        o.joint_speed = cap;
+        CHECK_THROWS_WITH(control::retime(s, control::default_joint_limits(2), o),
+                          Catch::Contains("RetimeOptions::joint_speed"));
+        control::RetimeOptions e;
+        e.ee_speed = cap;
+        CHECK_THROWS_WITH(control::retime(s, control::default_joint_limits(2), e),
+                          Catch::Contains("RetimeOptions::ee_speed"));
+    }
+    control::RetimeOptions slowest;
+    slowest.joint_speed = task::kMinJointLimit;
+    const auto timed = control::retime(s, control::default_joint_limits(2), slowest);
+    CHECK(timed.back().t > 0.1 / task::kMinJointLimit * 0.99);
+    CHECK(timed.back().t <= task::kLongestMotion);
+}
+
+TEST_CASE("timing_fault names where a timed motion breaks the limits", "[control][retime]") {
+    JointLimits limits{{2.0, 2.0}, {4.0, 4.0}, {20.0, 20.0}};
+    const auto timed = control::retime(straight(3.0, 0.01), limits);
+    CHECK(control::timing_fault(timed, limits).empty());
+    // The same motion against a far smaller jerk: the rules between samples
+    // break (a controller would be handed 20 rad/s^3 for 1e-6).
+    JointLimits gentle = limits;
+    gentle.jerk = {1e-6, 1e-6};
+    CHECK_THAT(control::timing_fault(timed, gentle), Catch::Contains("its jerk"));
+    auto edited = timed;
+    edited[5].qdd[1] = 9.0;
+    CHECK_THAT(control::timing_fault(edited, limits),
+               Catch::StartsWith("samples[5]: joint 2's acceleration 9 rad/s^2 is over its 4"));
+    auto moving = timed;
+    moving.back().qd[0] = 0.5;
+    CHECK_THAT(control::timing_fault(moving, limits), Catch::Contains("not at rest"));
+    const auto untimed = straight(0.1, 0.01);
+    CHECK_FALSE(control::timing_fault(untimed, limits).empty());
 }

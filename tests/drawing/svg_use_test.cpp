@@ -111,3 +111,19 @@ TEST_CASE("SVG use: a broken use in defs is no error until something draws it", 
     CHECK_THROWS_WITH(read_svg(svg(defs + R"svg(<use href="#kept"/>)svg")),
                       Catch::Contains("#gone, which the file does not hold"));
 }
+
+TEST_CASE("SVG use: a use of a use draws what that use draws, wherever it stands",
+          "[drawing][svg]") {
+    // After the use it refers to (replaced already) and before it.
+    const Drawing d = read_svg(svg(R"svg(<defs><path id="a" d="M 10,10 L 90,10"/></defs>
+<use id="u1" href="#a" y="10"/>
+<use id="u2" href="#u1" y="30"/>
+<use href="#u3" x="5"/>
+<use id="u3" xlink:href="#a" y="60"/>)svg"));
+    REQUIRE(d.curves.size() == 4);
+    CHECK((start_of(d.curves[0]) - Vec2(10, 20)).norm() < 1e-12);
+    // u2: u1's copy (moved by 10) moved by 30 more.
+    CHECK((start_of(d.curves[1]) - Vec2(10, 50)).norm() < 1e-12);
+    CHECK((start_of(d.curves[2]) - Vec2(15, 70)).norm() < 1e-12);
+    CHECK((start_of(d.curves[3]) - Vec2(10, 70)).norm() < 1e-12);
+}

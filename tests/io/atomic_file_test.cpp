@@ -139,3 +139,50 @@ TEST_CASE("an atomic write keeps a symbolic link and writes through a device", "
     write_file_atomically("/dev/null", "discarded");
     CHECK(fs::is_character_file("/dev/null"));
 }
+
+TEST_CASE("a file written piece by piece appears whole at commit, or not at all",
+          "[output][atomic]") {
+    using modsynth::io::AtomicFile;
+    Folder dir;
+    const fs::path file = dir.path / "motion.json";
+    write_file_atomically(file.string(), "old");
+    {
+        AtomicFile out(file.string());
+        out.write("new ");
+        out.write("text");
+        CHECK(out.bytes() == 8);
+        // Until the commit the old file stays, beside the temporary one.
+        CHECK(read(file) == "old");
+        out.commit();
+    }
+    CHECK(read(file) == "new text");
+    CHECK(names_in(dir.path) == std::vector<std::string>{"motion.json"});
+    {
+        AtomicFile out(file.string());
+        out.write("abandoned");
+    }
+    CHECK(read(file) == "new text");
+    CHECK(names_in(dir.path) == std::vector<std::string>{"motion.json"});
+    const pid_t pid = fork();
+    if (pid == 0) {
+        // The first write over the size limit fails; commit says so and
+        // the previous file stays.
+        signal(SIGXFSZ, SIG_IGN);
+        const rlimit limit{4096, 4096};
+        setrlimit(RLIMIT_FSIZE, &limit);
+        try {
+            AtomicFile out(file.string());
+            for (int i = 0; i < 100; ++i) out.write(std::string(1000, 'x'));
+            out.commit();
+        } catch (const modsynth::io::WriteError& e) {
+            _exit(std::string(e.what()).find("write failed") != std::string::npos ? 0 : 2);
+        }
+        _exit(1);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+    CHECK(read(file) == "new text");
+    CHECK(names_in(dir.path) == std::vector<std::string>{"motion.json"});
+}

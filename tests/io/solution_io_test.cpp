@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <modsynth/io/solution_io.h>
+#include <modsynth/task/limits.h>
 
 #include "../output/output_fixtures.h"
 
@@ -331,4 +332,91 @@ TEST_CASE("a wall in space's witness round-trips, and a bad one is refused by na
     bad = doc;
     bad["explanation"]["enclosure"]["walls"][0]["cells"][1] = json::array({1, 2});
     CHECK(part_of(bad) == "explanation.enclosure.walls[0].cells[1]");
+}
+
+TEST_CASE("a timed sample takes no more bytes in a file than task::max_sample_bytes", "[output]") {
+    // Every number at its longest (24 characters), every index at 10
+    // digits, a transition (the longest phase), strokes written.
+    const double longest = -1.2345678901234567e-100;
+    const auto dir = std::filesystem::temp_directory_path() / "modsynth-sample-bytes-test";
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "solution.json").string();
+    for (int dof = 1; dof <= 6; ++dof) {
+        const auto file_size = [&](std::size_t count) {
+            Solution s;
+            s.task_name = "t";
+            s.status = Status::Solved;
+            s.robot.link_lengths.assign(static_cast<std::size_t>(dof), 0.5);
+            modsynth::control::Sample x;
+            x.t = longest;
+            x.phase = modsynth::control::Phase::Transition;
+            x.primitive = 2147483647;
+            x.stroke = 2147483647;
+            x.q.assign(static_cast<std::size_t>(dof), longest);
+            x.qd = x.qdd = x.q;
+            s.samples.assign(count, x);
+            modsynth::io::write_solution(s, path);
+            return std::filesystem::file_size(path);
+        };
+        const std::size_t per_sample = (file_size(101) - file_size(1)) / 100;
+        CHECK(per_sample <= modsynth::task::max_sample_bytes(dof));
+        // And the cap leaves a real motion room: hundreds of thousands.
+        CHECK(modsynth::task::max_motion_samples(dof) >= 300000);
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a solution is read a sample at a time, as a tree would read it", "[output]") {
+    const auto task = testing::three_joint_task();
+    const Solution a = testing::three_joint_solution(task);
+    const json doc = to_json(a);
+    // Samples before the robot, as another program may write them.
+    std::string text = "{\"samples\": " + doc["samples"].dump() + ", ";
+    for (const auto& [key, value] : doc.items())
+        if (key != "samples") text += json(key).dump() + ": " + value.dump() + ", ";
+    text.resize(text.size() - 2);
+    text += "}";
+    check_same_motion(a, modsynth::io::parse_solution_text(text).solution);
+    // A key given twice: the later wins, as in the tree.
+    json twice = doc;
+    std::string doubled = twice.dump();
+    doubled.insert(1, "\"samples\": [1, 2], ");
+    check_same_motion(a, modsynth::io::parse_solution_text(doubled).solution);
+    // A sample of another joint count, named once the robot is known.
+    json wrong = doc;
+    wrong["samples"][1]["q"] = json::array({0.1, 0.2});
+    CHECK(rejected_part([&] { modsynth::io::parse_solution_text(wrong.dump()); }) ==
+          "samples[1].q");
+    // Samples of an unknown answer are not its motion: not read.
+    json unknown = {{"format", "modsynth-solution/1"},
+                    {"status", "unknown"},
+                    {"explanation", {{"message", "gave up"}}},
+                    {"samples", json::array({1, 2})}};
+    CHECK(modsynth::io::parse_solution_text(unknown.dump()).solution.status == Status::Unknown);
+    // From a file, streamed: the same solution, and syntax errors placed.
+    const auto dir = std::filesystem::temp_directory_path() / "modsynth-stream-read-test";
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "solution.json").string();
+    modsynth::io::write_solution(a, path);
+    check_same_motion(a, modsynth::io::load_solution(path).solution);
+    std::ofstream(path) << "{\n \"format\": \"modsynth-solution/1\",\n \"status\": solved\n}\n";
+    try {
+        modsynth::io::load_solution(path);
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK_THAT(e.what(), Catch::Matchers::Contains("at line 3, column"));
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a solution's robot lies within the task limits: no number of hundreds of digits",
+          "[output]") {
+    const auto task = testing::three_joint_task();
+    const json doc = to_json(testing::three_joint_solution(task));
+    json far = doc;
+    far["robot"]["base"][0] = 1e308;
+    CHECK(part_of(far) == "robot.base[0]");
+    json long_link = doc;
+    long_link["robot"]["link_lengths"][1] = 1e6;
+    CHECK(part_of(long_link) == "robot.link_lengths[1]");
 }

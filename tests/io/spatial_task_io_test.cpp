@@ -1,13 +1,16 @@
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/io/check_timeout.h>
 #include <modsynth/io/spatial_task_io.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
@@ -178,6 +181,13 @@ TEST_CASE("bad spatial input is refused naming the part", "[task]") {
         {"/trajectory/3/pitch", "steep", false, "trajectory[3].pitch", "a number"},
         {"/trajectory/3/turns", 0, false, "trajectory[3].turns", "greater than 0"},
         {"/trajectory/3/turns", 5000, false, "trajectory[3].turns", "more than the 1000"},
+        // Zero length refused by name, as a line's is.
+        {"/trajectory/3/turns", 1e-12, false, "trajectory[3]", "helix has zero length"},
+        {"/trajectory/3/turns", 5e-324, false, "trajectory[3]", "helix has zero length"},
+        {"/trajectory/3/pitch", 0.0049999, false, "trajectory[3].pitch", "got 0.0049999 m"},
+        {"/robot/joint_limits/jerk", json::array({5, 5}), false, "robot.joint_limits.jerk",
+         "has 2 values"},
+        {"/robot/joint_limits/jerk", 1e-9, false, "robot.joint_limits.jerk", "outside the"},
         {"/trajectory/3/center", json::array({0.45, 0.2, 0.31}), false, "trajectory[3].center",
          "not level with start"},
         {"/trajectory/3/end", json::array({0.4, 0.2, 0.34}), false, "trajectory[3].end",
@@ -274,4 +284,109 @@ TEST_CASE("every invalid spatial fixture is refused naming its part", "[task]") 
         CHECK(e.part() == want.at("part").get<std::string>());
         CHECK_THAT(e.what(), Contains(want.at("message_contains").get<std::string>()));
     }
+}
+
+TEST_CASE("a spatial task's jerk limits are read and written as the plane's", "[task]") {
+    json doc = full_doc();
+    doc["robot"]["joint_limits"]["jerk"] = 30;
+    const SpatialTask t = parse_spatial_task(doc);
+    REQUIRE(t.robot.joint_limits);
+    CHECK(t.robot.joint_limits->jerk == std::vector<double>{30.0});
+    CHECK(to_json(t)["robot"]["joint_limits"]["jerk"] == 30.0);
+    doc["robot"]["joint_limits"]["jerk"] = json::array({1, 2, 3, 4});
+    const SpatialTask per_joint = parse_spatial_task(doc);
+    CHECK(per_joint.robot.joint_limits->jerk == std::vector<double>{1, 2, 3, 4});
+    CHECK(per_joint.robot.dof == std::vector<int>{4});
+    CHECK(to_json(parse_spatial_task(to_json(per_joint))) == to_json(per_joint));
+}
+
+TEST_CASE("checking a spatial path against its obstacles stops at the reader's deadline",
+          "[task]") {
+    // A helix of a thousand turns round posts that nearly touch it all
+    // along: each pair costs tens of milliseconds of checking.
+    json doc = json::parse(R"({"format": "modsynth-task/1", "name": "coil", "space": "3d",
+        "trajectory": [{"type": "helix", "start": [0.12, 0, 0.1], "center": [0, 0, 0.1],
+                        "axis": [0, 0, 1], "direction": "ccw", "pitch": 0.005, "turns": 1000}],
+        "base_regions": [{"min": [-0.05, -0.05, -0.9], "max": [0.05, 0.05, -0.9]}]})");
+    for (int i = 0; i < 400; ++i)
+        doc["obstacles"].push_back({{"type", "capsule"},
+                                    {"a", {0, 0, 0}},
+                                    {"b", {0, 0, 5.2}},
+                                    {"radius", 0.1199 - 1e-6 * i}});
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        parse_spatial_task(doc, modsynth::run::Deadline::in(0.3));
+        FAIL("checked to the end");
+    } catch (const modsynth::io::CheckTimeout& e) {
+        CHECK(e.task_name() == "coil");
+        CHECK_THAT(e.what(), Contains("checking trajectory[0] against obstacles["));
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    CHECK(seconds < 1.5);
+    // Without a deadline the same checks end, and a post away from the
+    // path passes them.
+    doc["obstacles"] = json::array({doc["obstacles"][0]});
+    CHECK(parse_spatial_task(doc).obstacles.size() == 1);
+}
+
+TEST_CASE("tool axes are read per primitive and for the task, and written back", "[task]") {
+    json doc = full_doc();
+    doc["tool_axis"] = {{"direction", {0, 0, -2}}};
+    doc["trajectory"][1]["tool_axis"] = {{"toward", "axis"}, {"tolerance", 0.1}};
+    const SpatialTask t = parse_spatial_task(doc);
+    REQUIRE(t.tool_axis);
+    CHECK(t.tool_axis->tolerance == modsynth::task::kDefaultToolTolerance);
+    REQUIRE(t.tool_axes.size() == t.trajectory.size());
+    CHECK_FALSE(t.tool_axes[0]);
+    REQUIRE(t.tool_axes[1]);
+    CHECK(t.tool_axes[1]->kind == modsynth::task::ToolAxis::Kind::TowardAxis);
+    // The task's own applies where a primitive has none.
+    CHECK(modsynth::task::tool_axis_of(t, 0) == &*t.tool_axis);
+    CHECK(modsynth::task::tool_axis_of(t, 1) == &*t.tool_axes[1]);
+    const auto w = modsynth::task::wanted_tool(t, 0, geometry::Vec3(0.5, 0.0, 0.2));
+    REQUIRE(w);
+    CHECK((w->direction - geometry::Vec3(0, 0, -1)).norm() < 1e-15);
+    CHECK(to_string(modsynth::task::tool_axis_part(t, 1)) == "trajectory[1].tool_axis");
+    CHECK(to_string(modsynth::task::tool_axis_part(t, 0)) == "tool_axis");
+    const json back = to_json(t);
+    CHECK(back["tool_axis"] == json({{"direction", {0.0, 0.0, -2.0}}}));
+    CHECK(back["trajectory"][1]["tool_axis"] == doc["trajectory"][1]["tool_axis"]);
+    CHECK_FALSE(back["trajectory"][0].contains("tool_axis"));
+}
+
+TEST_CASE("bad tool axes are refused naming the part", "[task]") {
+    const auto refused = [](const json& axis, int j, const std::string& part,
+                            const std::string& text) {
+        json doc = full_doc();
+        if (j < 0)
+            doc["tool_axis"] = axis;
+        else
+            doc["trajectory"][j]["tool_axis"] = axis;
+        const InputError e = input_error([&] { parse_spatial_task(doc); });
+        INFO(axis.dump() << ": " << e.part() << ": " << e.what());
+        CHECK(e.part().rfind(part, 0) == 0);
+        CHECK_THAT(std::string(e.what()), Contains(text));
+    };
+    refused({{"direction", {0, 0, 0}}}, 0, "trajectory[0].tool_axis.direction", "");
+    refused({{"direction", {0, 0, -1}}, {"tolerance", 0}}, 0, "trajectory[0].tool_axis.tolerance",
+            "");
+    refused({{"direction", {0, 0, -1}}, {"tolerance", 1.6}}, -1, "tool_axis.tolerance", "");
+    refused({{"toward", "axis"}}, 0, "trajectory[0].tool_axis", "line");
+    refused({{"toward", "sideways"}}, 1, "trajectory[1].tool_axis.toward", "");
+    refused({{"direction", {0, 0, -1}}, {"toward", "axis"}}, 1, "trajectory[1].tool_axis", "");
+    refused(json::object(), 1, "trajectory[1].tool_axis", "");
+    refused({{"direction", {0, 0, -1}}, {"spin", 0}}, 1, "trajectory[1].tool_axis", "spin");
+    // The task's "toward" must fit every primitive that has no tool axis of its own.
+    refused({{"toward", "away"}}, -1, "tool_axis", "line");
+    // A turn of radius under 5 mm has no axis a tool may point at.
+    json doc = full_doc();
+    doc["trajectory"] = json::array({{{"type", "circle"},
+                                      {"start", {0.5, 0.0, 0.2}},
+                                      {"center", {0.5, 0.0, 0.197}},
+                                      {"normal", {1, 0, 0}},
+                                      {"direction", "ccw"},
+                                      {"tool_axis", {{"toward", "axis"}}}}});
+    const InputError e = input_error([&] { parse_spatial_task(doc); });
+    CHECK(e.part().rfind("trajectory[0].tool_axis", 0) == 0);
 }

@@ -152,3 +152,28 @@ TEST_CASE("no planted feasible spatial task is walled off", "[prove][spatial]") 
         CHECK_FALSE(prove::prove_spatial_enclosure(task));
     }
 }
+
+TEST_CASE("a base region with no free cell round it is walled by the obstacle that fills them",
+          "[prove][spatial]") {
+    // The base region deep inside a sphere, and a tube so thick that the
+    // post fills every cell round the path: no free point there for a
+    // chain to leave from. The obstacle that fills the cells is the wall
+    // (and in the core); the witness holds no cells.
+    for (const char* name : {"base-in-sphere", "thick-tube"}) {
+        INFO(name);
+        const task::SpatialTask task = io::load_spatial_task(testing::source_path(
+            std::string("tests/fixtures/spatial-walls-empty/") + name + ".task.json"));
+        const auto proof = prove::prove_spatial_enclosure(task);
+        REQUIRE(proof);
+        REQUIRE(proof->enclosure);
+        REQUIRE(proof->enclosure->walls.size() == 1);
+        const prove::Enclosure& w = proof->enclosure->walls.front();
+        CHECK(w.cells.empty());
+        REQUIRE_FALSE(w.obstacles.empty());
+        const auto core = core_of(*proof);
+        for (int i : w.obstacles)
+            CHECK(std::count(core.begin(), core.end(), "obstacles[" + std::to_string(i) + "]") ==
+                  1);
+        CHECK_THAT(proof->message, Catch::Contains("no free point there"));
+    }
+}

@@ -7,6 +7,8 @@
 #include <set>
 
 #include <modsynth/control/sample.h>
+#include <modsynth/control/joint_limits.h>
+#include <modsynth/control/retime.h>
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/io/spatial_task_io.h>
 #include <modsynth/kinematics/dh_chain.h>
@@ -45,6 +47,30 @@ TEST_CASE("spatial synthesis tells its progress as typed events", "[synth][spati
     for (Stage st :
          {Stage::FrontStage, Stage::Search, Stage::Refinement, Stage::Verification, Stage::Timing})
         CHECK(stages.count(st) == 1);
+}
+
+TEST_CASE("spatial synthesis times its motion within the task's jerk limits", "[synth][spatial]") {
+    // The same task without jerk limits and with them: the jerk-limited
+    // motion starts and ends at rest with no acceleration, keeps every
+    // limit between samples (the rules of formats.md), and takes longer.
+    auto task = fixture("s3-0001.task.json");
+    task.robot.joint_limits = modsynth::task::JointLimitsSpec{{2.0}, {5.0}};
+    const auto free = modsynth::synth::synthesize(task, {});
+    task.robot.joint_limits->jerk = {5.0};
+    const auto limited = modsynth::synth::synthesize(task, {});
+    REQUIRE(free.status == modsynth::synth::Status::Solved);
+    REQUIRE(limited.status == modsynth::synth::Status::Solved);
+    REQUIRE(limited.dh_robot);
+    const auto limits = modsynth::control::joint_limits_for(task, limited.dh_robot->dof());
+    REQUIRE(limits.jerk.size() == static_cast<std::size_t>(limited.dh_robot->dof()));
+    CHECK(modsynth::control::timing_fault(limited.samples, limits).empty());
+    for (const auto* end : {&limited.samples.front(), &limited.samples.back()})
+        for (const double a : end->qdd) CHECK(std::abs(a) <= 1e-9);
+    CHECK(limited.samples.back().t > free.samples.back().t);
+    // The unlimited timing breaks the jerk rules: the test tells them apart.
+    CHECK_FALSE(modsynth::control::timing_fault(
+                    free.samples, modsynth::control::joint_limits_for(task, free.dh_robot->dof()))
+                    .empty());
 }
 
 TEST_CASE("spatial proofs carry their cores as task parts", "[synth][spatial]") {

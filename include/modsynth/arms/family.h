@@ -47,6 +47,10 @@ struct PatternContext {
     /// decimal rounding never rules a design out.
     double slack = 1e-7;
     kinematics::PoseMargins margins;
+    /// The share of a tool axis's tolerance the refinement holds the tool
+    /// within (nlp::SpatialMargins::tool_share): a pattern only chooses
+    /// skeletons, so it asks for that, not the whole tolerance.
+    double tool_share = 0.6;
 };
 
 /// What a family draws initial guesses within.

@@ -102,4 +102,12 @@ std::vector<Sample> retime(std::vector<Sample> samples, const JointLimits& limit
                            const RetimeOptions& options = {}, RetimeStats* stats = nullptr,
                            std::span<const std::size_t> stops = {});
 
+/// Where a timed motion breaks formats.md's rules for `limits` (velocity
+/// and acceleration, the jerk rules when the limits have jerks, rest at
+/// both ends), with the slack the contract's checker allows (1e-6): ""
+/// when it keeps them, else a line naming the first sample and joint
+/// ("samples[3]: joint 2's acceleration 12.5 rad/s^2 is over its 10
+/// rad/s^2 limit"). A motion without qd and qdd keeps none of them.
+std::string timing_fault(const std::vector<Sample>& samples, const JointLimits& limits);
+
 }  // namespace modsynth::control

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <modsynth/drawing/curve.h>
+#include <modsynth/drawing/deadline.h>
 #include <modsynth/geometry/disc.h>
 
 namespace modsynth::drawing {
@@ -47,6 +48,9 @@ struct ReadOptions {
     /// has no centreline; its outline is what a pen can draw), rather than
     /// skip them with a warning.
     bool hatch_boundaries = false;
+    /// Past it the reading stops with ImportTimeout (deadline.h): clip paths
+    /// make work that grows with their size times the drawing's.
+    Clock::time_point deadline = kNoDeadline;
 };
 
 /// The sizes a reader refuses beyond (a drawing for a robot arm has

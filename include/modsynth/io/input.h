@@ -3,23 +3,34 @@
 // named, and those bytes as JSON. Failures are task::InputErrors a user can
 // act on (the path, or the line and column where the syntax breaks).
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
+
+#include <modsynth/task/input_file.h>
 
 namespace modsynth::io {
 
-/// The whole content of a file; `what` says what the file should be ("task",
-/// "solution"). A path that is not a regular file (a folder, a FIFO, a
-/// device such as /dev/zero) or a file of more than `max_bytes` is refused
-/// before anything is read; a FIFO is never waited on. Failures are
-/// InputErrors whose part is the path.
-std::string read_input_file(const std::string& path, const std::string& what,
-                            std::size_t max_bytes);
+// Opening and reading a file the user named (task/input_file.h: below
+// every stage that reads one, the module catalog's too).
+using task::InputFile;
+using task::read_input_file;
 
 /// JSON text as a document. A syntax error or a number beyond the range of
 /// a double is an InputError for "(document)" saying where it is.
 nlohmann::json parse_json_text(std::string_view text);
+
+/// nlohmann's parser callback: called at each event, false drops the value.
+using JsonCallback =
+    std::function<bool(int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed)>;
+
+/// The file's JSON, parsed as it is read: its text is never held whole, and
+/// `callback` may take values out of the document as they complete (the
+/// samples of a long motion). Errors as parse_json_text's, the line and
+/// column read back from the file; a file that grows past its cap while it
+/// is read is refused as too large.
+nlohmann::json parse_json_file(const InputFile& file, const JsonCallback& callback);
 
 }  // namespace modsynth::io

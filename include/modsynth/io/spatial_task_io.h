@@ -8,6 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <modsynth/run/deadline.h>
 #include <modsynth/task/input_error.h>
 #include <modsynth/task/spatial_task.h>
 
@@ -15,9 +16,13 @@ namespace modsynth::io {
 
 /// A modsynth-task/1 document with `"space": "3d"`; one without it (or with
 /// "plane") is refused naming `space`: it is a planar task (io::parse_task).
-task::SpatialTask parse_spatial_task(const nlohmann::json& doc);
-task::SpatialTask parse_spatial_task_text(std::string_view text);
-task::SpatialTask load_spatial_task(const std::string& path);
+/// Checking that the path keeps off the obstacles costs primitives x turns
+/// x obstacles: it stops at `deadline` with io::CheckTimeout
+/// (io/check_timeout.h); by default it runs to the end.
+task::SpatialTask parse_spatial_task(const nlohmann::json& doc, const run::Deadline& deadline = {});
+task::SpatialTask parse_spatial_task_text(std::string_view text,
+                                          const run::Deadline& deadline = {});
+task::SpatialTask load_spatial_task(const std::string& path, const run::Deadline& deadline = {});
 /// The task as a document (round-trips through parse_spatial_task).
 nlohmann::json to_json(const task::SpatialTask& task);
 

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <modsynth/run/deadline.h>
 #include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
@@ -19,10 +20,12 @@ using TaskDocument = std::variant<task::Task, task::SpatialTask>;
 /// (Any other `space` is refused by the planar reader by name.)
 bool is_spatial(const nlohmann::json& doc);
 
-TaskDocument parse_task_document(const nlohmann::json& doc);
-TaskDocument parse_task_document_text(std::string_view text);
+/// The checks of a spatial task's geometry stop at `deadline` with
+/// io::CheckTimeout (io/check_timeout.h); by default they run to the end.
+TaskDocument parse_task_document(const nlohmann::json& doc, const run::Deadline& deadline = {});
+TaskDocument parse_task_document_text(std::string_view text, const run::Deadline& deadline = {});
 /// A task file; a task without a name takes the file's name without its
-/// extension, as io::load_task does.
-TaskDocument load_task_document(const std::string& path);
+/// extension, as io::load_task does (a CheckTimeout's task_name too).
+TaskDocument load_task_document(const std::string& path, const run::Deadline& deadline = {});
 
 }  // namespace modsynth::io

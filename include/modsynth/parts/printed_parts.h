@@ -54,6 +54,12 @@ inline constexpr double kRenderTimeLimit = 300.0;
 /// written to.
 void prepare_parts_folder(const std::string& folder);
 
+/// Every path the parts of an arm of up to `max_links` links may be
+/// written to in `folder` (sources and meshes), for the checks made before
+/// any work (io/output_check.h). A symbolic link at one of them is replaced
+/// by the file, never written through: nothing outside the folder changes.
+std::vector<std::string> part_paths(const std::string& folder, int max_links);
+
 /// The links of a planar arm built from `modules` (one per joint), at the
 /// robot's link lengths, each sized for its driving module's peak torque;
 /// module housings without dimensions in the catalog take the task's

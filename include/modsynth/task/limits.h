@@ -23,10 +23,32 @@ constexpr double kMaxCoordinate = 1000.0;
 constexpr double kMaxLength = 1000.0;
 /// Size of a task file, in bytes.
 constexpr std::size_t kMaxTaskBytes = 16u << 20;
-/// Size of a solution file, in bytes. A solution's samples take about 200
-/// bytes each and a run plans at most 250,000 trace samples
-/// (SynthesisOptions::trace_samples) plus its transitions and travels:
-/// well within this, and what is read stays within the memory above.
+/// Size of a solution file, in bytes. What is read stays within the memory
+/// above: the reader keeps a sample, not the document's text or tree, per
+/// sample (io/solution_io.h).
 constexpr std::size_t kMaxSolutionBytes = 256u << 20;
+
+/// The longest motion a solution holds, in seconds (32 years): a ROS 2
+/// Duration holds its whole seconds in 32 bits, and no robot runs longer.
+constexpr double kLongestMotion = 1e9;
+
+/// The most bytes a timed sample of a motion of `dof` joints takes in a
+/// solution file as io::write_solution lays it out, every number at its
+/// longest (24 characters) and every index at 10 digits: 172 bytes of keys,
+/// indices and time, and 30 per number (q, qd and qdd).
+constexpr std::size_t max_sample_bytes(int dof) {
+    return 180 + 90 * static_cast<std::size_t>(dof < 1 ? 1 : dof);
+}
+
+/// The most samples a motion of `dof` joints may have: the most whose
+/// solution file stays within kMaxSolutionBytes whatever its numbers, with
+/// room for the rest of the document (a task name as long as a task file
+/// may be). So every solution a run writes can be read back; planning
+/// stops there (control/motion.h, spatial_motion.h) and a longer motion is
+/// answered "unknown" with the reason (synth/solve.h). 559,240 for three
+/// joints, 349,525 for six.
+constexpr std::size_t max_motion_samples(int dof) {
+    return (kMaxSolutionBytes - kMaxTaskBytes) / max_sample_bytes(dof);
+}
 
 }  // namespace modsynth::task

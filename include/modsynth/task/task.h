@@ -26,6 +26,14 @@ struct BaseRegion {
     }
 };
 
+/// The range of every joint limit (formats.md: each from 1e-6 to 1e6, in
+/// rad/s, rad/s^2 or rad/s^3), and of a speed cap given beside them
+/// (`solve --joint-speed`, `--ee-speed`): past it no motion is worth timing
+/// (a motion at 1e-9 rad/s lasts for centuries) and its numbers stop being
+/// ones a controller or a file can hold.
+inline constexpr double kMinJointLimit = 1e-6;
+inline constexpr double kMaxJointLimit = 1e6;
+
 /// Joint speed, acceleration and (optionally) jerk limits a controller must
 /// respect (formats.md `robot.joint_limits`), in rad/s, rad/s^2 and
 /// rad/s^3. Each list holds

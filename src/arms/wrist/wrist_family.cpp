@@ -36,7 +36,6 @@ using kinematics::PoseMargins;
 using kinematics::PoseTarget;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr kinematics::IkBranch kBranches[] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
 constexpr int kDof = 5;
 /// (u . n)^2 at most this, n the arm plane's normal: the tool 16 degrees
 /// from the wrist's fold at least, where joint 4's angle is undefined.
@@ -45,17 +44,10 @@ constexpr double kFoldSin2 = 0.92;
 /// fourth link is the tool link a_5, in the same slot of the values).
 constexpr int kCarrierDof = 4;
 
-int column_of(int variant) {
-    const int c = variant & 3;
-    return c == 0 ? 1 : c == 1 ? -1 : 0;
-}
-int twist_of(int variant) { return (variant & 4) ? -1 : 1; }
-bool has_column(int variant) { return column_of(variant) != 0; }
-
-bool allows(const std::vector<double>& twists, double angle) {
-    return std::any_of(twists.begin(), twists.end(),
-                       [&](double a) { return std::abs(a - angle) <= 1e-9; });
-}
+using yaw_pitch::allows;
+using yaw_pitch::has_column;
+using yaw_pitch::kBranches;
+using yaw_pitch::twist_of;
 
 /// The tool's unit direction: the target's when it wants one, else the
 /// free numbers' (azimuth, elevation).
@@ -68,15 +60,10 @@ Point3<T> tool_of(const PoseTarget<T>& target, const std::vector<T>& along) {
     return Point3<T>(ce * cos(along[0]), ce * sin(along[0]), sin(along[1]));
 }
 
+/// The yaw-pitch arm under the wrist: the column and links 2 and 3.
 template <class T>
 kinematics::YawPitchShape<T> carrier(const ArmShape<T>& s) {
-    kinematics::YawPitchShape<T> y;
-    y.base = s.base;
-    const std::size_t first = has_column(s.variant) ? 1 : 0;
-    y.column = first ? s.values[0] : T(0.0);
-    y.links = {s.values[first], s.values[first + 1]};
-    y.column_twist = twist_of(s.variant);
-    return y;
+    return yaw_pitch::shape_of(s, 2);
 }
 
 template <class T>
@@ -84,15 +71,7 @@ const T& tool_link(const ArmShape<T>& s) {
     return s.values.back();
 }
 
-kinematics::YawPitchArm carrier_arm(const ArmShape<double>& s) {
-    const auto y = carrier(s);
-    kinematics::YawPitchArm arm;
-    arm.base = y.base;
-    arm.column = y.column;
-    arm.column_twist = y.column_twist;
-    arm.links = y.links;
-    return arm;
-}
+kinematics::YawPitchArm carrier_arm(const ArmShape<double>& s) { return yaw_pitch::arm_of(s, 2); }
 
 template <class T>
 ArmPose<T> pose_of(const ArmShape<T>& shape, const PoseTarget<T>& target, int branch,
@@ -211,7 +190,8 @@ public:
     // The wrist point lies within a_5 of the EE: the yaw-pitch arm's reach
     // with the tool link as its hand.
     smt::Pattern pattern(const PatternContext& c) const override {
-        return yaw_pitch_reach({c.task, kCarrierDof, c.variant, c.points, c.slack, c.margins});
+        return yaw_pitch_reach(
+            {c.task, kCarrierDof, c.variant, c.points, c.slack, c.margins, c.tool_share});
     }
 
     std::optional<ArmShape<double>> draw(const DrawContext& c, std::mt19937& rng,

@@ -36,42 +36,20 @@ using kinematics::PoseTarget;
 using smt::Term;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr kinematics::IkBranch kBranches[] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
 /// Hand pitches (rad) the guesses try per stroke, evenly over +-kMaxPitch.
 constexpr int kHandPitches = 7;
 constexpr double kMaxPitch = 1.2;
 
-int column_of(int variant) {
-    const int c = variant & 3;
-    return c == 0 ? 1 : c == 1 ? -1 : 0;
-}
-int twist_of(int variant) { return (variant & 4) ? -1 : 1; }
-bool has_column(int variant) { return column_of(variant) != 0; }
-
-bool allows(const std::vector<double>& twists, double angle) {
-    return std::any_of(twists.begin(), twists.end(),
-                       [&](double a) { return std::abs(a - angle) <= 1e-9; });
-}
+using yaw_pitch::allows;
+using yaw_pitch::arm_of;
+using yaw_pitch::column_of;
+using yaw_pitch::has_column;
+using yaw_pitch::kBranches;
+using yaw_pitch::twist_of;
 
 template <class T>
 kinematics::YawPitchShape<T> yaw_pitch_shape(const ArmShape<T>& s) {
-    kinematics::YawPitchShape<T> y;
-    y.base = s.base;
-    const std::size_t first = has_column(s.variant) ? 1 : 0;
-    y.column = first ? s.values[0] : T(0.0);
-    y.links.assign(s.values.begin() + static_cast<std::ptrdiff_t>(first), s.values.end());
-    y.column_twist = twist_of(s.variant);
-    return y;
-}
-
-kinematics::YawPitchArm arm_of(const ArmShape<double>& s) {
-    const auto y = yaw_pitch_shape(s);
-    kinematics::YawPitchArm arm;
-    arm.base = y.base;
-    arm.column = y.column;
-    arm.column_twist = y.column_twist;
-    arm.links = y.links;
-    return arm;
+    return yaw_pitch::shape_of(s);
 }
 
 template <class T>
@@ -204,9 +182,10 @@ std::optional<ArmShape<double>> yaw_pitch_draw(const DrawContext& c, std::mt1993
 namespace {
 
 // A yaw-pitch arm keeps its last segment in the vertical plane through the
-// column and the EE, so a tool axis asks the plane to pass within its
-// tolerance of the wanted direction u at every sampled point q:
-// |u_h x h| <= sin(th) |h|, h the horizontal offset of q from the base.
+// column and the EE, so a tool axis asks the plane to pass within the share
+// of its tolerance the refinement holds of the wanted direction u at every
+// sampled point q: |u_h x h| <= sin(share th) |h|, h the horizontal offset
+// of q from the base.
 void add_plane_tool_conditions(const PatternContext& c, smt::Pattern& p) {
     if (!task::holds_tool(c.task)) return;
     const Term bx = Term::variable("base_x"), by = Term::variable("base_y");
@@ -218,7 +197,7 @@ void add_plane_tool_conditions(const PatternContext& c, smt::Pattern& p) {
             const auto wanted = task::wanted_tool(c.task, prim, q);
             if (!wanted) continue;
             const Vec3& u = wanted->direction;
-            const double sin_th = std::sin(wanted->tolerance);
+            const double sin_th = std::sin(c.tool_share * wanted->tolerance);
             const Term hx = q.x() - bx, hy = q.y() - by;
             const Term cross = u.x() * hy - u.y() * hx;
             p.require({part}, cross * cross <= sin_th * sin_th * (hx * hx + hy * hy) + c.slack);
