@@ -381,8 +381,9 @@ Command add_import(CLI::App& parent) {
                 if (!a->spatial() && !a->tool.empty())
                     throw InputError("--tool", "only with --plane or --cylinder");
                 if (a->tool == "toward" && a->cylinder.empty())
-                    throw InputError("--tool", "'toward' points at a cylinder's axis: only with "
-                                               "--cylinder ('square' on a plane)");
+                    throw InputError("--tool",
+                                     "'toward' points at a cylinder's axis: only with "
+                                     "--cylinder ('square' on a plane)");
                 return run_import(*a);
             }};
 }
