@@ -25,6 +25,7 @@
 #include <modsynth/text/printable.h>
 
 #include "command.h"
+#include "drawing_task.h"
 #include "imported_task.h"
 #include "number_checks.h"
 #include "planar_task.h"
@@ -35,59 +36,11 @@ namespace modsynth::app {
 
 namespace {
 
-using geometry::Vec2;
 using task::InputError;
 
-struct ImportArgs {
-    std::string input, output, name, reply;
-    std::string text, font = drawing::kDefaultFont;
-    double height = 0.03;
-    double width = 0.0, scale = 0.0, rotate = 0.0, tolerance = 1e-4;
-    double time_limit = 60.0;
-    std::vector<double> at;
-    std::vector<std::vector<double>> bases;
-    std::string obstacle_layer;
-    std::vector<std::string> layers;
-    bool strict = false;
-    bool hatch_boundaries = false;
-    std::vector<int> dof;
-    double link_diameter = -1.0;
-    bool keep_order = false;
-    std::vector<double> plane, cylinder;
-    double tool_length = -1.0;
-    bool spatial() const { return !plane.empty() || !cylinder.empty(); }
+struct ImportArgs : DrawingTaskOptions {
+    std::string input, output, reply;
 };
-
-/// What the task gets from the options: its name, base regions and robot.
-task::Task base_task(const ImportArgs& a) {
-    task::Task t;
-    t.name = a.name;
-    for (const auto& b : a.bases) t.base_regions.push_back({Vec2(b[0], b[1]), Vec2(b[2], b[3])});
-    if (!a.dof.empty()) t.robot.dof = a.dof;
-    if (a.link_diameter > 0.0) t.robot.link_diameter = a.link_diameter;
-    return t;
-}
-
-/// The same for a drawing placed in space: base boxes, and the spatial
-/// robot's defaults (formats.md) unless given.
-task::SpatialTask spatial_base_task(const ImportArgs& a) {
-    task::SpatialTask t;
-    t.name = a.name;
-    for (const auto& b : a.bases)
-        t.base_regions.push_back(
-            {geometry::Vec3(b[0], b[1], b[2]), geometry::Vec3(b[3], b[4], b[5])});
-    if (!a.dof.empty()) t.robot.dof = a.dof;
-    if (a.link_diameter > 0.0) t.robot.link_diameter = a.link_diameter;
-    if (a.tool_length >= 0.0) t.robot.tool_length = a.tool_length;
-    return t;
-}
-
-SurfaceImport surface_of(const ImportArgs& a) {
-    SurfaceImport s;
-    s.plane = a.plane;
-    s.cylinder = a.cylinder;
-    return s;
-}
 
 std::string file_stem(const std::string& path) {
     return std::filesystem::path(path).stem().string();
@@ -99,24 +52,6 @@ void write_error_reply(const ImportArgs& a, const std::string& message, const st
     nlohmann::json body = {{"error", message}};
     if (!part.empty()) body["part"] = part;
     io::write_file_atomically(a.reply, body.dump() + "\n");
-}
-
-/// --text: the text in a Hershey font, its capitals --height metres tall,
-/// the first line's baseline starting at the origin.
-drawing::Drawing text_drawing(const ImportArgs& a) {
-    drawing::TextLayout layout;
-    layout.font = a.font;
-    layout.height = a.height;
-    drawing::TextCurves t = drawing::text_curves(a.text, Vec2::Zero(), layout, "--text", "--font");
-    if (!t.missing.empty()) {
-        throw InputError("--text", "the font '" + a.font + "' has no glyph for '" +
-                                       text::printable(t.missing, 40) + "'");
-    }
-    if (t.curves.empty()) throw InputError("--text", "nothing to draw");
-    drawing::Drawing d;
-    d.curves = std::move(t.curves);
-    d.metres_per_unit = 1.0;
-    return d;
 }
 
 // Past the time limit by this much, the watchdog answers for the import.
@@ -140,19 +75,9 @@ int run_import(ImportArgs& a) {
     const bool from_text = !a.text.empty();
     if (from_text) a.input = "--text";
     if (a.name.empty()) a.name = from_text ? "text" : file_stem(a.input);
-    drawing::ImportOptions options;
-    options.read.obstacle_layer = a.obstacle_layer;
-    options.read.layers = a.layers;
-    options.read.strict = a.strict;
-    options.read.hatch_boundaries = a.hatch_boundaries;
-    if (a.width > 0.0) options.placement.width = a.width;
-    if (a.scale > 0.0) options.placement.scale = a.scale;
-    if (!a.at.empty()) options.placement.at = Vec2(a.at[0], a.at[1]);
-    options.placement.rotate_degrees = a.rotate;
-    options.tolerance = a.tolerance;
+    drawing::ImportOptions options = import_options(a);
     const SurfaceImport surface = surface_of(a);
     const double wrap_tolerance = prepare_surface_import(options, surface);
-    options.keep_order = a.keep_order;
     options.deadline = start + limit;
     drawing::ImportResult r;
     nlohmann::json doc, reply;
@@ -340,27 +265,7 @@ Command add_import(CLI::App& parent) {
     return {sub, [a] {
                 if (a->input.empty() && a->text.empty())
                     throw InputError("DRAWING", "give a drawing file or --text");
-                for (const auto& b : a->bases) {
-                    if (a->spatial()) {
-                        if (b.size() != 6 || !(b[0] <= b[3]) || !(b[1] <= b[4]) || !(b[2] <= b[5]))
-                            throw InputError("--base",
-                                             "expected a box xmin,ymin,zmin,xmax,ymax,"
-                                             "zmax with min <= max (--plane, "
-                                             "--cylinder)");
-                    } else if (b.size() != 4 || !(b[0] <= b[2]) || !(b[1] <= b[3])) {
-                        throw InputError("--base", "expected xmin,ymin,xmax,ymax with min <= max");
-                    }
-                }
-                // Bad surfaces are refused before the drawing is read.
-                surface_of(*a).check();
-                for (int n : a->dof) {
-                    if (a->spatial() && !(n >= task::kMinSpatialDof && n <= task::kMaxSpatialDof))
-                        throw InputError("--dof", text::format("%d joints: a spatial chain "
-                                                               "(--plane, --cylinder) has 3 to 6",
-                                                               n));
-                }
-                if (a->tool_length >= 0.0 && !a->spatial())
-                    throw InputError("--tool-length", "only with --plane or --cylinder");
+                check_options(*a);
                 return run_import(*a);
             }};
 }
