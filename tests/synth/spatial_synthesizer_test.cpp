@@ -5,7 +5,7 @@
 #include <set>
 
 #include <modsynth/io/spatial_task_io.h>
-#include <modsynth/synth/spatial_reach_proof.h>
+#include <modsynth/prove/spatial_reach_proof.h>
 #include <modsynth/task/part.h>
 
 #include "../support/fixtures.h"
@@ -43,7 +43,7 @@ TEST_CASE("spatial synthesis tells its progress as typed events", "[synth][spati
 
 TEST_CASE("spatial proofs carry their cores as task parts", "[synth][spatial]") {
     const auto task = fixture("sir-0001.task.json");
-    const auto core = modsynth::synth::spatial_out_of_reach_core(task);
+    const auto core = modsynth::prove::spatial_out_of_reach_core(task);
     REQUIRE(core);
     CHECK(*core == std::vector<TaskPart>{TaskPart::robot(RobotKey::MaxLinkLength),
                                          TaskPart::base_regions(), TaskPart::trajectory(0)});
