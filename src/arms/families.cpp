@@ -6,10 +6,12 @@
 namespace modsynth::arms {
 
 const Family& yaw_pitch_family();
+const Family& scara_family();
 
 const std::vector<const Family*>& families() {
     static const std::vector<const Family*> all{
         &yaw_pitch_family(),
+        &scara_family(),
     };
     return all;
 }

@@ -56,7 +56,7 @@ std::optional<std::vector<double>> transition_configuration(const task::SpatialT
 
 void check_fits(const task::SpatialTask& task, const kinematics::ArmDesign& design) {
     const auto m = task.trajectory.size();
-    const int along = design.model->along_count(design.dof());
+    const int along = design.model->along_count(design.dof(), design.shape.variant);
     if (design.branches.size() != static_cast<std::size_t>(task::stroke_count(task)))
         throw std::invalid_argument("plan_spatial_motion: one IK branch per stroke is needed");
     if (along > 0 && (design.along.size() != m ||

@@ -82,7 +82,7 @@ void SpatialFormulation::Impl::build() {
     const kinematics::ArmDesign& d = problem.start;
     const FamilyBounds& f = problem.family;
     values = static_cast<int>(d.shape.values.size());
-    along = model.along_count(d.dof());
+    along = model.along_count(d.dof(), d.shape.variant);
     const int m = static_cast<int>(task.trajectory.size());
     if (static_cast<int>(f.values.size()) != values ||
         static_cast<int>(f.length_weights.size()) != values ||

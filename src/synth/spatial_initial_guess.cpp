@@ -202,7 +202,7 @@ std::vector<ScoredDesign> spatial_initial_guesses(const task::SpatialTask& task,
         const Vec3 grow = Vec3::Constant(std::min(task.robot.max_link_length, 1.0));
         context.base_box = {context.path_min - grow, context.path_max + grow};
     }
-    const auto grid = family.along_grid(skeleton.dof);
+    const auto grid = family.along_grid(skeleton.dof, skeleton.variant);
 
     std::mt19937 rng(seed * 7919u + static_cast<unsigned>(skeleton.variant + 2) * 131u +
                      static_cast<unsigned>(skeleton.base_region + 2) * 17u +

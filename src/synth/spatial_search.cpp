@@ -405,7 +405,7 @@ private:
         std::vector<nlp::SpatialPoint> pts;
         const arms::Family& family = *static_cast<const arms::Family*>(design.model);
         const Vec3 shoulder = family.reach_centre(design);
-        const bool sweeps = family.along_count(design.dof()) > 0;
+        const bool sweeps = family.along_count(design.dof(), design.shape.variant) > 0;
         for (int j = 0; j < static_cast<int>(task_.trajectory.size()); ++j) {
             const auto& prim = task_.trajectory[static_cast<std::size_t>(j)];
             const double len = geometry::length(prim);

@@ -102,7 +102,7 @@ public:
     /// Free numbers per primitive end (ArmDesign::along) the guesses try,
     /// the same along a whole stroke; one empty list for families with
     /// none.
-    virtual std::vector<std::vector<double>> along_grid(int dof) const = 0;
+    virtual std::vector<std::vector<double>> along_grid(int dof, int variant) const = 0;
 
     /// The design a DH chain is, when it has this family's pattern.
     virtual std::optional<kinematics::ArmShape<double>> read(

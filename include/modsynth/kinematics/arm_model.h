@@ -63,6 +63,9 @@ struct ArmPose {
     std::vector<Point3<T>> points;
     /// The 1-based link each segment belongs to (labels, blame).
     std::vector<int> links;
+    /// The joints' centres, the frame origins o_0 .. o_{n-1} (formats.md
+    /// "Joint bodies"): joint k turns about z_{k-1} through o_{k-1}.
+    std::vector<Point3<T>> joints;
     std::vector<PoseLimit<T>> limits;
 };
 
@@ -121,8 +124,8 @@ public:
     /// "yaw-pitch", "scara": how designs and progress name the family.
     virtual std::string_view name() const = 0;
     /// Free numbers per end of a primitive (ArmDesign::along), for a chain
-    /// of `dof` joints.
-    virtual int along_count(int dof) const = 0;
+    /// of `dof` joints of a variant.
+    virtual int along_count(int dof, int variant) const = 0;
     /// IK branches (ArmDesign::branches take 0 .. count - 1).
     virtual int branch_count(int dof) const = 0;
     virtual DhChain chain(const ArmDesign& design) const = 0;

@@ -83,6 +83,9 @@ ArmPose<T> pose_of(const ArmShape<T>& shape, const PoseTarget<T>& target, int br
     out.points.assign(p.points.begin() + (column ? 0 : 1), p.points.end());
     for (std::size_t k = 0; k + 1 < out.points.size(); ++k)
         out.links.push_back(static_cast<int>(column ? k + 1 : k + 2));
+    // o_0 is the base, o_1 the shoulder (a_1 = 0), then each pitch link's end
+    // but the last: the yaw-pitch pose's own points, the EE left out.
+    out.joints.assign(p.points.begin(), p.points.end() - 1);
     const double shorter =
         std::min(kinematics::value_of(y.links[0]), kinematics::value_of(y.links[1]));
     out.limits.push_back(
@@ -94,7 +97,7 @@ ArmPose<T> pose_of(const ArmShape<T>& shape, const PoseTarget<T>& target, int br
 class YawPitchFamily final : public Family {
 public:
     std::string_view name() const override { return "yaw-pitch"; }
-    int along_count(int dof) const override { return dof - 3; }
+    int along_count(int dof, int) const override { return dof - 3; }
     int branch_count(int) const override { return 4; }
 
     kinematics::DhChain chain(const ArmDesign& d) const override {
@@ -276,7 +279,7 @@ public:
         return s;
     }
 
-    std::vector<std::vector<double>> along_grid(int dof) const override {
+    std::vector<std::vector<double>> along_grid(int dof, int) const override {
         const int hands = dof - 3;
         if (hands <= 0) return {{}};
         std::vector<std::vector<double>> out;
