@@ -10,8 +10,10 @@ import { pointsAttr, svg } from "./dom.js";
 
 // The report's colours (src/output/plot.cpp), so a primitive keeps its
 // colour from the editor to the result.
-const COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b",
-                 "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#d62728"];
+// As the report's (src/output/plot.cpp): no red, green or grey, which
+// mean obstacles and conflicts, a wall's cells, the arm and base regions.
+const COLOURS = ["#1f77b4", "#ff7f0e", "#e7ba52", "#9467bd", "#8c564b",
+                 "#e377c2", "#17becf", "#bcbd22", "#006d77", "#393b79"];
 export const primitiveColour = (j) => COLOURS[j % COLOURS.length];
 
 const MIN_LABEL_PIXELS = 55;
