@@ -17,6 +17,7 @@
 
 #include "command.h"
 #include "number_checks.h"
+#include "task_file.h"
 #include "watchdog.h"
 
 namespace modsynth::app {
@@ -24,6 +25,7 @@ namespace {
 
 struct ExplainArgs {
     std::string task;
+    bool strict = false;
     double time_limit = 60.0;
     double solve_seconds = 10.0;
     bool json = false;
@@ -158,7 +160,7 @@ int run_explain(const ExplainArgs& a, const TaskT& task, const run::Stopwatch& c
 
 int run_explain(const ExplainArgs& a) {
     const run::Stopwatch clock;
-    io::TaskDocument doc = io::load_task_document(a.task);
+    io::TaskDocument doc = read_task_file(a.task, a.strict);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
         return run_explain(a, *spatial, clock);
     return run_explain(a, std::get<task::Task>(doc), clock);
@@ -171,6 +173,7 @@ Command add_explain(CLI::App& parent) {
     CLI::App* sub = parent.add_subcommand(
         "explain", "Say why a task cannot be done, and the smallest changes that would fix it");
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file (planar or spatial)")->required();
+    add_strict_option(*sub, a->strict);
     sub->add_option("--time-limit", a->time_limit,
                     "seconds for the whole command: the proof or the full run, then the "
                     "suggestions (default 60)")

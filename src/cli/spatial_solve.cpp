@@ -46,9 +46,7 @@ void print_summary(const task::SpatialTask& task, const synth::Solution& solutio
     }
     std::printf("  robot: %s\n", chain_summary(*solution.dh_robot).c_str());
     const auto& c = solution.certificate;
-    const std::string clearance = std::isfinite(c.min_clearance)
-                                      ? text::format("clearance margin %.4f m", c.min_clearance)
-                                      : std::string("no obstacles");
+    const std::string clearance = text::clearance_text(c.min_clearance);
     std::printf(
         "  certified over the whole motion: %s, self-collision margin %.4f m, EE deviation <= "
         "%.2e m\n",

@@ -395,10 +395,10 @@ Verdict Search::judge(const kinematics::YawPitchDesign& design) {
         if (cert.ok) {
             stats_.verify_seconds += seconds_since(t0);
             say(Stage::Verification,
-                text::format("    certified: %zu samples, clearance margin %.4f m, self-collision "
+                text::format("    certified: %zu samples, %s, self-collision "
                              "margin %.4f m, EE deviation <= %.2e m",
-                             samples->size(), cert.min_clearance, cert.min_self_clearance,
-                             cert.max_deviation));
+                             samples->size(), text::clearance_text(cert.min_clearance).c_str(),
+                             cert.min_self_clearance, cert.max_deviation));
             Solution s;
             s.task_name = task_.name;
             s.status = Status::Solved;

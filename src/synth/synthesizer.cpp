@@ -850,10 +850,9 @@ Verdict Search::judge(const kinematics::Robot& robot) {
         out.samples = std::move(*motion);
         out.certificate = std::move(cert);
         say(run::Stage::Verification,
-            text::format(
-                "    certified: clearance margin %.4f m, self margin %.4f m, deviation %.2g m",
-                out.certificate.min_clearance, out.certificate.min_self_clearance,
-                out.certificate.max_deviation));
+            text::format("    certified: %s, self margin %.4f m, deviation %.2g m",
+                         text::clearance_text(out.certificate.min_clearance).c_str(),
+                         out.certificate.min_self_clearance, out.certificate.max_deviation));
         return verdict;
     }
     // Each obstacle (and the tool against the links) once per candidate.
