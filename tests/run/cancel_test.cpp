@@ -58,7 +58,7 @@ modsynth::Task long_zigzag(int lines) {
 
 }  // namespace
 
-TEST_CASE("a solve cancelled from another thread returns within 0.2 s", "[run][synth]") {
+TEST_CASE("a solve cancelled from another thread returns within 0.2 s", "[run][synth][slow]") {
     const modsynth::Task task = long_zigzag(400);
     for (double after : {0.05, 0.4, 1.2}) {
         INFO("cancelled after " << after << " s");
