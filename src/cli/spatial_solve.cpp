@@ -9,6 +9,7 @@
 #include <modsynth/synth/module_choice.h>
 #include <modsynth/synth/solve.h>
 #include <modsynth/task/part.h>
+#include <modsynth/task/part_list.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
@@ -36,12 +37,8 @@ void print_summary(const task::SpatialTask& task, const synth::Solution& solutio
                 stats.front_seconds, stats.refine_seconds, stats.verify_seconds);
     if (solution.status != synth::Status::Solved) {
         std::printf("  %s\n", solution.explanation.message.c_str());
-        if (!solution.explanation.core.empty()) {
-            std::printf("  core:");
-            for (const auto& c : solution.explanation.core)
-                std::printf(" %s", task::to_string(c).c_str());
-            std::printf("\n");
-        }
+        if (!solution.explanation.core.empty())
+            std::printf("  core: %s\n", task::to_short_list(solution.explanation.core).c_str());
         return;
     }
     std::printf("  robot: %s\n", chain_summary(*solution.dh_robot).c_str());
