@@ -37,6 +37,8 @@ What is checked, in README.md and docs/**/*.md:
   the commands use.
 - No line starting with `$ ` may stand in any other block (but one tagged
   `markdown`, which shows Markdown source): every command shown is run.
+- A link to a file of the project (`[design](../design.md)`) must lead to
+  one.
 
 To add an example to a guide: write the command and its output in a
 `console` block; this test picks it up. Exit 0 when everything matches,
@@ -225,6 +227,13 @@ def main():
         rel = path.relative_to(root)
         where = None
         found = blocks(path)
+        if not args.slow:
+            # Links to the project's own files lead somewhere.
+            for target in re.findall(r"\]\(([^)#\s]+)(?:#[^)]*)?\)", path.read_text(encoding="utf-8")):
+                if re.match(r"[a-z]+:", target):
+                    continue
+                if not (path.parent / target).exists():
+                    failures.append(f"{rel}: a link to {target}, which is not there")
         # The slow run takes a file's fast blocks too, in order: a slow
         # command may read what a fast one wrote.
         has_slow = any(info.split()[:1] == ["console"] and "slow" in info.split()[1:] for info, _, _ in found)
