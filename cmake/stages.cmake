@@ -40,8 +40,8 @@ function(modsynth_stage name)
     target_link_libraries(${target} INTERFACE ${stage_links} ${S_PUBLIC_LIBS})
   endif()
 
-  file(GLOB own_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*
-                                        ${PROJECT_SOURCE_DIR}/include/modsynth/${name}/*.h)
+  file(GLOB_RECURSE own_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*
+                                                ${PROJECT_SOURCE_DIR}/include/modsynth/${name}/*.h)
   foreach(file IN LISTS own_files)
     file(STRINGS ${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]modsynth/[a-z_]+/")
     foreach(line IN LISTS includes)

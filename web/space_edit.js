@@ -10,7 +10,7 @@ import { splitPart, partName } from "./parts.js";
 import { add, isPoint3, middlePair, mid, obstacleKind, primitiveEnd3, sub } from "./space_geometry.js";
 
 /// The examples of tasks/spatial/, served as /NAME.json.
-export const SPATIAL_EXAMPLES = ["glue-box-edges", "helix-pipe", "over-fixture", "tilted-plane-drawing"];
+export const SPATIAL_EXAMPLES = ["glue-box-edges", "helix-pipe", "over-fixture", "scara-dispense", "tilted-plane-drawing"];
 
 /// The robot a spatial task leaves to its defaults (formats.md).
 export const SPATIAL_ROBOT_DEFAULTS = { dof: [3, 4], link_diameter: 0.03175, min_link_length: 0.05, max_link_length: 1.0, tool_length: 0 };

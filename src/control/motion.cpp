@@ -12,14 +12,11 @@
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
+#include "sample_parameters.h"
+#include "walk.h"
+
 namespace modsynth::control {
 namespace {
-
-double largest_change(const std::vector<double>& a, const std::vector<double>& b) {
-    double m = 0.0;
-    for (std::size_t k = 0; k < a.size(); ++k) m = std::max(m, std::abs(b[k] - a[k]));
-    return m;
-}
 
 // q for the distal pair from `origin` reaching p, after a proximal angle q1
 // (three joints) or alone (two joints), unwrapped next to `previous`.
@@ -54,12 +51,6 @@ std::string point_name(const task::Task& task, int j, double s) {
 
 }  // namespace
 
-int primitive_index(const task::Task& task, const Sample& sample) {
-    const int j = task::primitive_index(task, sample.stroke, sample.primitive);
-    assert(j >= 0 && j < static_cast<int>(task.trajectory.size()));
-    return j;
-}
-
 bool MotionOptions::IsValid(std::string* error) const {
     return text::OptionCheck("MotionOptions", error)
         .greater("max_joint_step", max_joint_step, 0.0)
@@ -91,57 +82,6 @@ std::optional<std::vector<double>> transition_configuration(const task::Task& ta
     return arm_configuration(robot, robot.distal_origin(q1), q1, task.trajectory[j].end, previous);
 }
 
-namespace {
-
-// Walks a parameter from `from` to `to`, each step as long as the joints
-// allow and at most `max_step`, the first at most `first_step`, appending a
-// sample per step (the first one excluded).
-// On failure, *failed_at is the parameter that could not be reached.
-// Stops (returning false with *gave_up set) at the sample cap or the deadline.
-// `primitive` and `stroke` tag the samples as the document does.
-template <typename ConfigAt>
-bool walk(double from, double to, double first_step, double max_step, const MotionOptions& options,
-          Phase phase, int primitive, int stroke, std::vector<Sample>& out, double* failed_at,
-          bool* gave_up, ConfigAt config_at) {
-    const double max_joint_step = options.max_joint_step;
-    const double dir = to >= from ? 1.0 : -1.0;
-    double u = from, du = 0.5 * std::min(first_step, max_step);
-    while (dir * (to - u) > 1e-12) {
-        if (out.size() >= options.max_samples ||
-            (out.size() % 1024 == 0 && options.deadline.expired())) {
-            *gave_up = true;
-            *failed_at = u;
-            return false;
-        }
-        du = std::min(2.0 * du, max_step);
-        std::optional<std::vector<double>> next;
-        double candidate = u;
-        for (int attempt = 0; attempt < options.step_attempts; ++attempt) {
-            // What is left after a full step, when less than another, is
-            // shared with it: a last step of a few nanometres would point
-            // the joint path anywhere, a kink that is only rounding.
-            const double left = dir * (to - u);
-            candidate = left <= du ? to : u + dir * (left < 2.0 * du ? 0.5 * left : du);
-            next = config_at(candidate, &out.back().q);
-            if (!next) break;
-            const double change = largest_change(out.back().q, *next);
-            if (change <= max_joint_step) break;
-            du *= std::max(0.1, 0.9 * max_joint_step / change);
-            next.reset();
-            if (du < 1e-10) break;
-        }
-        if (!next) {
-            *failed_at = candidate;
-            return false;
-        }
-        u = candidate;
-        out.push_back({0.0, phase, primitive, u, *next, stroke});
-    }
-    return true;
-}
-
-}  // namespace
-
 std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
                                                const kinematics::Robot& robot,
                                                const MotionOptions& options,
@@ -150,6 +90,23 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
     std::vector<Sample> out;
     double failed_at = 0.0;
     bool gave_up = false;
+    const WalkLimits limits{options.max_samples, options.deadline, options.step_attempts};
+    // A step fits when no joint moves more than max_joint_step.
+    const auto shrink = [&](const std::vector<double>& last,
+                            const std::vector<double>& next) -> std::optional<double> {
+        const double change = largest_change(last, next);
+        if (change <= options.max_joint_step) return std::nullopt;
+        return std::max(0.1, 0.9 * options.max_joint_step / change);
+    };
+    // Walks as control/walk.h does; on a stop, failed_at and gave_up say
+    // where and why.
+    const auto walk_to = [&](double from, double to, double first_step, double max_step,
+                             Phase phase, int k, int stroke, auto config_at) {
+        const auto stop =
+            walk(from, to, first_step, max_step, limits, phase, k, stroke, out, config_at, shrink);
+        if (stop) failed_at = stop->at, gave_up = stop->gave_up;
+        return !stop;
+    };
     auto fail = [&](int j, bool transition, double s,
                     bool travel = false) -> std::optional<std::vector<Sample>> {
         if (failure) {
@@ -188,11 +145,11 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             const double to =
                 from + std::remainder(robot.proximal_angles[j] - from, geometry::kTau);
             const std::size_t before = out.size();
-            const bool ok = walk(from, to, options.max_joint_step, options.max_joint_step, options,
-                                 Phase::Transition, k - 1, stroke, out, &failed_at, &gave_up,
-                                 [&](double q1, const std::vector<double>* prev) {
-                                     return transition_configuration(task, robot, j - 1, q1, prev);
-                                 });
+            const bool ok =
+                walk_to(from, to, options.max_joint_step, options.max_joint_step, Phase::Transition,
+                        k - 1, stroke, [&](double q1, const std::vector<double>* prev) {
+                            return transition_configuration(task, robot, j - 1, q1, prev);
+                        });
             if (!ok) return fail(j - 1, true, failed_at);
             if (out.size() > before) {
                 out.pop_back();  // the last pose is the next trace's first
@@ -214,15 +171,7 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             q = plan->poses.back();
         }
         const double length = geometry::length(task.trajectory[j]);
-        // On an arc or circle a step is at most a quarter turn: a grader
-        // reads progress as the angle unwrapped from one sample to the next,
-        // and a step past half a turn of a small circle (a flag's 0.44 mm
-        // dot, 2.8 mm round) reads as a step back.
-        const geometry::Primitive& prim = task.trajectory[j];
-        const double max_step =
-            prim.kind == geometry::PrimitiveKind::Line
-                ? options.max_ee_step
-                : std::min(options.max_ee_step, prim.radius * geometry::kPi / 2);
+        const double max_step = trace_step_limit(task.trajectory[j], options.max_ee_step);
         // At a junction the sample there ends primitive j - 1, and the
         // trace of j begins a short step past it (its start is the same
         // pose): a repeated pose would be a step that does not move, where
@@ -238,11 +187,10 @@ std::optional<std::vector<Sample>> plan_motion(const task::Task& task,
             if (!q) return fail(j, false, 0.0);
             out.push_back({0.0, Phase::Trace, k, 0.0, *q, stroke});
         }
-        const bool ok =
-            walk(0.0, length, first_step, max_step, options, Phase::Trace, k, stroke, out,
-                 &failed_at, &gave_up, [&](double s, const std::vector<double>* p) {
-                     return configuration_at(task, robot, j, s, p);
-                 });
+        const bool ok = walk_to(0.0, length, first_step, max_step, Phase::Trace, k, stroke,
+                                [&](double s, const std::vector<double>* p) {
+                                    return configuration_at(task, robot, j, s, p);
+                                });
         if (!ok) return fail(j, false, failed_at);
     }
     return out;
@@ -288,43 +236,29 @@ bool refine_motion(const task::Task& task, const kinematics::Robot& robot,
 
 void recover_parameters(const task::Task& task, const kinematics::Robot& robot,
                         std::vector<Sample>& samples) {
-    constexpr double kSnap = 1e-5;
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-        Sample& a = samples[i];
-        if (a.phase == Phase::Transition) {
-            a.s = a.q.empty() ? 0.0 : a.q[0];
-            continue;
-        }
-        if (a.phase == Phase::Travel) {
-            a.s = 0.0;
-            continue;
-        }
-        const geometry::Primitive& prim = task.trajectory[primitive_index(task, a)];
-        const double length = geometry::length(prim);
-        const geometry::Vec2 ee = kinematics::forward(robot.base, robot.link_lengths, a.q).back();
-        double s = geometry::nearest(prim, ee).s;
-        const bool first = i == 0 || samples[i - 1].phase != Phase::Trace ||
-                           samples[i - 1].primitive != a.primitive ||
-                           samples[i - 1].stroke != a.stroke;
-        switch (prim.kind) {
-            case geometry::PrimitiveKind::Line:
-            case geometry::PrimitiveKind::Arc:
-                break;
-            case geometry::PrimitiveKind::Circle:
-                // A circle's start is also its end: a run begins at 0, and
-                // goes on from the sample before, not back to the start.
-                if (first && s > length - kSnap) s = 0.0;
-                if (!first) {
-                    double d = s - samples[i - 1].s;
-                    d -= length * std::round(d / length);
-                    s = samples[i - 1].s + d;
-                }
-                break;
-        }
-        if (std::abs(s) < kSnap) s = 0.0;
-        if (std::abs(s - length) < kSnap) s = length;
-        a.s = s;
-    }
+    recover_parameters_with(
+        task, samples, [&](std::size_t i, const geometry::Primitive& prim, bool first) {
+            const double length = geometry::length(prim);
+            const geometry::Vec2 ee =
+                kinematics::forward(robot.base, robot.link_lengths, samples[i].q).back();
+            double s = geometry::nearest(prim, ee).s;
+            switch (prim.kind) {
+                case geometry::PrimitiveKind::Line:
+                case geometry::PrimitiveKind::Arc:
+                    break;
+                case geometry::PrimitiveKind::Circle:
+                    // A circle's start is also its end: a run begins at 0, and
+                    // goes on from the sample before, not back to the start.
+                    if (first && s > length - 1e-5) s = 0.0;
+                    if (!first) {
+                        double d = s - samples[i - 1].s;
+                        d -= length * std::round(d / length);
+                        s = samples[i - 1].s + d;
+                    }
+                    break;
+            }
+            return s;
+        });
 }
 
 void assign_times(std::vector<Sample>& samples, const MotionOptions& options) {

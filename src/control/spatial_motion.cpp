@@ -12,14 +12,10 @@
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
+#include "walk.h"
+
 namespace modsynth::control {
 namespace {
-
-double largest_change(const std::vector<double>& a, const std::vector<double>& b) {
-    double m = 0.0;
-    for (std::size_t k = 0; k < a.size(); ++k) m = std::max(m, std::abs(b[k] - a[k]));
-    return m;
-}
 
 void unwrap(std::vector<double>& q, const std::vector<double>* previous) {
     if (!previous) return;
@@ -32,103 +28,43 @@ std::vector<double> lerp(const std::vector<double>& a, const std::vector<double>
     return out;
 }
 
-/// The hand pitches of the transition after primitive j at fraction t of
-/// its sweep.
-std::vector<double> transition_pitches(const kinematics::YawPitchDesign& design, int j, double t) {
-    return lerp(design.hand_pitches_at(j, 1.0), design.hand_pitches_at(j + 1, 0.0), t);
-}
-
-bool has_sweep(const kinematics::YawPitchDesign& design, int j) {
-    const auto a = design.hand_pitches_at(j, 1.0);
-    const auto b = design.hand_pitches_at(j + 1, 0.0);
-    return largest_change(a, b) > 1e-12;
-}
-
-std::optional<std::vector<double>> transition_configuration(
-    const task::SpatialTask& task, const kinematics::YawPitchDesign& design, int j, double t,
-    const std::vector<double>* previous) {
-    const auto& branch = design.branches[static_cast<std::size_t>(task::stroke_of(task, j))];
-    auto q = kinematics::yaw_pitch_ik(design.arm, geometry::end_point(task.trajectory[j]), branch,
-                                      transition_pitches(design, j, t));
+/// The pose of `design` with its EE at `target`, unwrapped next to
+/// `previous` when given.
+std::optional<std::vector<double>> configuration(const kinematics::ArmDesign& design, int branch,
+                                                 const geometry::Vec3& target,
+                                                 const std::vector<double>& along,
+                                                 const std::vector<double>* previous) {
+    kinematics::PoseTarget<double> t;
+    t.point = target;
+    auto q = design.model->joint_angles(design, t, branch, along);
     if (q) unwrap(*q, previous);
     return q;
 }
 
-class Walker {
-public:
-    Walker(const kinematics::YawPitchDesign& design, const SpatialMotionOptions& options,
-           std::vector<Sample>& out)
-        : opt_(options), chain_(design.chain()), total_(chain_.total_length()), out_(out) {}
+int branch_of(const task::SpatialTask& task, const kinematics::ArmDesign& design, int j) {
+    return design.branches[static_cast<std::size_t>(task::stroke_of(task, j))];
+}
 
-    /// Whether the step from the last sample to q is short enough.
-    bool fits(const std::vector<double>& q, double* change) const {
-        const std::vector<double>& last = out_.back().q;
-        *change = largest_change(last, q);
-        if (*change > opt_.max_joint_step) return false;
-        std::vector<double> dq(q.size());
-        for (std::size_t k = 0; k < q.size(); ++k) dq[k] = q[k] - last[k];
-        return kinematics::chord_gap(chain_, dq, 0, chain_.dof(), total_) <= opt_.max_chord_gap;
-    }
+std::optional<std::vector<double>> transition_configuration(const task::SpatialTask& task,
+                                                            const kinematics::ArmDesign& design,
+                                                            int j, double t,
+                                                            const std::vector<double>* previous) {
+    return configuration(design, branch_of(task, design, j),
+                         geometry::end_point(task.trajectory[static_cast<std::size_t>(j)]),
+                         design.transition_along(j, t), previous);
+}
 
-    // Walks a parameter from `from` to `to`, each step as long as the
-    // limits allow, appending a sample per step (the first one excluded).
-    // On failure *failed_at is the parameter that could not be reached;
-    // *gave_up is set at the sample cap or the deadline.
-    template <typename ConfigAt>
-    bool walk(double from, double to, double first_step, Phase phase, int primitive, int stroke,
-              double* failed_at, bool* gave_up, ConfigAt config_at) {
-        double u = from, du = first_step;
-        while (to - u > 1e-12) {
-            if (out_.size() >= opt_.max_samples ||
-                (out_.size() % 1024 == 0 && opt_.deadline.expired())) {
-                *gave_up = true;
-                *failed_at = u;
-                return false;
-            }
-            du = std::min(2.0 * du, first_step);
-            std::optional<std::vector<double>> next;
-            double candidate = u;
-            for (int attempt = 0; attempt < opt_.step_attempts; ++attempt) {
-                candidate = to - u <= du ? to : u + du;
-                next = config_at(candidate, &out_.back().q);
-                if (!next) break;
-                double change = 0.0;
-                if (fits(*next, &change)) break;
-                // The chord bound is quadratic in the step, the joint step
-                // linear: shrinking by the joint ratio alone may not be enough,
-                // so at least a tenth goes every time.
-                du *= std::clamp(0.9 * opt_.max_joint_step / std::max(change, 1e-300), 0.1, 0.7);
-                next.reset();
-                if (du < 1e-10) break;
-            }
-            if (!next) {
-                *failed_at = candidate;
-                return false;
-            }
-            u = candidate;
-            out_.push_back({0.0, phase, primitive, u, *next, stroke});
-        }
-        return true;
-    }
-
-private:
-    const SpatialMotionOptions& opt_;
-    kinematics::DhChain chain_;
-    double total_;
-    std::vector<Sample>& out_;
-};
-
-void check_fits(const task::SpatialTask& task, const kinematics::YawPitchDesign& design) {
+void check_fits(const task::SpatialTask& task, const kinematics::ArmDesign& design) {
     const auto m = task.trajectory.size();
+    const int along = design.model->along_count(design.dof(), design.shape.variant);
     if (design.branches.size() != static_cast<std::size_t>(task::stroke_count(task)))
         throw std::invalid_argument("plan_spatial_motion: one IK branch per stroke is needed");
-    if (design.hand_links() > 0 &&
-        (design.pitches.size() != m ||
-         std::any_of(design.pitches.begin(), design.pitches.end(), [&](const auto& p) {
-             return static_cast<int>(p.size()) != design.hand_links();
-         })))
+    if (along > 0 && (design.along.size() != m ||
+                      std::any_of(design.along.begin(), design.along.end(), [&](const auto& p) {
+                          return static_cast<int>(p.size()) != 2 * along;
+                      })))
         throw std::invalid_argument(
-            "plan_spatial_motion: one pitch per hand link and primitive is needed");
+            "plan_spatial_motion: the free numbers of every primitive's ends are needed");
 }
 
 }  // namespace
@@ -143,28 +79,49 @@ bool SpatialMotionOptions::IsValid(std::string* error) const {
         .ok();
 }
 
-std::optional<std::vector<double>> spatial_configuration_at(
-    const task::SpatialTask& task, const kinematics::YawPitchDesign& design, int j, double s,
-    const std::vector<double>* previous) {
+std::optional<std::vector<double>> spatial_configuration_at(const task::SpatialTask& task,
+                                                            const kinematics::ArmDesign& design,
+                                                            int j, double s,
+                                                            const std::vector<double>* previous) {
     const geometry::Primitive3& prim = task.trajectory[static_cast<std::size_t>(j)];
     const double length = geometry::length(prim);
-    const auto& branch = design.branches[static_cast<std::size_t>(task::stroke_of(task, j))];
-    auto q = kinematics::yaw_pitch_ik(design.arm, geometry::point_at(prim, s), branch,
-                                      design.hand_pitches_at(j, length > 0.0 ? s / length : 0.0));
-    if (q) unwrap(*q, previous);
-    return q;
+    return configuration(design, branch_of(task, design, j), geometry::point_at(prim, s),
+                         design.along_at(j, length > 0.0 ? s / length : 0.0), previous);
 }
 
 std::optional<std::vector<Sample>> plan_spatial_motion(const task::SpatialTask& task,
-                                                       const kinematics::YawPitchDesign& design,
+                                                       const kinematics::ArmDesign& design,
                                                        const SpatialMotionOptions& options,
                                                        MotionFailure* failure) {
     text::require_valid(options);
     check_fits(task, design);
     std::vector<Sample> out;
-    Walker walker(design, options, out);
+    const kinematics::DhChain chain = design.chain();
+    const double total = chain.total_length();
+    const WalkLimits limits{options.max_samples, options.deadline, options.step_attempts};
+    // A step fits when no joint moves more than max_joint_step and the EE
+    // strays from its chord by at most max_chord_gap. The chord bound is
+    // quadratic in the step, the joint step linear: shrinking by the joint
+    // ratio alone may not be enough, so at least a tenth goes every time.
+    const auto shrink = [&](const std::vector<double>& last,
+                            const std::vector<double>& next) -> std::optional<double> {
+        const double change = largest_change(last, next);
+        std::vector<double> dq(next.size());
+        for (std::size_t k = 0; k < next.size(); ++k) dq[k] = next[k] - last[k];
+        if (change <= options.max_joint_step &&
+            kinematics::chord_gap(chain, dq, 0, chain.dof(), total) <= options.max_chord_gap)
+            return std::nullopt;
+        return std::clamp(0.9 * options.max_joint_step / std::max(change, 1e-300), 0.1, 0.7);
+    };
     double failed_at = 0.0;
     bool gave_up = false;
+    const auto walk_to = [&](double to, double step, Phase phase, int k, int stroke,
+                             auto config_at) {
+        const auto stop =
+            walk(0.0, to, step, step, limits, phase, k, stroke, out, config_at, shrink);
+        if (stop) failed_at = stop->at, gave_up = stop->gave_up;
+        return !stop;
+    };
     auto fail = [&](int j, bool transition, double s,
                     bool travel = false) -> std::optional<std::vector<Sample>> {
         if (failure) {
@@ -190,15 +147,15 @@ std::optional<std::vector<Sample>> plan_spatial_motion(const task::SpatialTask& 
         const int stroke = task::stroke_of(task, j);
         const int k = j - task::stroke_first(task, stroke);
         std::optional<std::vector<double>> q;
-        if (k > 0 && has_sweep(design, j - 1)) {
-            // The EE holds the join while the hand pitches sweep linearly to
+        if (k > 0 && design.sweeps_after(j - 1)) {
+            // The EE holds the join while the free numbers sweep linearly to
             // the next primitive's.
             const std::size_t before = out.size();
             const bool ok =
-                walker.walk(0.0, 1.0, 1.0, Phase::Transition, k - 1, stroke, &failed_at, &gave_up,
-                            [&](double t, const std::vector<double>* prev) {
-                                return transition_configuration(task, design, j - 1, t, prev);
-                            });
+                walk_to(1.0, 1.0, Phase::Transition, k - 1, stroke,
+                        [&](double t, const std::vector<double>* prev) {
+                            return transition_configuration(task, design, j - 1, t, prev);
+                        });
             if (!ok) return fail(j - 1, true, failed_at);
             if (out.size() > before) out.pop_back();  // the last pose is the next trace's first
         } else if (j > 0 && k == 0) {
@@ -220,19 +177,19 @@ std::optional<std::vector<Sample>> plan_spatial_motion(const task::SpatialTask& 
                                          out.empty() ? nullptr : &out.back().q);
         if (!q) return fail(j, false, 0.0);
         out.push_back({0.0, Phase::Trace, k, 0.0, *q, stroke});
-        const double length = geometry::length(task.trajectory[static_cast<std::size_t>(j)]);
-        const bool ok =
-            walker.walk(0.0, length, options.max_ee_step, Phase::Trace, k, stroke, &failed_at,
-                        &gave_up, [&](double s, const std::vector<double>* prev) {
-                            return spatial_configuration_at(task, design, j, s, prev);
-                        });
+        const geometry::Primitive3& prim = task.trajectory[static_cast<std::size_t>(j)];
+        const double length = geometry::length(prim);
+        const bool ok = walk_to(length, trace_step_limit(prim, options.max_ee_step), Phase::Trace,
+                                k, stroke, [&](double s, const std::vector<double>* prev) {
+                                    return spatial_configuration_at(task, design, j, s, prev);
+                                });
         if (!ok) return fail(j, false, failed_at);
         out.back().s = length;  // exactly, as the verifier checks the end
     }
     return out;
 }
 
-bool refine_spatial_motion(const task::SpatialTask& task, const kinematics::YawPitchDesign& design,
+bool refine_spatial_motion(const task::SpatialTask& task, const kinematics::ArmDesign& design,
                            std::vector<Sample>& samples, const std::vector<int>& pairs) {
     std::vector<int> sorted = pairs;
     std::sort(sorted.rbegin(), sorted.rend());  // back to front keeps indices valid

@@ -13,10 +13,10 @@
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/geometry/vec.h>
 #include <modsynth/prove/spatial_enclosure.h>
+#include <modsynth/prove/spatial_reach_proof.h>
 #include <modsynth/run/deadline.h>
 #include <modsynth/run/stopwatch.h>
 #include <modsynth/smt/spatial_front_stage.h>
-#include <modsynth/synth/spatial_reach_proof.h>
 #include <modsynth/synth/spatial_synthesizer.h>
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
@@ -50,7 +50,7 @@ std::string joint_counts(const std::vector<int>& dof) {
 // that a suggestion is never unproved).
 bool conflict_free(const task::SpatialTask& task, double check_seconds,
                    const run::Deadline& deadline) {
-    if (synth::spatial_out_of_reach_core(task)) return false;
+    if (prove::spatial_out_of_reach_core(task)) return false;
     prove::EnclosureOptions walls;
     walls.minimise = false;  // only whether one holds
     if (prove::prove_spatial_enclosure(task, deadline.within(check_seconds), walls)) return false;
@@ -413,9 +413,9 @@ void SpatialRelaxers::moved_path(const TaskPart& part) {
 InfeasibilityProof prove_infeasible(const task::SpatialTask& task, double time_limit) {
     InfeasibilityProof proof;
     const run::Deadline deadline = run::Deadline::in(time_limit);
-    if (auto core = synth::spatial_out_of_reach_core(task)) {
+    if (auto core = prove::spatial_out_of_reach_core(task)) {
         proof.proved = true;
-        proof.message = synth::describe_spatial_reach(task, *core);
+        proof.message = prove::describe_spatial_reach(task, *core);
         proof.core = std::move(*core);
         return proof;
     }

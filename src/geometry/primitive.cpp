@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -231,6 +232,17 @@ double curvature(const Primitive& p) {
         case PrimitiveKind::Circle:
             if (p.radius == 0.0) return 0.0;
             return (p.sweep > 0.0 ? 1.0 : -1.0) / p.radius;
+    }
+    invalid_kind(p.kind);
+}
+
+double half_turn_length(const Primitive& p) {
+    switch (p.kind) {
+        case PrimitiveKind::Line:
+            return std::numeric_limits<double>::infinity();
+        case PrimitiveKind::Arc:
+        case PrimitiveKind::Circle:
+            return kPi * p.radius;
     }
     invalid_kind(p.kind);
 }

@@ -321,6 +321,17 @@ double max_curvature(const Primitive3& p) {
                       p);
 }
 
+double half_turn_length(const Primitive3& p) {
+    return std::visit(Overload{[](const Line3&) { return std::numeric_limits<double>::infinity(); },
+                               [](const Arc3& a) { return kPi * a.turn.radius; },
+                               [](const Circle3& c) { return kPi * c.turn.radius; },
+                               [](const Helix3& h) {
+                                   const double r = h.turn.radius, c = rise_per_radian(h);
+                                   return kPi * std::sqrt(r * r + c * c);
+                               }},
+                      p);
+}
+
 CurvePoint3 nearest(const Primitive3& p, const Vec3& q) {
     return extreme_between(p, q, 0.0, length(p), Extremum::Nearest);
 }

@@ -4,6 +4,8 @@
 #include <modsynth/prove/loop_proof.h>
 #include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/prove/reach_proof.h>
+#include <modsynth/prove/spatial_enclosure.h>
+#include <modsynth/prove/spatial_reach_proof.h>
 
 namespace modsynth::prove {
 
@@ -30,6 +32,26 @@ std::vector<Prover> provers(const BranchAndBoundOptions& two_joint) {
                      const run::Deadline& deadline) -> std::optional<Proof> {
              if (!(two_joint.time_limit > 0.0)) return std::nullopt;
              return prove_two_joint_infeasible(task, two_joint, deadline);
+         }},
+    };
+}
+
+std::vector<SpatialProver> spatial_provers(double enclosure_seconds) {
+    return {
+        {"reach",
+         [](const task::SpatialTask& task, const run::Deadline&) -> std::optional<Proof> {
+             auto core = spatial_out_of_reach_core(task);
+             if (!core) return std::nullopt;
+             Proof proof;
+             proof.message = describe_spatial_reach(task, *core);
+             proof.core = std::move(*core);
+             return proof;
+         }},
+        // Milliseconds where no obstacle comes near a shell, within
+        // enclosure_seconds otherwise.
+        {"walls",
+         [enclosure_seconds](const task::SpatialTask& task, const run::Deadline& deadline) {
+             return prove_spatial_enclosure(task, deadline.within(enclosure_seconds));
          }},
     };
 }

@@ -20,6 +20,8 @@
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
+#include "part_literals.h"
+
 namespace modsynth::smt {
 namespace {
 
@@ -71,8 +73,7 @@ struct FrontStage::Impl {
     std::vector<z3::expr> r;
     z3::expr elbow;
     std::vector<z3::expr> regions;
-    std::vector<task::TaskPart> names;  // parts with an assumption literal, in creation order
-    std::map<task::TaskPart, z3::expr> literal_of;
+    PartLiterals literals{ctx};
     bool refined_level = true;   // `fine` holds the encoding (small enough paths)
     bool unsat_refined = false;  // the last Unsat came from `fine`
     bool incomplete = false;     // encoding stopped at the deadline
@@ -107,13 +108,8 @@ struct FrontStage::Impl {
     double seconds_left() const { return options.deadline.remaining(); }
     bool expired() const { return options.deadline.expired(); }
 
-    // The timeout ends at the deadline, whatever the per-check budget.
     void set_timeout(z3::solver& s, double seconds) {
-        z3::params p(ctx);
-        p.set("unsat_core", true);
-        const double ms = std::min({seconds, seconds_left(), 1e6}) * 1000.0;
-        p.set("timeout", static_cast<unsigned>(std::max(1.0, ms)));
-        s.set(p);
+        smt::set_timeout(ctx, s, seconds, options.deadline);
     }
 
     // Constraints of the task itself (not guarded): go to both solvers.
@@ -124,21 +120,10 @@ struct FrontStage::Impl {
 
     z3::expr num(double v) { return ctx.real_val(decimal(v).c_str()); }
 
-    z3::expr literal(const task::TaskPart& part) {
-        auto it = literal_of.find(part);
-        if (it != literal_of.end()) return it->second;
-        z3::expr l = ctx.bool_const(task::to_string(part).c_str());
-        literal_of.emplace(part, l);
-        names.push_back(part);
-        return l;
-    }
-
     // A constraint family guarded by the literals of the task parts it uses.
     void require(std::initializer_list<task::TaskPart> parts, const z3::expr& e,
                  bool is_refined = false) {
-        z3::expr_vector guards(ctx);
-        for (const auto& part : parts) guards.push_back(literal(part));
-        const z3::expr guarded = z3::implies(z3::mk_and(guards), e);
+        const z3::expr guarded = literals.guarded(parts, e);
         if (refined_level) fine.add(guarded);
         if (!is_refined) solver.add(guarded);
     }
@@ -386,16 +371,12 @@ struct FrontStage::Impl {
         return s;
     }
 
-    z3::expr_vector assumptions() {
-        z3::expr_vector a(ctx);
-        for (const auto& n : names) a.push_back(literal_of.at(n));
-        return a;
-    }
+    z3::expr_vector assumptions() const { return literals.all(); }
 
     FrontStage::Result check() {
         if (incomplete || expired()) return Result::Unknown;
         set_timeout(solver, options.time_limit);
-        const z3::check_result coarse = solver.check(assumptions());
+        const z3::check_result coarse = smt::check(ctx, solver, assumptions(), options.deadline);
         if (coarse != z3::sat) {
             unsat_refined = false;
             return coarse == z3::unsat ? Result::Unsat : Result::Unknown;
@@ -407,7 +388,7 @@ struct FrontStage::Impl {
         // coarse model names the next skeleton as well.
         if (blocked > 0 && !options.refine_after_block) return Result::Sat;
         set_timeout(fine, std::min(options.time_limit, options.refined_time_limit));
-        const z3::check_result refined = fine.check(assumptions());
+        const z3::check_result refined = smt::check(ctx, fine, assumptions(), options.deadline);
         if (refined == z3::unsat) {
             unsat_refined = true;
             return Result::Unsat;
@@ -439,83 +420,25 @@ bool FrontStage::exhausted_by_blocking() const { return impl_->blocked > 0; }
 std::vector<task::TaskPart> FrontStage::minimal_core() {
     Impl& m = *impl_;
     z3::solver& s = m.unsat_refined ? m.fine : m.solver;
-    if (m.expired()) return {};
-    const double limit = m.unsat_refined ? m.options.refined_time_limit : m.options.time_limit;
-    m.set_timeout(s, limit);
-    // Other calls (conflicts) may have run checks since: re-establish the
-    // conflict so the core below is this one's.
-    const run::Stopwatch conflict;
-    if (s.check(m.assumptions()) != z3::unsat) return {};
-    // A trial without a needed literal is satisfiable, and nlsat can take
-    // its whole timeout to find the model (10 s on a 640-primitive path,
-    // where the conflict itself takes 0.3 s). An undecided trial keeps its
-    // literal, which leaves a conflict: so trials get a few times what the
-    // conflict took.
-    const double trial_limit = std::min(
-        limit,
-        std::max(m.options.core_trial_seconds, m.options.core_trial_factor * conflict.seconds()));
-    z3::expr_vector core = s.unsat_core();
-    std::vector<z3::expr> kept;
-    for (unsigned i = 0; i < core.size(); ++i) kept.push_back(core[i]);
-    // Deletion-based minimisation: drop each literal whose absence keeps the
-    // conflict. Unsat answers of this relaxation are fast.
-    // At the deadline the core found so far is returned: a conflict, if
-    // not a minimal one.
-    for (std::size_t i = 0; i < kept.size() && !m.expired();) {
-        m.set_timeout(s, trial_limit);
-        z3::expr_vector trial(m.ctx);
-        for (std::size_t k = 0; k < kept.size(); ++k)
-            if (k != i) trial.push_back(kept[k]);
-        if (s.check(trial) == z3::unsat) {
-            // The trial's own core may be smaller still: keep only that.
-            const z3::expr_vector smaller = s.unsat_core();
-            std::vector<z3::expr> next;
-            for (std::size_t k = 0; k < kept.size(); ++k) {
-                if (k == i) continue;
-                for (unsigned c = 0; c < smaller.size(); ++c)
-                    if (z3::eq(kept[k], smaller[c])) next.push_back(kept[k]);
-            }
-            kept = std::move(next);
-            i = std::min(i, kept.size());
-        } else {
-            ++i;
-        }
-    }
-    std::vector<task::TaskPart> out;
-    for (const auto& part : m.names) {
-        const z3::expr& literal = m.literal_of.at(part);
-        const bool in = std::any_of(kept.begin(), kept.end(),
-                                    [&](const z3::expr& e) { return z3::eq(e, literal); });
-        if (in) out.push_back(part);
-    }
-    return out;
+    const CoreBudget budget{m.unsat_refined ? m.options.refined_time_limit : m.options.time_limit,
+                            m.options.core_trial_seconds, m.options.core_trial_factor};
+    return m.literals.parts_of(
+        smt::minimal_core(m.ctx, s, m.assumptions(), budget, m.options.deadline));
 }
 
 bool FrontStage::conflicts(const std::vector<task::TaskPart>& parts) {
     Impl& m = *impl_;
-    z3::expr_vector a(m.ctx);
-    for (const auto& part : parts) {
-        auto it = m.literal_of.find(part);
-        if (it != m.literal_of.end()) a.push_back(it->second);
-    }
+    const z3::expr_vector a = m.literals.of(parts);
     if (m.incomplete || m.expired()) return false;
     m.set_timeout(m.solver, m.options.time_limit);
-    if (m.solver.check(a) == z3::unsat) return true;
+    if (smt::check(m.ctx, m.solver, a, m.options.deadline) == z3::unsat) return true;
     if (kinematics::has_proximal_link(m.dof) || !m.refined_level) return false;
     m.set_timeout(m.fine, std::min(m.options.time_limit, m.options.refined_time_limit));
-    return m.fine.check(a) == z3::unsat;
+    return smt::check(m.ctx, m.fine, a, m.options.deadline) == z3::unsat;
 }
 
 std::string FrontStage::smtlib() const {
-    // Ends with check-sat-assuming over every task part, so that running the
-    // file alone (z3 FILE) answers as the front stage does.
-    std::string s = (impl_->refined_level ? impl_->fine : impl_->solver).to_smt2();
-    const auto pos = s.rfind("(check-sat)");
-    if (pos != std::string::npos) s.erase(pos);
-    s += "(check-sat-assuming (";
-    for (std::size_t i = 0; i < impl_->names.size(); ++i)
-        s += (i ? " |" : "|") + task::to_string(impl_->names[i]) + "|";
-    return s + "))\n";
+    return impl_->literals.script(impl_->refined_level ? impl_->fine : impl_->solver);
 }
 
 std::string FrontStage::reason_unknown() const {

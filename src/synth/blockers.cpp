@@ -3,20 +3,14 @@
 #include <algorithm>
 #include <vector>
 
-#include <modsynth/task/part.h>
 #include <modsynth/text/format.h>
 
 namespace modsynth::synth {
 namespace {
 
-std::string primitive_name(const task::Task& task, int j) {
-    return task::to_string(task::TaskPart::primitive(task, j));
-}
-
-std::string span(const task::Task& task, int first, int last) {
+std::string span(const std::function<std::string(int)>& name, int first, int last) {
     if (first < 0) return "";
-    return first == last ? primitive_name(task, first)
-                         : primitive_name(task, first) + " to " + primitive_name(task, last);
+    return first == last ? name(first) : name(first) + " to " + name(last);
 }
 
 std::string links_of(unsigned links) {
@@ -58,7 +52,7 @@ void Blockers::no_travel(int dof, int primitive) { tally(dof, Kind::Travel, -1, 
 
 void Blockers::not_converged(int dof) { tally(dof, Kind::Refinement, -1, -1); }
 
-std::string Blockers::describe(const task::Task& task) const {
+std::string Blockers::describe_with(const std::function<std::string(int)>& name) const {
     std::string out;
     for (const auto& [dof, tallies] : by_dof_) {
         std::vector<std::pair<std::pair<Kind, int>, Tally>> most(tallies.begin(), tallies.end());
@@ -68,7 +62,7 @@ std::string Blockers::describe(const task::Task& task) const {
         if (most.size() > 4) most.resize(4);
         std::string said;
         for (const auto& [key, t] : most) {
-            const std::string where = span(task, t.first, t.last);
+            const std::string where = span(name, t.first, t.last);
             std::string item;
             switch (key.first) {
                 case Kind::Obstacle:

@@ -59,9 +59,7 @@ const char* to_string(RobotKey key) {
 
 TaskPart TaskPart::primitive(const Task& task, int j) {
     assert(j >= 0 && j < static_cast<int>(task.trajectory.size()));
-    if (!has_strokes(task)) return trajectory(j);
-    const int s = stroke_of(task, j);
-    return stroke_primitive(s, j - stroke_first(task, s));
+    return primitive_part(task, j);
 }
 
 TaskPart TaskPart::with_field(std::string field) const {
@@ -101,6 +99,12 @@ std::string to_string(const TaskPart& part) {
             break;
     }
     return part.field().empty() ? s : s + "." + part.field();
+}
+
+std::string to_string(const std::vector<TaskPart>& parts, const char* separator) {
+    std::string s;
+    for (std::size_t i = 0; i < parts.size(); ++i) s += (i ? separator : "") + to_string(parts[i]);
+    return s;
 }
 
 std::vector<std::string> to_strings(const std::vector<TaskPart>& parts) {

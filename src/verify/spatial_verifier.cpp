@@ -13,6 +13,8 @@
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
+#include "motion_checks.h"
+
 namespace modsynth::verify {
 namespace {
 
@@ -36,14 +38,12 @@ struct Pose {
 
 Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a + t * (b - a); }
 
-class Checker {
+class Checker : CheckerBase<task::SpatialTask> {
 public:
     Checker(const task::SpatialTask& task, const kinematics::DhChain& chain,
             const std::vector<Sample>& samples, const VerifyOptions& options)
-        : task_(task),
+        : CheckerBase(task, samples, options),
           chain_(chain),
-          samples_(samples),
-          opt_(options),
           layout_(kinematics::segment_layout(chain)),
           parts_(kinematics::clearance_parts(layout_, task.robot.tool_length,
                                              chain.link_diameter / 2.0)) {
@@ -55,7 +55,7 @@ public:
     Certificate run() {
         check_structure();
         if (!structure_ok_) return finish();
-        check_order();
+        check_order(false);
         poses_.reserve(samples_.size());
         for (std::size_t i = 0; i < samples_.size(); ++i)
             poses_.push_back(pose(static_cast<int>(i)));
@@ -73,28 +73,6 @@ private:
     /// The last joint that moves segment k: a d part lies on its own joint's axis.
     int last_joint_of(int k) const {
         return layout_[static_cast<std::size_t>(k)].along_axis ? link_of(k) - 1 : link_of(k);
-    }
-
-    void violation(Violation::Kind kind, int i, double amount, std::string message,
-                   int obstacle = -1, int link = -1) {
-        Violation v;
-        v.kind = kind;
-        v.sample = i;
-        if (i >= 0) {
-            v.primitive = control::primitive_index(task_, samples_[i]);
-            v.transition = samples_[i].phase == Phase::Transition;
-            v.travel = samples_[i].phase == Phase::Travel;
-            v.s = samples_[i].s;
-        }
-        v.obstacle = obstacle;
-        v.link = link;
-        v.amount = amount;
-        v.message = std::move(message);
-        cert_.violations.push_back(std::move(v));
-    }
-
-    void structure(const std::string& message) {
-        violation(Violation::Kind::Structure, -1, 0.0, message);
     }
 
     // Guarantee 5 and what the replay needs.
@@ -132,74 +110,7 @@ private:
                 text::format("robot.tool_length %.6f m is longer than the chain's last "
                              "segment (%.6f m)",
                              spec.tool_length, last));
-        if (samples_.empty()) structure("no samples");
-        for (std::size_t i = 0; i < samples_.size(); ++i) {
-            const Sample& a = samples_[i];
-            if (a.stroke < 0 || a.stroke >= task::stroke_count(task_)) {
-                structure("stroke " + std::to_string(a.stroke) + " of sample " + std::to_string(i) +
-                          " is not in the task");
-                break;
-            }
-            if (a.primitive < 0 || a.primitive > task::stroke_last(task_, a.stroke) -
-                                                     task::stroke_first(task_, a.stroke)) {
-                structure("primitive " + std::to_string(a.primitive) + " of sample " +
-                          std::to_string(i) + " is not in the task");
-                break;
-            }
-        }
-        for (std::size_t i = 0; i < samples_.size(); ++i) {
-            if (static_cast<int>(samples_[i].q.size()) != n) {
-                violation(Violation::Kind::Structure, static_cast<int>(i), 0.0,
-                          "sample has the wrong number of joint angles");
-                break;
-            }
-        }
-        structure_ok_ = cert_.violations.empty();
-    }
-
-    // Guarantee 1: trace runs of every primitive in order, each from its
-    // start to its end with non-decreasing progress of at most max_ee_step;
-    // transitions only between consecutive primitives of a stroke, travel
-    // only between strokes. The same rules as the plane's.
-    void check_order() {
-        const int m = static_cast<int>(task_.trajectory.size());
-        int expected = 0;
-        for (std::size_t i = 0; i < samples_.size(); ++i) {
-            const Sample& a = samples_[i];
-            const int j = control::primitive_index(task_, a);
-            const std::string name = task::part_name(task_, j);
-            const bool first = i == 0 || samples_[i - 1].phase != a.phase ||
-                               samples_[i - 1].primitive != a.primitive ||
-                               samples_[i - 1].stroke != a.stroke;
-            const int at = static_cast<int>(i);
-            if (a.phase == Phase::Trace && first) {
-                if (j != expected || a.s != 0.0)
-                    violation(Violation::Kind::Order, at, 0.0,
-                              "trace of " + name + " out of order or not from its start");
-                expected = j + 1;
-            }
-            if (a.phase == Phase::Transition &&
-                (j != expected - 1 || !task::has_transition_after(task_, j)))
-                violation(Violation::Kind::Order, at, 0.0, "transition out of place");
-            if (a.phase == Phase::Travel &&
-                (j != expected - 1 || j + 1 >= m || !task::ends_stroke(task_, j)))
-                violation(Violation::Kind::Order, at, 0.0, "travel out of place");
-            if (!first && a.phase == Phase::Trace) {
-                const double step = a.s - samples_[i - 1].s;
-                if (step < 0.0 || step > opt_.max_ee_step + 1e-12)
-                    violation(Violation::Kind::Order, at, 0.0,
-                              text::format("progress step %.6f m between samples", step));
-            }
-            const bool last = i + 1 == samples_.size() || samples_[i + 1].phase != a.phase ||
-                              samples_[i + 1].primitive != a.primitive ||
-                              samples_[i + 1].stroke != a.stroke;
-            if (a.phase == Phase::Trace && last &&
-                std::abs(a.s - geometry::length(task_.trajectory[j])) > 1e-9)
-                violation(Violation::Kind::Order, at, 0.0,
-                          "trace of " + name + " stops before its end");
-        }
-        if (expected != m)
-            violation(Violation::Kind::Order, -1, 0.0, "the motion does not trace every primitive");
+        check_samples(n);
     }
 
     Pose pose(int i) const {
@@ -409,20 +320,10 @@ private:
                                    back));
     }
 
-    Certificate finish() {
-        cert_.ok = cert_.violations.empty() && cert_.coarse_pairs.empty();
-        return std::move(cert_);
-    }
-
-    const task::SpatialTask& task_;
     const kinematics::DhChain& chain_;
-    const std::vector<Sample>& samples_;
-    VerifyOptions opt_;
     std::vector<kinematics::SegmentLayout> layout_;
     std::vector<kinematics::SegmentPart> parts_;
     std::vector<geometry::ObstacleCore> cores_;
-    Certificate cert_;
-    bool structure_ok_ = false;
     std::vector<Pose> poses_;
 };
 

@@ -14,6 +14,8 @@
 #include <modsynth/text/format.h>
 #include <modsynth/text/option_check.h>
 
+#include "motion_checks.h"
+
 namespace modsynth::verify {
 namespace {
 
@@ -38,11 +40,11 @@ struct Pose {
     double deviation = 0.0;
 };
 
-class Checker {
+class Checker : CheckerBase<task::Task> {
 public:
     Checker(const task::Task& task, const kinematics::Robot& robot,
             const std::vector<Sample>& samples, const VerifyOptions& options)
-        : task_(task), robot_(robot), samples_(samples), opt_(options) {
+        : CheckerBase(task, samples, options), robot_(robot) {
         cert_.min_clearance = kInf;
         cert_.min_self_clearance = kInf;
     }
@@ -50,7 +52,7 @@ public:
     Certificate run() {
         check_structure();
         if (!structure_ok_) return finish();
-        check_order();
+        check_order(true);
         poses_.reserve(samples_.size());
         for (std::size_t i = 0; i < samples_.size(); ++i)
             poses_.push_back(pose(static_cast<int>(i)));
@@ -60,24 +62,6 @@ public:
     }
 
 private:
-    void violation(Violation::Kind kind, int i, double amount, std::string message,
-                   int obstacle = -1, int link = -1) {
-        Violation v;
-        v.kind = kind;
-        v.sample = i;
-        if (i >= 0) {
-            v.primitive = control::primitive_index(task_, samples_[i]);
-            v.transition = samples_[i].phase == Phase::Transition;
-            v.travel = samples_[i].phase == Phase::Travel;
-            v.s = samples_[i].s;
-        }
-        v.obstacle = obstacle;
-        v.link = link;
-        v.amount = amount;
-        v.message = std::move(message);
-        cert_.violations.push_back(std::move(v));
-    }
-
     void check_structure() {
         const int n = robot_.dof();
         const auto& allowed = task_.robot.dof;
@@ -101,94 +85,7 @@ private:
             violation(Violation::Kind::Structure, -1, 0.0,
                       text::format("base (%.6f, %.6f) lies in no base region", robot_.base.x(),
                                    robot_.base.y()));
-        if (samples_.empty()) violation(Violation::Kind::Structure, -1, 0.0, "no samples");
-        for (std::size_t i = 0; i < samples_.size(); ++i) {
-            const Sample& a = samples_[i];
-            if (a.stroke < 0 || a.stroke >= task::stroke_count(task_)) {
-                violation(Violation::Kind::Structure, -1, 0.0,
-                          "stroke " + std::to_string(a.stroke) + " of sample " + std::to_string(i) +
-                              " is not in the task");
-                break;
-            }
-            if (a.primitive < 0 || a.primitive > task::stroke_last(task_, a.stroke) -
-                                                     task::stroke_first(task_, a.stroke)) {
-                violation(Violation::Kind::Structure, -1, 0.0,
-                          "primitive " + std::to_string(a.primitive) + " of sample " +
-                              std::to_string(i) + " is not in the task");
-                break;
-            }
-        }
-        for (std::size_t i = 0; i < samples_.size(); ++i) {
-            if (static_cast<int>(samples_[i].q.size()) != n) {
-                violation(Violation::Kind::Structure, static_cast<int>(i), 0.0,
-                          "sample has the wrong number of joint angles");
-                break;
-            }
-        }
-        structure_ok_ = cert_.violations.empty();
-    }
-
-    // Trace runs of primitives 0..m-1 in order, each from start to end with
-    // non-decreasing progress; transitions only between consecutive runs of
-    // a stroke, travel only between strokes.
-    void check_order() {
-        const int m = static_cast<int>(task_.trajectory.size());
-        int expected = 0;
-        for (std::size_t i = 0; i < samples_.size(); ++i) {
-            const Sample& a = samples_[i];
-            const int j = control::primitive_index(task_, a);
-            const std::string name = task::part_name(task_, j);
-            const bool first = i == 0 || samples_[i - 1].phase != a.phase ||
-                               samples_[i - 1].primitive != a.primitive ||
-                               samples_[i - 1].stroke != a.stroke;
-            if (a.phase == Phase::Trace && first) {
-                // After the trace of the primitive before, whose last sample
-                // stands at the junction, a trace may begin one step past
-                // its start (control::plan_motion repeats no pose there).
-                const bool past_junction = i > 0 && junction(samples_[i - 1], a) && a.s > 0.0 &&
-                                           a.s <= opt_.max_ee_step + 1e-12;
-                if (j != expected || (a.s != 0.0 && !past_junction))
-                    violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
-                              "trace of " + name + " out of order or not from its start");
-                expected = j + 1;
-            }
-            if (a.phase == Phase::Transition &&
-                (j != expected - 1 || !task::has_transition_after(task_, j)))
-                violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
-                          "transition out of place");
-            if (a.phase == Phase::Travel &&
-                (j != expected - 1 || j + 1 >= m || !task::ends_stroke(task_, j)))
-                violation(Violation::Kind::Order, static_cast<int>(i), 0.0, "travel out of place");
-            if (!first && a.phase == Phase::Trace) {
-                const double step = a.s - samples_[i - 1].s;
-                if (step < 0.0 || step > opt_.max_ee_step + 1e-12)
-                    violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
-                              text::format("progress step %.6f m between samples", step));
-                // Progress along an arc is read as an angle unwrapped between
-                // samples: a step of half a turn or more reads as one back.
-                const geometry::Primitive& p = task_.trajectory[j];
-                if (p.kind != geometry::PrimitiveKind::Line && step >= p.radius * geometry::kPi)
-                    violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
-                              text::format("progress step %.6f m between samples, half a turn "
-                                           "or more of a circle of radius %.6f m",
-                                           step, p.radius));
-            }
-            const bool last = i + 1 == samples_.size() || samples_[i + 1].phase != a.phase ||
-                              samples_[i + 1].primitive != a.primitive ||
-                              samples_[i + 1].stroke != a.stroke;
-            if (a.phase == Phase::Trace && last &&
-                std::abs(a.s - geometry::length(task_.trajectory[j])) > 1e-9)
-                violation(Violation::Kind::Order, static_cast<int>(i), 0.0,
-                          "trace of " + name + " stops before its end");
-        }
-        if (expected != m)
-            violation(Violation::Kind::Order, -1, 0.0, "the motion does not trace every primitive");
-    }
-
-    /// a traces a primitive and b the next one of the same stroke.
-    static bool junction(const Sample& a, const Sample& b) {
-        return a.phase == Phase::Trace && b.phase == Phase::Trace && a.stroke == b.stroke &&
-               b.primitive == a.primitive + 1;
+        check_samples(n);
     }
 
     Pose pose(int i) const {
@@ -260,7 +157,7 @@ private:
                                 sa.primitive == sb.primitive && sa.stroke == sb.stroke;
         // From a junction's sample, at the end of one primitive, to a
         // sample past the start of the next.
-        const bool across = junction(sa, sb) && sb.s > 0.0;
+        const bool across = control::junction(sa, sb) && sb.s > 0.0;
         const bool refinable = (same_trace && sb.s - sa.s > 1e-7) || (across && sb.s > 1e-7) ||
                                (in_transition && std::abs(sb.q[0] - sa.q[0]) > 1e-7) ||
                                (free && step > 1e-7);
@@ -328,17 +225,7 @@ private:
         if (coarse) cert_.coarse_pairs.push_back(i);
     }
 
-    Certificate finish() {
-        cert_.ok = cert_.violations.empty() && cert_.coarse_pairs.empty();
-        return std::move(cert_);
-    }
-
-    const task::Task& task_;
     const kinematics::Robot& robot_;
-    const std::vector<Sample>& samples_;
-    VerifyOptions opt_;
-    Certificate cert_;
-    bool structure_ok_ = false;
     std::vector<Pose> poses_;
 };
 

@@ -6,38 +6,12 @@
 #include <string>
 #include <vector>
 
+#include <modsynth/control/sample.h>
 #include <modsynth/kinematics/robot.h>
 #include <modsynth/run/deadline.h>
 #include <modsynth/task/task.h>
 
 namespace modsynth::control {
-
-/// Travel: the pen-up motion between two strokes (formats.md "Several
-/// strokes"), the EE free.
-enum class Phase { Trace, Transition, Travel };
-
-struct Sample {
-    double t = 0.0;
-    Phase phase = Phase::Trace;
-    /// As in the document: the index within `stroke` (task/strokes.h maps it
-    /// to task.trajectory, see primitive_index below). In travel the last
-    /// primitive of the stroke just finished.
-    int primitive = 0;
-    /// Where along the motion: arc length along the primitive for trace
-    /// samples, the first joint's angle for transition samples, 0 in travel.
-    double s = 0.0;
-    std::vector<double> q;
-    int stroke = 0;
-    /// Joint rates (rad/s) and accelerations (rad/s^2), as long as q when
-    /// the motion is timed for a controller, empty otherwise (formats.md,
-    /// "Timing a controller accepts"). Braced, so that a sample written as
-    /// {t, phase, primitive, s, q, stroke} leaves them empty without a
-    /// missing-initializer warning.
-    std::vector<double> qd{}, qdd{};
-};
-
-/// The index in task.trajectory of the primitive a sample belongs to.
-int primitive_index(const task::Task& task, const Sample& sample);
 
 struct MotionOptions {
     /// rad between consecutive samples, for every joint. formats.md

@@ -1,9 +1,10 @@
 #pragma once
-// The motion of a yaw-pitch arm along a spatial task (formats.md "Spatial
-// tasks"): the exact closed-form IK along every primitive on its stroke's
-// branch, the hand pitches varied linearly along each primitive and swept
-// in a transition (EE held) where they change at a join, and a straight
-// joint-space travel between strokes. Samples are dense enough for the
+// The motion of an arm of any family (kinematics/arm_model.h) along a
+// spatial task (formats.md "Spatial tasks"): the family's exact closed-form
+// IK along every primitive on its stroke's branch, the design's free
+// numbers varied linearly along each primitive and swept in a transition
+// (EE held) where they change at a join, and a straight joint-space travel
+// between strokes. Samples are dense enough for the
 // certified verifier: no joint moves more than max_joint_step, the EE no
 // more than max_ee_step along the path, and the bound on how far the EE
 // strays from its chord between two samples stays under max_chord_gap.
@@ -14,7 +15,7 @@
 #include <vector>
 
 #include <modsynth/control/motion.h>
-#include <modsynth/kinematics/yaw_pitch_design.h>
+#include <modsynth/kinematics/arm_model.h>
 #include <modsynth/run/deadline.h>
 #include <modsynth/task/spatial_task.h>
 
@@ -47,11 +48,12 @@ struct SpatialMotionOptions {
 
 /// The configuration of the design's arm with its EE at arc length s of
 /// primitive j (index in task.trajectory), on its stroke's branch, at the
-/// hand pitches of that point, unwrapped next to `previous` when given;
+/// free numbers of that point, unwrapped next to `previous` when given;
 /// std::nullopt when out of reach or near a singularity.
-std::optional<std::vector<double>> spatial_configuration_at(
-    const task::SpatialTask& task, const kinematics::YawPitchDesign& design, int j, double s,
-    const std::vector<double>* previous);
+std::optional<std::vector<double>> spatial_configuration_at(const task::SpatialTask& task,
+                                                            const kinematics::ArmDesign& design,
+                                                            int j, double s,
+                                                            const std::vector<double>* previous);
 
 /// The whole motion, stroke after stroke: trace samples of every primitive
 /// from its start to its end, transitions (s = the fraction of the sweep,
@@ -61,7 +63,7 @@ std::optional<std::vector<double>> spatial_configuration_at(
 /// deadline: failure->gave_up). Throws std::invalid_argument when the
 /// options are not valid or the design does not fit the task.
 std::optional<std::vector<Sample>> plan_spatial_motion(const task::SpatialTask& task,
-                                                       const kinematics::YawPitchDesign& design,
+                                                       const kinematics::ArmDesign& design,
                                                        const SpatialMotionOptions& options,
                                                        MotionFailure* failure = nullptr);
 
@@ -69,7 +71,7 @@ std::optional<std::vector<Sample>> plan_spatial_motion(const task::SpatialTask& 
 /// `pairs`: by arc length within a trace, by the sweep's fraction in a
 /// transition, in joint space between strokes (which move linearly there).
 /// False when a midpoint is out of reach.
-bool refine_spatial_motion(const task::SpatialTask& task, const kinematics::YawPitchDesign& design,
+bool refine_spatial_motion(const task::SpatialTask& task, const kinematics::ArmDesign& design,
                            std::vector<Sample>& samples, const std::vector<int>& pairs);
 
 }  // namespace modsynth::control

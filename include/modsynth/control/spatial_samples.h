@@ -9,9 +9,6 @@
 
 namespace modsynth::control {
 
-/// The index in task.trajectory of the primitive a sample belongs to.
-int primitive_index(const task::SpatialTask& task, const Sample& sample);
-
 /// For samples read from a file, which carry no `s`: the arc length of the
 /// EE's nearest point on its primitive, followed from the previous sample of
 /// the run within half a turn either way (from the start at a run's first

@@ -44,6 +44,11 @@ Vec2 point_at(const Primitive& p, double s);
 Vec2 tangent_at(const Primitive& p, double s);
 /// Signed curvature (1/radius, + for ccw, 0 for lines).
 double curvature(const Primitive& p);
+/// Arc length of half a turn about the primitive's centre, infinite for a
+/// line: a reader that follows progress as an angle unwrapped from one
+/// sample to the next takes a step this long or longer for one back, so
+/// motions step less and the verifier refuses more.
+double half_turn_length(const Primitive& p);
 
 struct NearestPoint {
     double s = 0.0;  ///< arc length parameter of the nearest point

@@ -89,6 +89,9 @@ Vec3 tangent_at(const Primitive3& p, double s);
 /// 0 for a line, 1/R for an arc or circle, R/(R^2 + c^2) for a helix of
 /// radius R rising c = pitch / (2 pi) per radian.
 double max_curvature(const Primitive3& p);
+/// Arc length of half a turn about the primitive's axis, infinite for a
+/// line (geometry/primitive.h, half_turn_length of a planar primitive).
+double half_turn_length(const Primitive3& p);
 
 struct CurvePoint3 {
     double s = 0.0;  ///< arc length of the point

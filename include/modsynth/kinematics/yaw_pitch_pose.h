@@ -11,12 +11,10 @@
 
 #include <Eigen/Core>
 
+#include <modsynth/kinematics/autodiff.h>
 #include <modsynth/kinematics/yaw_pitch_ik.h>
 
 namespace modsynth::kinematics {
-
-template <class T>
-using Point3 = Eigen::Matrix<T, 3, 1>;
 
 template <class T>
 struct YawPitchPose {

@@ -1,21 +1,23 @@
 #pragma once
-// The spatial refinement as a reduced nonlinear program: its variables are
-// the design alone (the base in its box, the column d_1, the pitch links
-// a_2..a_n and, with four to six joints, each hand link's pitch at the
-// start and the end of each primitive); the joint positions at each point
-// of the path come from the closed-form IK of the skeleton's branch
-// (kinematics/yaw_pitch_pose.h), and the constraints' derivatives by
-// forward-mode automatic differentiation through it. Constraints at each
-// point: the elbow kept from its fold and stretch, the path kept off the
-// column's axis, the chain's self-collision rules and every clearance part
-// clear of the obstacles near it, each with a margin. The objective is the
-// chain's length, |d_1| + sum a_k.
+// The spatial refinement as a reduced nonlinear program, for an arm of any
+// family (kinematics/arm_model.h): its variables are the design alone (the
+// base in its box, the family's lengths and offsets and, where the family
+// has them, its free numbers at the start and the end of each primitive);
+// the pose at each point of the path comes from the family's closed-form
+// IK, and the constraints' derivatives by forward-mode automatic
+// differentiation through it. Constraints at each point: the family's pose
+// limits (an elbow kept from its fold, the path off a yaw axis), the
+// chain's self-collision rules and every clearance part clear of the
+// obstacles near it, each with a margin; and once, the family's linear
+// conditions on the design. The objective is the chain's length.
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <modsynth/geometry/vec3.h>
-#include <modsynth/kinematics/yaw_pitch_design.h>
+#include <modsynth/kinematics/arm_model.h>
 #include <modsynth/nlp/smooth_program.h>
 #include <modsynth/task/spatial_task.h>
 
@@ -23,7 +25,7 @@ namespace modsynth::nlp {
 
 /// Where the refinement constrains the arm: arc length s of primitive j
 /// (index in the task's trajectory), or, in the transition after primitive
-/// j, fraction t of the hand pitches' sweep (EE held at the join).
+/// j, fraction t of the free numbers' sweep (EE held at the join).
 struct SpatialPoint {
     int primitive = 0;
     double s = 0.0;
@@ -34,12 +36,9 @@ struct SpatialPoint {
 /// What each constraint keeps beyond the rule, so that the motion between
 /// the constrained points and the certified verifier's bounds have room.
 struct SpatialMargins {
-    /// |cos q_3| at most this: the elbow stays 14 degrees from its fold and
-    /// its stretch, where the joints would have to turn fast (and the IK
-    /// loses precision).
+    /// |cos| of an elbow at most this (kinematics::PoseMargins).
     double elbow_cos = 0.97;
-    /// m: the path's distance from the column's axis, at least (the yaw is
-    /// undefined on it and turns fast near it).
+    /// m: the path's distance from a yaw axis, at least.
     double axis = 0.05;
     /// m beyond the link diameter, for the self-collision rules.
     double self = 0.002;
@@ -49,20 +48,28 @@ struct SpatialMargins {
     /// the start design is left out of the program; the verifier's
     /// counterexamples bring it back where the design comes near.
     double near = 0.15;
-    /// Weight of the squared pitch changes at joins in the objective: a
-    /// transition costs time, and without it the pitches at a join are
-    /// free to differ for nothing.
+    /// Weight of the squared changes of the free numbers at joins in the
+    /// objective: a transition costs time, and without it the numbers at a
+    /// join are free to differ for nothing.
     double sweep_weight = 1e-3;
+
+    kinematics::PoseMargins pose() const { return {elbow_cos, axis}; }
+};
+
+/// What the program needs of the design's family, besides its poses.
+struct FamilyBounds {
+    std::vector<std::pair<double, double>> values;  ///< per value of the shape
+    std::pair<double, double> along{0.0, 0.0};      ///< per free number
+    std::vector<double> length_weights;             ///< the chain's length per value
+    std::vector<kinematics::DesignRow> rows;        ///< once, on the design alone
 };
 
 struct SpatialProblem {
     const task::SpatialTask* task = nullptr;
-    /// The skeleton (joint count, column twist, branches per stroke) and the
-    /// design the solve starts from.
-    kinematics::YawPitchDesign start;
-    /// Sign of d_1: +1 the shoulder above the base, -1 below it (a hanging
-    /// arm), 0 no column (d_1 = 0, the shoulder at the base).
-    int column = 1;
+    /// The skeleton (family, joint count, variant, branches per stroke) and
+    /// the design the solve starts from.
+    kinematics::ArmDesign start;
+    FamilyBounds family;
     /// The base region of the skeleton; empty (nullopt) when the base may
     /// be anywhere.
     std::optional<geometry::Box3> base_box;
@@ -73,7 +80,7 @@ struct SpatialProblem {
 class SpatialFormulation : public SmoothProgram {
 public:
     /// Throws std::invalid_argument when the problem does not fit its task
-    /// (a design of another pattern, branches or pitches missing).
+    /// (bounds or free numbers missing, a branch per stroke missing).
     explicit SpatialFormulation(const SpatialProblem& problem);
     ~SpatialFormulation() override;
 
@@ -92,9 +99,9 @@ public:
     void eval_jacobian(const double* x, double* values) const override;
 
     /// The design at x (the problem's skeleton with x's values).
-    kinematics::YawPitchDesign design(const std::vector<double>& x) const;
+    kinematics::ArmDesign design(const std::vector<double>& x) const;
     /// The variables of a design of this skeleton.
-    std::vector<double> variables(const kinematics::YawPitchDesign& design) const;
+    std::vector<double> variables(const kinematics::ArmDesign& design) const;
 
 private:
     struct Impl;

@@ -32,6 +32,9 @@ public:
     /// This deadline, also expired once `token` is cancelled.
     Deadline cancelled_by(const CancelToken& token) const;
     bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+    /// Whether a token may cancel it (what a blocking call that cannot
+    /// poll, such as a Z3 check, needs a watcher for).
+    bool can_be_cancelled() const { return cancel_ != nullptr; }
 
     /// No time limit (a cancel token may still end it).
     bool is_never() const { return when_ == Clock::time_point::max(); }

@@ -9,21 +9,21 @@
 //   height fixed, so that the path's sampled points lie at one height).
 //   Unsat is a proof of infeasibility, and its minimal core names the
 //   conflicting parts;
-// - the pattern: the conditions of the yaw column and pitch links the
-//   search builds (the wrist's annulus |a_2 - a_3| <= |w - S| <= a_2 + a_3
-//   about the shoulder S = base + d_1 z, the path off the column's axis,
-//   the link bounds and the tool), per skeleton: the sign of the column
-//   and the base region. Unsat there only rules the skeleton out.
+// - a pattern: the conditions an arm family puts on the designs of one of
+//   its skeletons (smt/pattern.h; the yaw column's annulus about its
+//   shoulder, a SCARA's height), checked with the skeleton's base region.
+//   Unsat there only rules the skeleton out.
 //
-// The relaxation does not tell the IK branches apart (the annulus is the
-// same for all four), so the branch of each stroke is left to the initial
-// guesses, which score them.
+// Neither tells the IK branches apart, so the branch of each stroke is left
+// to the initial guesses, which score them.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <modsynth/geometry/vec3.h>
 #include <modsynth/run/deadline.h>
-#include <modsynth/smt/spatial_skeleton.h>
+#include <modsynth/smt/pattern.h>
 #include <modsynth/task/part.h>
 #include <modsynth/task/spatial_task.h>
 
@@ -43,9 +43,6 @@ struct SpatialFrontStageOptions {
     /// formats.md's 1 mm and in steps of at most 5 mm passes within this of
     /// every point of it.
     double height_tolerance = 5e-3;
-    /// m: the pattern keeps the path this far off the column's axis, as the
-    /// refinement does (nlp::SpatialMargins::axis).
-    double axis_margin = 0.05;
     /// Seconds for each check while a core is minimised: the larger of
     /// these and this factor times what the conflict took.
     double core_trial_seconds = 0.3;
@@ -80,13 +77,13 @@ public:
     std::vector<task::TaskPart> minimal_core();
     /// Whether these parts alone are proved to conflict.
     bool conflicts(const std::vector<task::TaskPart>& parts);
-    /// Whether robot.twists allows the pattern (a twist of 0 and one of
-    /// +-pi/2); without it there are no skeletons.
-    bool pattern_allowed() const;
-    /// The skeletons whose pattern conditions hold, column up first, then
-    /// hanging, then none; base regions in the task's order; at most
-    /// `limit`. Skeletons ruled out are not a proof.
-    std::vector<SpatialSkeleton> skeletons(int limit = 1 << 30);
+    /// The points sampled along each primitive (its ends among them), on
+    /// which every condition is encoded; patterns use the same.
+    const std::vector<std::vector<geometry::Vec3>>& sampled_points() const;
+    /// Whether a pattern holds with the base in `base_region` (-1: any),
+    /// with the values of its reported variables in a model; nothing when
+    /// it does not or is undecided.
+    std::optional<std::vector<double>> pattern_holds(const Pattern& pattern, int base_region);
     /// Why the last check answered Unknown.
     std::string reason_unknown() const;
     /// Both encodings as SMT-LIB2 scripts, for regression suites.

@@ -2,10 +2,11 @@
 // What stopped the candidate robots of a search, by joint count and by the
 // task part to blame: an "unknown" answer says which obstacle or which
 // stretch of the path to change, not only how often it tried.
+#include <functional>
 #include <map>
 #include <string>
 
-#include <modsynth/task/task.h>
+#include <modsynth/task/strokes.h>
 
 namespace modsynth::synth {
 
@@ -27,7 +28,12 @@ public:
     /// trajectory[3] to trajectory[40]), out of reach at the transitions
     /// (3, after trajectory[11])": per joint count, the four blockers met
     /// most often.
-    std::string describe(const task::Task& task) const;
+    template <task::StrokedTask Task>
+    std::string describe(const Task& task) const {
+        return describe_with([&](int j) { return task::part_name(task, j); });
+    }
+    /// The same, with `name(j)` naming primitive j of the task.
+    std::string describe_with(const std::function<std::string(int)>& name) const;
 
 private:
     enum class Kind { Obstacle, SelfCollision, Reach, TransitionReach, Travel, Refinement };

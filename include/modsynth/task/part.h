@@ -97,6 +97,8 @@ private:
 std::string to_string(const TaskPart& part);
 /// Each part's name, in order (a core as a document lists it).
 std::vector<std::string> to_strings(const std::vector<TaskPart>& parts);
+/// The parts' names joined by `separator`: "obstacles[0], base_regions".
+std::string to_string(const std::vector<TaskPart>& parts, const char* separator);
 
 /// The part a name written by to_string stands for, or nothing (for the
 /// document readers only: everywhere else parts are values).

@@ -14,7 +14,7 @@
 #include <modsynth/task/part.h>
 #include <modsynth/task/spatial_task.h>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 
 /// The core of such a proof for the primitive farthest out of reach:
 /// robot.max_link_length, base_regions, that primitive's part name and,
@@ -27,4 +27,4 @@ std::optional<std::vector<task::TaskPart>> spatial_out_of_reach_core(const task:
 std::string describe_spatial_reach(const task::SpatialTask& task,
                                    const std::vector<task::TaskPart>& core);
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove

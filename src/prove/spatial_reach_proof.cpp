@@ -1,4 +1,4 @@
-#include <modsynth/synth/spatial_reach_proof.h>
+#include <modsynth/prove/spatial_reach_proof.h>
 
 #include <algorithm>
 #include <limits>
@@ -7,7 +7,7 @@
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
 
-namespace modsynth::synth {
+namespace modsynth::prove {
 namespace {
 
 /// m: the least, over the base boxes, of the primitive's largest distance
@@ -64,4 +64,4 @@ std::string describe_spatial_reach(const task::SpatialTask& task,
         task.robot.max_link_length, longest_chain(dof, task.robot.max_link_length));
 }
 
-}  // namespace modsynth::synth
+}  // namespace modsynth::prove
