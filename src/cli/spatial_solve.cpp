@@ -18,14 +18,19 @@
 namespace modsynth::app {
 namespace {
 
+/// `v` as "%.4f" shows it, but a value that rounds to zero shown as 0, not
+/// -0: the sign of a base coordinate of -1e-9 m says nothing, and would
+/// make the same robot read differently from run to run.
+double shown(double v) { return std::abs(v) < 5e-5 ? 0.0 : v; }
+
 std::string chain_summary(const kinematics::DhChain& c) {
     std::string rows;
     for (const auto& r : c.rows)
         rows += text::format(
-            rows.empty() ? "(a %.4f, alpha %+.4f, d %.4f)" : " (a %.4f, alpha %+.4f, d %.4f)", r.a,
-            r.alpha, r.d);
-    return text::format("%d joints, base (%.4f, %.4f, %.4f), DH ", c.dof(), c.base.x(), c.base.y(),
-                        c.base.z()) +
+            rows.empty() ? "(a %.4f, alpha %+.4f, d %.4f)" : " (a %.4f, alpha %+.4f, d %.4f)",
+            shown(r.a), shown(r.alpha), shown(r.d));
+    return text::format("%d joints, base (%.4f, %.4f, %.4f), DH ", c.dof(), shown(c.base.x()),
+                        shown(c.base.y()), shown(c.base.z())) +
            rows + text::format(", chain %.4f m", c.total_length());
 }
 
