@@ -47,7 +47,7 @@ from ._core import (
     SolutionExplanation,
     Violation,
 )
-from ._errors import ExportError, ImportTimeout, TaskError
+from ._errors import ExportError, ImportTimeout, TaskError, TaskWarning
 from ._solution import Explanation, Samples, Solution, Suggestion
 from ._tasks import Task, arc, box, capsule, circle, helix, line, obstacle, region, sphere
 
@@ -71,6 +71,7 @@ __all__ = [
     "Suggestion",
     "Task",
     "TaskError",
+    "TaskWarning",
     "Violation",
     "arc",
     "batch",

@@ -353,7 +353,7 @@ def import_drawing(
     try:
         r = _core.import_drawing(request)
     except TaskError as e:
-        raise TaskError(_keyword_names(e.problem), _keyword_names(e.part)) from None
+        raise TaskError(_keyword_names(e.problem), _keyword_names(e.part), e.file) from None
     except ImportTimeout as e:
         raise ImportTimeout(_keyword_names(str(e))) from None
     return ImportedDrawing(

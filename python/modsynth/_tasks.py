@@ -7,12 +7,13 @@ import copy
 import json
 import math
 import os
+import warnings
 from typing import Any, Dict, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
 from . import _core
-from ._errors import TaskError
+from ._errors import TaskError, TaskWarning
 
 TASK_FORMAT = "modsynth-task/1"
 
@@ -100,9 +101,12 @@ class Task:
         doc.update(keys)
         self._set(_plain(doc, ""))
 
-    def _set(self, doc: dict) -> None:
+    def _set(self, doc: dict, warn: bool = True) -> None:
         self._doc = doc
-        self._core = _core.parse_task(json.dumps(doc))
+        text = json.dumps(doc)
+        self._core = _core.parse_task(text)
+        if warn:
+            _warn(text)
 
     @classmethod
     def from_dict(cls, doc: Mapping[str, Any]) -> "Task":
@@ -117,6 +121,7 @@ class Task:
     def from_json(cls, text: str) -> "Task":
         """A task from its document as JSON text."""
         core = _core.parse_task(text)  # syntax errors name the line and column
+        _warn(text)
         task = cls.__new__(cls)
         task._doc = json.loads(text)
         task._core = core
@@ -130,8 +135,17 @@ class Task:
         core = _core.load_task(path)
         task = cls.__new__(cls)
         with open(path, "rb") as f:
-            task._doc = json.loads(f.read())
+            raw = f.read()
+        _warn(raw.decode("utf-8", errors="replace"), path)
+        task._doc = json.loads(raw)
         task._core = core
+        return task
+
+    @classmethod
+    def _unpickled(cls, doc: dict) -> "Task":
+        # Warned of when it was made: not again on every worker.
+        task = cls.__new__(cls)
+        task._set(doc, warn=False)
         return task
 
     @classmethod
@@ -196,7 +210,7 @@ class Task:
         return hash(json.dumps(self._doc, sort_keys=True))
 
     def __reduce__(self):  # type: ignore[no-untyped-def]
-        return (Task.from_dict, (self._doc,))
+        return (Task._unpickled, (self._doc,))
 
     def __repr__(self) -> str:
         kind = "spatial " if self.spatial else ""
@@ -205,6 +219,13 @@ class Task:
 
 
 TaskLike = Union[Task, Mapping[str, Any], str, "os.PathLike[str]"]
+
+
+def _warn(text: str, file: str = "") -> None:
+    """Warns, as the command line does, of keys the format does not define
+    and of lengths that look like millimetres (TaskWarning)."""
+    for message in _core.task_warnings(text, file):
+        warnings.warn(message, TaskWarning, stacklevel=4)
 
 
 def as_task(task: TaskLike) -> Task:

@@ -2,7 +2,6 @@
 // whose pure-Python layer (python/modsynth/) gives it its final shape:
 // tasks from dicts and files, NumPy samples, Dask batches.
 #include <cstddef>
-#include <fstream>
 #include <iterator>
 #include <optional>
 #include <stdexcept>
@@ -14,7 +13,10 @@
 #include <pybind11/functional.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <nlohmann/json.hpp>
 
+#include <modsynth/io/task_checks.h>
+#include <modsynth/io/task_document.h>
 #include <modsynth/modsynth.h>
 
 #include "solver_call.h"
@@ -42,12 +44,25 @@ TaskDocument parse_task(const std::string& json_text) {
 }
 
 /// As `modsynth` reads a task file: a task without a name takes the file's
-/// name without its extension; an unreadable file is an InputError.
-TaskDocument load_task_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in && is_spatial_task(text)) return {load_spatial_task(path)};
-    return {load_task(path)};
+/// name without its extension; an unreadable or invalid file is an
+/// InputError said of the file.
+TaskDocument load_task_file(const std::string& path) { return {io::load_task_document(path)}; }
+
+/// What the command line warns of in a task document it reads (keys the
+/// format does not define, lengths that look like millimetres), each as
+/// it prints it, said of `file` when one is given. A document that is not
+/// JSON has none: reading it says what is wrong.
+std::vector<std::string> task_warnings(const std::string& json_text, const std::string& file) {
+    const nlohmann::json doc = nlohmann::json::parse(json_text, nullptr, false);
+    std::vector<std::string> out;
+    if (doc.is_discarded()) return out;
+    const auto said = [&](const InputError& w) -> std::string {
+        return file.empty() ? w.what() : w.in_file(file).what();
+    };
+    for (const InputError& w : io::unknown_keys(doc))
+        out.push_back(said(w) + " (the task is read without it)");
+    for (const InputError& w : io::unit_warnings(doc)) out.push_back(said(w));
+    return out;
 }
 
 const std::string& task_name(const TaskDocument& t) {
@@ -78,10 +93,7 @@ void translate_errors(std::exception_ptr p) {
     try {
         if (p) std::rethrow_exception(p);
     } catch (const InputError& e) {
-        const std::string& what = e.what();
-        const std::string problem =
-            e.part().empty() ? what : what.substr(std::min(what.size(), e.part().size() + 2));
-        py::object error = task_error(problem, e.part());
+        py::object error = task_error(e.problem(), e.part(), e.file());
         PyErr_SetObject(task_error.ptr(), error.ptr());
     } catch (const ImportTimeout& e) {
         PyErr_SetString(import_timeout.ptr(), e.what());
@@ -150,6 +162,9 @@ PYBIND11_MODULE(_core, m) {
           "A task document (JSON text) validated; TaskError naming the offending part.");
     m.def("load_task", &load_task_file, py::arg("path"),
           "A task file validated; a task without a name takes the file's stem.");
+    m.def("task_warnings", &task_warnings, py::arg("json_text"), py::arg("file") = "",
+          "What `modsynth validate` warns of in a task document: unknown keys (with the "
+          "nearest known one) and lengths that look like millimetres.");
 
     py::class_<synth::Explanation>(m, "SolutionExplanation",
                                    "Why a solution is infeasible or unknown.")

@@ -258,7 +258,6 @@ ImportedDrawing import_drawing(const DrawingImport& request) {
     check_numbers(request);
     app::DrawingTaskOptions o = task_options(request);
     app::check_options(o);
-    const std::string input = !request.path.empty() ? request.path : "drawing";
     if (o.name.empty())
         o.name = !request.text.empty()   ? "text"
                  : !request.path.empty() ? std::filesystem::path(request.path).stem().string()
@@ -282,11 +281,10 @@ ImportedDrawing import_drawing(const DrawingImport& request) {
                         : io::read_input_file(request.path, "drawing", drawing::kMaxDrawingBytes);
                 r = drawing::import_drawing(contents, format, options);
             } catch (const InputError& e) {
-                // Named as `modsynth import` names it: "drawing.svg: path#p3
-                // (line 12)".
-                const std::string problem =
-                    e.part().empty() ? e.what() : e.what() + e.part().size() + 2;
-                throw InputError(input + ": " + e.part(), problem);
+                // Named as `modsynth import` names it, once: "drawing.svg:
+                // path#p3 (line 12): ...".
+                if (request.path.empty()) throw;
+                throw e.in_file(request.path);
             }
         }
         const nlohmann::json doc =

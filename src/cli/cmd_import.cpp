@@ -15,6 +15,7 @@
 #include <modsynth/drawing/svg_writer.h>
 #include <modsynth/io/atomic_file.h>
 #include <modsynth/io/input.h>
+#include <modsynth/io/task_checks.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/task/input_error.h>
@@ -92,11 +93,9 @@ int run_import(ImportArgs& a) {
                 r = drawing::import_drawing(text, format, options);
             }
         } catch (const InputError& e) {
-            // Name the file too: "drawing.svg: path#p3 (line 12): ...".
+            // Name the file too, once: "drawing.svg: path#p3 (line 12): ...".
             write_error_reply(a, e.what(), e.part());
-            const std::string problem =
-                e.part().empty() ? e.what() : e.what() + e.part().size() + 2;
-            throw InputError(a.input + ": " + e.part(), problem);
+            throw e.in_file(a.input);
         }
         if (a.spatial()) {
             doc = surface_task_json(r, surface, spatial_base_task(a), wrap_tolerance,
@@ -155,7 +154,16 @@ int run_import(ImportArgs& a) {
                       std::to_string(count) + ")";
         std::printf("layers (entities): %s\n", layers.c_str());
     }
+    // The warnings after the summary, as a terminal shows them.
+    std::fflush(stdout);
     for (const std::string& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    // A drawing in millimetres read as metres makes a task a hundred metres
+    // across: say so, with the options that place it.
+    for (const InputError& w : io::unit_warnings(doc))
+        std::fprintf(stderr,
+                     "warning: %s: %s; give --scale (metres per drawing unit: 0.001 for a "
+                     "drawing in millimetres) or --width (its width in metres)\n",
+                     a.output.c_str(), w.what());
     return kOk;
 }
 

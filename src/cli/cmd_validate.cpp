@@ -8,16 +8,19 @@
 #include <modsynth/text/printable.h>
 
 #include "command.h"
+#include "task_file.h"
 
 namespace modsynth::app {
 
 Command add_validate(CLI::App& parent) {
     auto path = std::make_shared<std::string>();
+    auto strict = std::make_shared<bool>(false);
     CLI::App* sub =
         parent.add_subcommand("validate", "Check a task file (exit 0 valid, 2 invalid)");
     sub->add_option("TASK", *path, "modsynth-task/1 JSON file")->required();
-    return {sub, [path] {
-                const io::TaskDocument doc = io::load_task_document(*path);
+    add_strict_option(*sub, *strict);
+    return {sub, [path, strict] {
+                const io::TaskDocument doc = read_task_file(*path, *strict);
                 // robot.modules must name modules of the catalog.
                 if (const auto* t = std::get_if<task::Task>(&doc)) {
                     if (!t->robot.modules.empty()) hardware::catalog_for(*t);

@@ -454,7 +454,9 @@ ParsedSolution parse_solution_text(std::string_view text) {
 }
 
 ParsedSolution load_solution(const std::string& path) {
-    return parse_solution_text(read_input_file(path, "solution", task::kMaxSolutionBytes));
+    return read_document_file(path, [](const std::string& p) {
+        return parse_solution_text(read_input_file(p, "solution", task::kMaxSolutionBytes));
+    });
 }
 
 void check_solution_fits(const task::Task& task, const synth::Solution& solution) {

@@ -651,7 +651,9 @@ SpatialTask parse_spatial_task_text(std::string_view text) {
 }
 
 SpatialTask load_spatial_task(const std::string& path) {
-    SpatialTask task = parse_spatial_task_text(read_input_file(path, "task", task::kMaxTaskBytes));
+    SpatialTask task = read_document_file(path, [](const std::string& p) {
+        return parse_spatial_task_text(read_input_file(p, "task", task::kMaxTaskBytes));
+    });
     if (task.name.empty()) task.name = std::filesystem::path(path).stem().string();
     return task;
 }

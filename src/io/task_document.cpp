@@ -6,6 +6,7 @@
 
 #include <modsynth/io/input.h>
 #include <modsynth/io/spatial_task_io.h>
+#include <modsynth/io/task_checks.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/task/limits.h>
 
@@ -30,13 +31,36 @@ TaskDocument parse_task_document_text(std::string_view text) {
     return parse_task_document(parse_json_text(text));
 }
 
-TaskDocument load_task_document(const std::string& path) {
-    TaskDocument doc = parse_task_document_text(read_input_file(path, "task", task::kMaxTaskBytes));
+namespace {
+
+void name_after_file(TaskDocument& doc, const std::string& path) {
     std::visit(
         [&](auto& t) {
             if (t.name.empty()) t.name = std::filesystem::path(path).stem().string();
         },
         doc);
+}
+
+}  // namespace
+
+TaskDocument load_task_document(const std::string& path, TaskWarnings& warnings) {
+    const nlohmann::json json = read_document_file(path, [](const std::string& p) {
+        return parse_json_text(read_input_file(p, "task", task::kMaxTaskBytes));
+    });
+    for (const task::InputError& w : unknown_keys(json))
+        warnings.unknown_keys.push_back(w.in_file(path));
+    for (const task::InputError& w : unit_warnings(json)) warnings.units.push_back(w.in_file(path));
+    TaskDocument doc =
+        read_document_file(path, [&](const std::string&) { return parse_task_document(json); });
+    name_after_file(doc, path);
+    return doc;
+}
+
+TaskDocument load_task_document(const std::string& path) {
+    TaskDocument doc = read_document_file(path, [](const std::string& p) {
+        return parse_task_document_text(read_input_file(p, "task", task::kMaxTaskBytes));
+    });
+    name_after_file(doc, path);
     return doc;
 }
 

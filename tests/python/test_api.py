@@ -6,6 +6,7 @@ import glob
 import json
 import os
 import pickle
+import warnings
 
 import numpy as np
 import pytest
@@ -101,10 +102,14 @@ def test_invalid_tasks_raise_the_command_lines_error(file):
     assert cli.returncode == 2, cli.stderr
     with pytest.raises(modsynth.TaskError) as raised:
         modsynth.Task.load(file)
-    # `validate` prints "error: PART: problem"; the exception says the same
-    # and names the part on its own.
+    # `validate` prints "error: FILE: PART: problem"; the exception says
+    # the same
     assert f"error: {raised.value}" in cli.stderr
-    assert raised.value.part and str(raised.value).startswith(raised.value.part + ": ")
+    # and names the file and the part on their own.
+    assert raised.value.part and raised.value.file == file
+    assert str(raised.value) == f"{file}: {raised.value.part}: {raised.value.problem}" or (
+        raised.value.part == "(document)" and str(raised.value) == f"{file}: {raised.value.problem}"
+    )
     # The same document as a dict (where Python reads it as the library
     # does: valid UTF-8 and finite numbers) fails on the same part.
     with open(file, "rb") as f:
@@ -117,6 +122,35 @@ def test_invalid_tasks_raise_the_command_lines_error(file):
         with pytest.raises(modsynth.TaskError) as from_dict:
             modsynth.Task.from_dict(doc)
         assert from_dict.value.part == raised.value.part
+
+
+@pytest.mark.parametrize("name", ["base-region-typo", "millimetres"])
+def test_mistakes_are_warned_of_as_the_command_line_does(name, recwarn):
+    file = path("tests", "fixtures", "mistakes", f"{name}.json")
+    cli = run_cli("validate", file)
+    assert cli.returncode == 0, cli.stderr
+    said = [line[len("warning: ") :] for line in cli.stderr.splitlines() if line.startswith("warning: ")]
+    assert said
+    task = modsynth.Task.load(file)
+    warned = [str(w.message) for w in recwarn if w.category is modsynth.TaskWarning]
+    assert warned == said
+    # Without the file, from a dict or its text, the same words.
+    recwarn.clear()
+    with open(file) as f:
+        doc = json.load(f)
+    modsynth.Task.from_dict(doc)
+    modsynth.Task.from_json(json.dumps(doc))
+    unfiled = [m[len(file) + 2 :] for m in said]
+    assert [str(w.message) for w in recwarn if w.category is modsynth.TaskWarning] == unfiled * 2
+    # A pickled task is not warned of again where it is read back.
+    recwarn.clear()
+    assert pickle.loads(pickle.dumps(task)) == task
+    assert not [w for w in recwarn if w.category is modsynth.TaskWarning]
+    # As errors, when asked, as `--strict` makes them.
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", modsynth.TaskWarning)
+        with pytest.raises(modsynth.TaskWarning):
+            modsynth.Task.load(file)
 
 
 def test_bad_values_in_dicts_name_their_part():
@@ -379,7 +413,7 @@ def test_import_drawing_from_contents_and_its_errors(tmp_path):
     bad.write_text("<svg><path d='M 0 0 L'/>")
     with pytest.raises(modsynth.TaskError) as e:
         modsynth.import_drawing(bad)
-    assert e.value.part.startswith(str(bad))
+    assert e.value.file == str(bad) and str(e.value).count(str(bad)) == 1
     with pytest.raises(modsynth.TaskError) as e:
         modsynth.import_drawing(tmp_path / "missing.dxf")
     assert str(tmp_path / "missing.dxf") in str(e.value)

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <modsynth/task/input_error.h>
+
 namespace modsynth::io {
 
 /// The whole content of a file; `what` says what the file should be ("task",
@@ -21,5 +23,16 @@ std::string read_input_file(const std::string& path, const std::string& what,
 /// JSON text as a document. A syntax error or a number beyond the range of
 /// a double is an InputError for "(document)" saying where it is.
 nlohmann::json parse_json_text(std::string_view text);
+
+/// read(path), whose InputErrors are said of the file ("rose.json:
+/// trajectory[1]: ..."): a message about a document names the file it is in.
+template <class Read>
+auto read_document_file(const std::string& path, Read&& read) {
+    try {
+        return read(path);
+    } catch (const task::InputError& e) {
+        throw e.in_file(path);
+    }
+}
 
 }  // namespace modsynth::io
