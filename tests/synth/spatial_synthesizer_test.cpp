@@ -6,9 +6,9 @@
 #include <cmath>
 #include <set>
 
-#include <modsynth/control/sample.h>
 #include <modsynth/control/joint_limits.h>
 #include <modsynth/control/retime.h>
+#include <modsynth/control/sample.h>
 #include <modsynth/geometry/primitive3.h>
 #include <modsynth/io/spatial_task_io.h>
 #include <modsynth/kinematics/dh_chain.h>
