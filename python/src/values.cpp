@@ -75,6 +75,8 @@ const char* violation_kind(verify::Violation::Kind k) {
             return "joint_step";
         case Kind::Order:
             return "order";
+        case Kind::ToolAxis:
+            return "tool_axis";
     }
     return "structure";
 }
@@ -195,6 +197,9 @@ void bind_values(py::module_& m) {
         .def_readonly("min_self_clearance", &verify::Certificate::min_self_clearance)
         .def_readonly("max_deviation", &verify::Certificate::max_deviation)
         .def_readonly("max_joint_step", &verify::Certificate::max_joint_step)
+        .def_readonly("min_tool_angle_margin", &verify::Certificate::min_tool_angle_margin,
+                      "Certified margin of the tool's angle to its tool_axis (rad); inf "
+                      "without one.")
         .def_readonly("violations", &verify::Certificate::violations)
         .def_readonly("coarse_pairs", &verify::Certificate::coarse_pairs)
         .def_property_readonly(
