@@ -92,6 +92,8 @@ class Certificate:
     @property
     def max_joint_step(self) -> float: ...
     @property
+    def min_tool_angle_margin(self) -> float: ...
+    @property
     def violations(self) -> List[Violation]: ...
     @property
     def coarse_pairs(self) -> List[int]: ...
@@ -299,6 +301,8 @@ class DrawingImport:
     plane: List[float]
     cylinder: List[float]
     tool_length: Optional[float]
+    tool: str
+    tool_tolerance_degrees: float
     def __init__(self) -> None: ...
 
 class ImportedDrawing:
