@@ -74,9 +74,9 @@ def test_progress_arrives_on_the_calling_thread_while_the_gil_is_free():
     assert all(isinstance(e.message, str) and e.message for _, e in events)
     assert str(events[0][1]).startswith("[")
     # The other thread ran all along: it never waited for the GIL as long
-    # as the solve took.
+    # as the solve took (about 0.9 s since the spatial search got faster).
     gap = max(b - a for a, b in zip(ticks, ticks[1:]))
-    assert took > 1.0 and gap < 0.25, (took, gap)
+    assert took > 0.5 and gap < 0.25, (took, gap)
 
 
 def test_an_exception_in_the_progress_callback_ends_the_solve():
