@@ -25,6 +25,7 @@ cmake_minimum_required(VERSION 3.22)
 project(recovery LANGUAGES CXX)
 find_package(Dep REQUIRED PATHS ${CMAKE_SOURCE_DIR}/deps NO_DEFAULT_PATH)
 add_executable(hello hello.cpp)
+add_executable(other hello.cpp)
 EOF
   echo 'int main() { return 0; }' >"$1/hello.cpp"
 }
@@ -76,6 +77,13 @@ install_dep "$p"
 cmake -S "$p" -B "$p/build" -DCMAKE_BUILD_TYPE=Debug >/dev/null 2>&1 || fail "debug: the fixture does not configure"
 check_built "$p" "a Debug build folder"
 if grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$p/build/CMakeCache.txt"; then pass; else fail "debug: the build type is not Release"; fi
+
+# 5. Named targets (scripts/demo builds the program alone): only those.
+p=$tmp/targets
+make_project "$p"
+install_dep "$p"
+(cd "$p" && timeout 120 ./scripts/build hello) >"$tmp/out" 2>&1 || fail "targets: scripts/build hello failed: $(tail -3 "$tmp/out")"
+if [ -x "$p/build/hello" ] && [ ! -e "$p/build/other" ]; then pass; else fail "targets: scripts/build hello did not build hello alone"; fi
 
 echo "$passes passed, $failures failed: build recovery"
 [ "$failures" -eq 0 ]

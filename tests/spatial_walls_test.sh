@@ -51,7 +51,11 @@ PY
     "$bin" export "$task" "$sol" --build-sheet "$tmp/$name.md" --report "$tmp/$name.html" >"$tmp/out" 2>&1 ||
         fail "$name: export of the infeasible solution: $(cat "$tmp/out")"
     grep -q "No arm to build" "$tmp/$name.md" || fail "$name: the build sheet does not say there is no arm"
-    grep -q "close a shell round" "$tmp/$name.md" || fail "$name: the build sheet does not give the proof"
+    grep -q "close in " "$tmp/$name.md" || fail "$name: the build sheet does not give the proof"
+    # Plain text a person reads: no backslash before ':', '-', '(', ',' or '.'.
+    ! grep -q '\\[:(),.-]' "$tmp/$name.md" || fail "$name: the build sheet is over-escaped: $(grep '\\[:(),.-]' "$tmp/$name.md" | head -2)"
+    # A long core is one line by its ends.
+    [ "$(grep -c '^- `obstacles\[' "$tmp/$name.md")" -le 8 ] || fail "$name: the build sheet lists every obstacle of the core on its own line"
     grep -q '"enclosure":\[{"inside"' "$tmp/$name.html" || fail "$name: the report carries no wall"
 done
 [ "$count" -ge 2 ] || fail "only $count walled examples in tasks/spatial/infeasible/"

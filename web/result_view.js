@@ -29,12 +29,31 @@ function fitReport(frame) {
   doc.head.append(style);
 }
 
+/// Where the proof of an answer without a robot is drawn, in the words of
+/// its kind of proof (null when nothing is drawn but the parts in conflict).
+export function proofNote(ex, spatial) {
+  const core = Array.isArray(ex.core) ? ex.core : [];
+  if (ex.separation) return "The closed wall is drawn in red on the canvas: the obstacles grown by half the tube, and where they overlap.";
+  if (ex.geodesic) return "The shortest way around the obstacles is drawn in red on the canvas, with its length against the reach.";
+  if (!spatial) return null;
+  if (ex.enclosure) {
+    return "The wall is drawn in the 3-D view: its obstacles outlined in red, the cells it closes in as green cubes, " +
+      "and a red ring at the point it keeps out.";
+  }
+  if (core.includes("robot.max_link_length") && core.includes("base_regions") && core.some((p) => /^(trajectory|strokes)\[/.test(p))) {
+    return "The primitive out of reach is drawn thick and red in the 3-D view, with a dashed red line from the base box to its farthest point.";
+  }
+  return core.length ? "The parts in conflict are drawn red in the 3-D view." : null;
+}
+
 export class ResultView {
   constructor(store) {
     this.store = store;
+    this.jobId = null;  // the job whose result is shown
   }
 
   clear() {
+    this.jobId = null;
     this.store.setWitness(null);
     this.store.setSolution(null);
     for (const id of ["result-summary", "explanation", "downloads"]) $(id).replaceChildren();
@@ -43,12 +62,14 @@ export class ResultView {
   }
 
   showResult(job) {
+    this.jobId = job.id;
     const r = job.result;
     const rows = [["Status", h("span", { class: "status-badge " + r.status }, r.status)]];
     if (r.status === "solved") {
       rows.push(["Joints", String(r.dof)], ["Total link length", lengthText(r.total_link_length)],
                 ["Clearance margin", r.clearance_margin === null ? "no obstacles" : lengthText(r.clearance_margin)]);
-    } else if (r.message) {
+    } else if (r.message && !REPORTED.includes(r.status)) {
+      // An answer without a robot is explained below, once.
       rows.push(["Why", r.message]);
     }
     rows.push(["Solve time", r.seconds.toFixed(2) + " s"]);
@@ -66,19 +87,17 @@ export class ResultView {
     }
   }
 
-  /// The proof drawn over the task, from the solution's witness.
+  /// The proof drawn over the task, from the solution's witness, and one
+  /// note that says where it is drawn and how.
   async showWitness(job) {
     try {
       const s = await (await fetch(api.fileUrl(job, "solution.json"))).json();
+      if (this.jobId !== job.id) return;  // cleared since: the task changed
       this.store.setWitness(s.explanation);
-      const ex = s.explanation || {};
-      const reach = isSpatial(this.store.doc) && (ex.core || []).includes("base_regions") &&
-        (ex.core || []).some((p) => /^(trajectory|strokes)\[/.test(p));
-      const about = ex.separation ? "The closed wall is drawn in red on the canvas: the obstacles grown by half the tube, and where they overlap."
-        : ex.geodesic ? "The shortest way around the obstacles is drawn in red on the canvas, with its length against the reach."
-        : reach ? "The primitive out of reach is drawn thick and red in the 3-D view, with a dashed red line from the base box to its farthest point."
-        : isSpatial(this.store.doc) && (ex.core || []).length ? "The parts in conflict are drawn red in the 3-D view." : null;
-      if (about) $("explanation-message").after(h("p", { id: "proof-note", class: "note" }, about));
+      const about = proofNote(s.explanation || {}, isSpatial(this.store.doc));
+      const old = $("proof-note");
+      if (old) old.remove();
+      if (about && $("explanation-message")) $("explanation-message").after(h("p", { id: "proof-note", class: "note" }, about));
     } catch (e) {
       // The explanation above already says why.
     }
@@ -98,7 +117,7 @@ export class ResultView {
     } catch (e) {
       // The summary above already says the essentials.
     }
-    if (s) this.store.setSolution(s);
+    if (s && this.jobId === job.id) this.store.setSolution(s);
   }
 
   /// The report's own drawing, animated when there is a motion ("#t=0&play":

@@ -5,7 +5,8 @@
 // click in the view selects, a drag of a handle's arrow moves the point
 // along that axis (one undo step per drag); the solved arm moves along its
 // samples under the play / scrub bar; a proof of reach is drawn as a line
-// from the base box to the farthest point of the primitive out of reach.
+// from the base box to the farthest point of the primitive out of reach, a
+// wall's proof as the cells it closes in.
 
 import { primitiveColour } from "./task_render.js";
 import { isSpatial, reachLine, namedPrimitives } from "./space_geometry.js";
@@ -35,6 +36,7 @@ export class SpaceView {
     for (const type of ["doc", "selection", "validation", "core"]) store.on(type, () => this.render());
     store.on("doc", () => { if (this.view) this.view.clearMotion(); });
     store.on("core", () => this.showProof());
+    store.on("witness", () => this.showProof());
     store.on("solution", (s) => this.showSolution(s));
     $("play3d").addEventListener("click", () => { if (this.view) this.view.play(!this.view.state.playing); });
     $("scrub3d").addEventListener("input", (e) => { if (this.view) this.view.setTime(+e.target.value); });
@@ -81,6 +83,7 @@ export class SpaceView {
       selection: store.selection,
       inCore: (part) => store.inCore(part),
       hasError: (part) => store.errorsAbout(part).length > 0,
+      coreShown: store.core.length > 0,
       colour: primitiveColour,
     });
   }
@@ -89,19 +92,26 @@ export class SpaceView {
   fit() { if (this.spatial && this.view) this.view.fit(); }
 
   /// For a primitive out of reach: a line from the nearest base box to its
-  /// farthest point (the proof's distance, against the longest chain).
+  /// farthest point (the proof's distance, against the longest chain). For
+  /// a wall: its enclosed cells, from the solution's witness.
   showProof() {
     const core = this.store.core;
     const doc = this.store.doc;
+    const enclosure = this.store.witness && this.store.witness.enclosure;
     const lines = [];
-    if (isSpatial(doc) && core.includes("base_regions")) {
+    // A reach proof's core: the longest link, the base regions and the
+    // primitives out of reach (a wall's names the obstacles instead).
+    if (isSpatial(doc) && !enclosure && core.includes("base_regions") && core.includes("robot.max_link_length")) {
       for (const { part, primitive } of namedPrimitives(doc)) {
         if (!core.includes(part)) continue;
         const line = reachLine(doc, primitive);
         if (line) lines.push(line);
       }
     }
-    if (this.view) this.view.setProof(lines);
+    if (this.view) {
+      this.view.setProof(lines, isSpatial(doc) ? enclosure : null);
+      this.render();
+    }
     return lines;
   }
 

@@ -125,10 +125,12 @@ export class Store extends EventTarget {
   inCore(part) { return inCore(this.core, part); }
 
   /// The solution's "explanation" when it carries an obstacle proof's
-  /// witness ("separation" or "geodesic"), else null.
+  /// witness ("separation" or "geodesic" in the plane, "enclosure" in
+  /// space), else null.
   setWitness(explanation) {
     const e = explanation || {};
-    this.witness = e.separation || e.geodesic ? { separation: e.separation || null, geodesic: e.geodesic || null } : null;
+    this.witness = e.separation || e.geodesic || e.enclosure
+      ? { separation: e.separation || null, geodesic: e.geodesic || null, enclosure: e.enclosure || null } : null;
     this.emit("witness", this.witness);
   }
 

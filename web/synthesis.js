@@ -1,13 +1,50 @@
 // A solve from the page: POST /api/solve, then the job's progress stream
-// (stage, elapsed time) until it ends, with a Cancel button; its result
-// goes to the result view. Closing the page closes the stream, which
-// cancels the solve on the server.
+// (the pipeline's stages done, the latest step, elapsed time) until it
+// ends, with a Cancel button; its result goes to the result view. Closing
+// the page closes the stream, which cancels the solve on the server. When
+// the task changes, the result of the task before goes (a running solve of
+// it is cancelled): what is shown is always about the task on the page.
 
 import * as api from "./api.js";
 import { REPORTED, ResultView } from "./result_view.js";
-import { $ } from "./dom.js";
+import { $, h } from "./dom.js";
 
 const CLOCK_MS = 100;
+
+/// The pipeline's steps as the page shows them, each with the progress
+/// stages (the job's `stages`, run/progress.h) that belong to it.
+export const STEPS = [
+  { name: "proofs", stages: ["proofs"] },
+  { name: "front stage", stages: ["front stage"] },
+  { name: "refinement", stages: ["search", "refinement"] },
+  { name: "verification", stages: ["verification", "shortening"] },
+  { name: "timing", stages: ["timing", "modules"] },
+];
+const EXPLAIN_STEP = { name: "explanation", stages: ["explanation"] };
+
+/// The steps of a job: [{name, state: "done" | "current" | "skipped" |
+/// "todo"}] and the share done (0..1). A solve runs the steps in order
+/// (going back to the front stage for more joints), so every step before
+/// the furthest reached is done or skipped; an infeasible task's solve
+/// ends early and is then explained.
+export function stepsOf(job) {
+  const reached = new Set(job.stages || []);
+  const explained = job.phase === "explain" || reached.has("explanation") ||
+    (job.done && job.result && job.result.status === "infeasible");
+  const steps = explained ? [...STEPS, EXPLAIN_STEP] : STEPS;
+  let furthest = -1;
+  steps.forEach((st, i) => { if (st.stages.some((x) => reached.has(x))) furthest = i; });
+  if (explained) furthest = steps.length - 1;
+  const solved = job.done && job.result && job.result.status === "solved";
+  const out = steps.map((st, i) => {
+    const seen = st.stages.some((x) => reached.has(x));
+    const state = job.done ? (seen || solved ? "done" : "skipped")
+      : i < furthest ? (seen ? "done" : "skipped") : i === furthest ? "current" : "todo";
+    return { name: st.name, state };
+  });
+  const finished = out.filter((st) => st.state === "done" || st.state === "skipped").length;
+  return { steps: out, share: job.done ? 1 : finished / out.length };
+}
 
 export class Synthesis {
   constructor(store) {
@@ -18,6 +55,18 @@ export class Synthesis {
     this.clock = null;
     this.shownResult = false;
     $("cancel").addEventListener("click", () => this.cancel());
+    // A result is about the task it was asked for: another task (an edit,
+    // another example, a file) takes it away.
+    store.on("doc", () => this.taskChanged());
+  }
+
+  taskChanged() {
+    if (!this.job && !this.results.jobId) return;
+    if (this.running) this.cancel("the task changed");
+    this.reset();
+    $("run-box").hidden = true;
+    this.setState("idle");
+    this.buttons();
   }
 
   get running() { return this.job !== null && !this.job.done; }
@@ -52,6 +101,7 @@ export class Synthesis {
     this.results.clear();
     $("run-bar").style.width = "0";
     $("run-clock").textContent = "";
+    $("run-steps").replaceChildren();
     this.store.setCore([]);
   }
 
@@ -88,14 +138,17 @@ export class Synthesis {
     this.clock = setInterval(() => this.showClock(), CLOCK_MS);
   }
 
-  async cancel() {
+  /// Stops the running solve; `why` (given when the page, not the user,
+  /// stops it) means its answer is no longer wanted.
+  async cancel(why = "") {
     if (!this.running) return;
     $("cancel").disabled = true;
+    const job = this.job;
     try {
-      const job = await api.cancel(this.job);
-      if (job) this.update(job);
+      const stopped = await api.cancel(job);
+      if (stopped && !why) this.update(stopped);
     } catch (e) {
-      $("run-error").textContent = "cancel failed: " + e.message;
+      if (!why) $("run-error").textContent = "cancel failed: " + e.message;
     }
   }
 
@@ -103,20 +156,30 @@ export class Synthesis {
     this.elapsedAt = { value: elapsed, at: performance.now() };
   }
 
+  /// The time so far, with the limit beside it (the bar shows the steps).
   showClock() {
     if (!this.job || !this.elapsedAt) return;
     const live = this.job.done ? 0 : (performance.now() - this.elapsedAt.at) / 1000;
     const elapsed = this.job.done ? this.job.elapsed : this.elapsedAt.value + live;
-    $("run-clock").textContent = `${elapsed.toFixed(1)} s of at most ${this.job.time_limit} s`;
-    $("run-bar").style.width = Math.min(100, 100 * elapsed / this.job.time_limit) + "%";
+    $("run-clock").textContent = `${elapsed.toFixed(1)} s` + (this.job.done ? "" : ` (time limit ${this.job.time_limit} s)`);
+  }
+
+  /// The pipeline's steps, done, under way and to come, and the bar.
+  showSteps(job) {
+    const { steps, share } = stepsOf(job);
+    $("run-steps").replaceChildren(...steps.map((st) => h("li", { class: st.state, "data-step": st.name }, st.name)));
+    $("run-bar").style.width = Math.round(100 * share) + "%";
+    $("run-meter").dataset.share = share.toFixed(3);
   }
 
   update(job) {
     if (!this.job || job.id !== this.job.id || job.version < this.job.version) return;
     this.job = job;
     this.tick(job.elapsed);
-    // The clock and the stage change together, never one ahead of the other.
+    // The clock, the steps and the stage change together, never one ahead
+    // of the other.
     this.showClock();
+    this.showSteps(job);
     const phase = job.phase === "explain" ? "explaining: " : "";
     $("run-stage").textContent = job.done ? "finished: " + job.status : phase + job.stage;
     if (job.result && !this.shownResult) {

@@ -5,13 +5,16 @@
 
 import { endDirection, isPoint, niceStep, round9, samplePrimitive } from "./geometry.js";
 import { handlesOf, HANDLE_PIXELS } from "./handles.js";
+import { placeLabels } from "./label_layout.js";
 import { splitPart } from "./parts.js";
 import { pointsAttr, svg } from "./dom.js";
 
 // The report's colours (src/output/plot.cpp), so a primitive keeps its
 // colour from the editor to the result.
-const COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b",
-                 "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#d62728"];
+// As the report's (src/output/plot.cpp): no red, green or grey, which
+// mean obstacles and conflicts, a wall's cells, the arm and base regions.
+const COLOURS = ["#1f77b4", "#ff7f0e", "#e7ba52", "#9467bd", "#8c564b",
+                 "#e377c2", "#17becf", "#bcbd22", "#006d77", "#393b79"];
 export const primitiveColour = (j) => COLOURS[j % COLOURS.length];
 
 const MIN_LABEL_PIXELS = 55;
@@ -176,7 +179,49 @@ export class TaskRender {
       const plain = message.startsWith(part + ": ") ? message.slice(part.length + 2) : message;
       this.label(g, part, plain.length > LABEL_CHARS ? plain.slice(0, LABEL_CHARS - 3) + "..." : plain, -10, "error-label");
     }
-    for (const part of this.store.core) this.label(g, part, "in conflict: " + part, 16, "core-label");
+    this.coreLabels(g);
+  }
+
+  /// The parts in conflict, each named beside it, outside the conflict
+  /// (round a ring, round its outside) and clear of each other.
+  coreLabels(g) {
+    const items = [];
+    for (const part of this.store.core) {
+      const where = this.extent(part);
+      if (!where) continue;
+      const text = svg("text", { class: "core-label", "data-part": part }, g);
+      text.textContent = part;
+      const width = typeof text.getComputedTextLength === "function" ? text.getComputedTextLength() : 7 * part.length;
+      items.push({ id: part, centre: where.centre, reach: where.reach, width, text });
+    }
+    placeLabels(items, this.view.size()[0]).forEach((p, i) => {
+      const t = items[i].text;
+      t.setAttribute("x", p.x);
+      t.setAttribute("y", p.y);
+      t.setAttribute("text-anchor", p.anchor);
+    });
+  }
+
+  /// A part's middle on the screen and how far it reaches from there
+  /// (pixels), or null.
+  extent(part) {
+    const model = this.store.model;
+    const kind = (splitPart(part) || [])[0];
+    const item = model.item(part);
+    const boxOf = (pts) => {
+      const q = pts.filter(isPoint).map((p) => this.view.toScreen(p));
+      if (!q.length) return null;
+      const lo = [Math.min(...q.map((p) => p[0])), Math.min(...q.map((p) => p[1]))];
+      const hi = [Math.max(...q.map((p) => p[0])), Math.max(...q.map((p) => p[1]))];
+      return { centre: [(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2], reach: Math.hypot(hi[0] - lo[0], hi[1] - lo[1]) / 2 };
+    };
+    if (kind === "obstacles") {
+      return item && isPoint(item.center) ? { centre: this.view.toScreen(item.center), reach: (item.radius || 0) * this.view.s } : null;
+    }
+    if (kind === "trajectory" || kind === "strokes") return item ? boxOf(samplePrimitive(item)) : null;
+    if (kind === "base_regions") return item ? boxOf([item.min, item.max]) : null;
+    if (part === "base_regions") return boxOf(model.regions.flatMap((r) => [r.min, r.max]));
+    return null;
   }
 
   /// A text beside a part, on whichever side leaves it room.

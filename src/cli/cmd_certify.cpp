@@ -14,6 +14,7 @@
 #include <modsynth/text/printable.h>
 
 #include "command.h"
+#include "task_file.h"
 
 namespace modsynth::app {
 namespace {
@@ -21,6 +22,7 @@ namespace {
 struct CertifyArgs {
     std::string task, solution;
     bool json = false;
+    bool strict = false;
 };
 
 std::string margin_text(const char* what, double v) {
@@ -29,7 +31,7 @@ std::string margin_text(const char* what, double v) {
 }
 
 int run_certify(const CertifyArgs& a) {
-    const io::TaskDocument doc = io::load_task_document(a.task);
+    const io::TaskDocument doc = read_task_file(a.task, a.strict);
     io::ParsedSolution parsed = io::load_solution(a.solution);
     std::visit([&](const auto& t) { output::recertify(t, parsed); }, doc);
     const synth::Solution& s = parsed.solution;
@@ -82,6 +84,7 @@ Command add_certify(CLI::App& parent) {
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file (planar or spatial)")->required();
     sub->add_option("SOLUTION", a->solution, "modsynth-solution/1 JSON file")->required();
     sub->add_flag("--json", a->json, "print one JSON object instead of a line");
+    add_strict_option(*sub, a->strict);
     return {sub, [a] { return run_certify(*a); }};
 }
 

@@ -4,6 +4,7 @@
 #include <mutex>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -14,10 +15,12 @@
 #include <modsynth/io/task_io.h>
 #include <modsynth/prove/conflict_text.h>
 #include <modsynth/run/stopwatch.h>
+#include <modsynth/task/part_list.h>
 #include <modsynth/text/format.h>
 
 #include "command.h"
 #include "number_checks.h"
+#include "task_file.h"
 #include "watchdog.h"
 
 namespace modsynth::app {
@@ -25,6 +28,7 @@ namespace {
 
 struct ExplainArgs {
     std::string task;
+    bool strict = false;
     double time_limit = 60.0;
     double solve_seconds = 10.0;
     bool json = false;
@@ -61,8 +65,10 @@ std::string describe(const task::SpatialTask& task, const task::TaskPart& part) 
             break;
     }
     if (part.is_robot(task::RobotKey::MaxLinkLength))
-        return name +
-               text::format(" = %.3f m (the longest |a| + |d| of a link)", r.max_link_length);
+        return name + text::format(
+                          " = %.3f m (the longest a or |d| of a link: a chain of n joints "
+                          "reaches at most 2 n times it)",
+                          r.max_link_length);
     if (part.is_robot(task::RobotKey::MinLinkLength))
         return name + text::format(" = %.3f m", r.min_link_length);
     if (part.is_robot(task::RobotKey::Dof)) {
@@ -78,6 +84,48 @@ std::string describe(const task::SpatialTask& task, const task::TaskPart& part) 
     if (part.is_robot(task::RobotKey::ToolLength))
         return name + text::format(" = %.3f m", r.tool_length);
     return name;
+}
+
+// The changes a builder acts on first: those the synthesis confirmed (with
+// the robot and how long it took), then, apart, those it did not within
+// its time, then those after which the task is still infeasible.
+void print_suggestions(const std::vector<explanation::Relaxation>& all, double solve_seconds) {
+    const auto group = [&](synth::Status::Kind kind) {
+        std::vector<const explanation::Relaxation*> out;
+        for (const auto& r : all)
+            if (r.status.kind == kind ||
+                (kind == synth::Status::Kind::Unknown && r.status != synth::Status::Solved &&
+                 r.status != synth::Status::Infeasible))
+                out.push_back(&r);
+        return out;
+    };
+    const auto solved = group(synth::Status::Kind::Solved);
+    const auto open = group(synth::Status::Kind::Unknown);
+    const auto still = group(synth::Status::Kind::Infeasible);
+    if (all.empty()) {
+        std::printf("\nNo change of one part alone removes the conflict.\n");
+        return;
+    }
+    if (!solved.empty()) {
+        std::printf("\nChanges that solve the task (each re-checked, then solved):\n");
+        for (const auto* r : solved)
+            std::printf("  - %s\n      %s\n", r->change.c_str(), r->outcome.c_str());
+    }
+    if (!open.empty()) {
+        std::printf("\n%s", solved.empty() ? "No change was confirmed by a synthesis. " : "");
+        std::printf(
+            "Changes that remove the conflict, not confirmed in %.0f s (no robot found "
+            "in that time):\n",
+            solve_seconds);
+        for (const auto* r : open) std::printf("  - %s\n", r->change.c_str());
+    }
+    if (!still.empty()) {
+        std::printf(
+            "\nChanges that remove this conflict, after which the task is still "
+            "infeasible:\n");
+        for (const auto* r : still)
+            std::printf("  - %s\n      %s\n", r->change.c_str(), r->outcome.c_str());
+    }
 }
 
 // --time-limit bounds the whole command: the proof, or the full run when
@@ -124,8 +172,18 @@ int run_explain(const ExplainArgs& a, const TaskT& task, const run::Stopwatch& c
         out["suggestions"] = nlohmann::json::array();
         if (!a.json) {
             std::printf("%s\n\nThe conflicting parts:\n", e.message.c_str());
-            for (const auto& part : e.core) std::printf("  - %s\n", describe(task, part).c_str());
-            std::printf("\nSmallest changes that remove the conflict (each re-checked):\n");
+            for (const task::PartRun& run : task::part_runs(e.core)) {
+                // A run (a shell of 80 spheres, a polyline's segments) is one line.
+                if (run.size() >= 3) {
+                    const bool primitives =
+                        e.core[run.first].kind() == task::TaskPart::Kind::Primitive;
+                    std::printf("  - %s (%zu %s)\n", task::run_text(e.core, run).c_str(),
+                                run.size(), primitives ? "primitives of the path" : "obstacles");
+                    continue;
+                }
+                for (std::size_t k = run.first; k <= run.last; ++k)
+                    std::printf("  - %s\n", describe(task, e.core[k]).c_str());
+            }
             std::fflush(stdout);
         }
     };
@@ -144,17 +202,14 @@ int run_explain(const ExplainArgs& a, const TaskT& task, const run::Stopwatch& c
                : e.status == synth::Status::Kind::Infeasible ? kInfeasible
                                                              : kUnknown;
     }
-    for (const auto& r : e.suggestions) {
-        out["suggestions"].push_back(suggestion_json(r));
-        if (!a.json) std::printf("  - %s\n      then: %s\n", r.change.c_str(), r.outcome.c_str());
-    }
+    for (const auto& r : e.suggestions) out["suggestions"].push_back(suggestion_json(r));
     if (a.json) {
         // A reader (the server's page) shows why there are none.
         if (e.suggestions.empty()) out["note"] = "none found by changing one part alone";
         std::printf("%s\n",
                     out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
-    } else if (e.suggestions.empty()) {
-        std::printf("  (none found by changing one part alone)\n");
+    } else {
+        print_suggestions(e.suggestions, a.solve_seconds);
     }
     return kInfeasible;
 }
@@ -164,7 +219,7 @@ int run_explain(const ExplainArgs& a) {
     io::TaskDocument doc;
     try {
         // Checking the task is part of the command's time.
-        doc = io::load_task_document(a.task, run::Deadline::in(a.time_limit));
+        doc = read_task_file(a.task, a.strict, run::Deadline::in(a.time_limit));
     } catch (const io::CheckTimeout& e) {
         const std::string message =
             "Not proved infeasible: the task's checks did not end (" + std::string(e.what()) + ").";
@@ -193,6 +248,7 @@ Command add_explain(CLI::App& parent) {
     CLI::App* sub = parent.add_subcommand(
         "explain", "Say why a task cannot be done, and the smallest changes that would fix it");
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file (planar or spatial)")->required();
+    add_strict_option(*sub, a->strict);
     sub->add_option("--time-limit", a->time_limit,
                     "seconds for the whole command: the proof or the full run, then the "
                     "suggestions (default 60)")

@@ -23,6 +23,7 @@
 #include <modsynth/text/printable.h>
 
 #include "command.h"
+#include "task_file.h"
 
 namespace modsynth::app {
 namespace {
@@ -31,6 +32,7 @@ struct ExportArgs {
     std::string task, solution;
     output::ExportPaths exports;
     bool write_uncertified = false;
+    bool strict = false;
 };
 
 /// Where the saved timing breaks the task's joint limits (when it has
@@ -138,7 +140,7 @@ int run_export(const ExportArgs& a) {
     }
     io::check_outputs(export_outputs(a.exports), {a.task, a.solution});
     if (!a.exports.parts.empty()) parts::prepare_parts_folder(a.exports.parts);
-    const io::TaskDocument doc = io::load_task_document(a.task);
+    const io::TaskDocument doc = read_task_file(a.task, a.strict);
     if (const auto* spatial = std::get_if<task::SpatialTask>(&doc))
         return export_spatial(a, *spatial);
     const task::Task& task = std::get<task::Task>(doc);
@@ -206,6 +208,7 @@ Command add_export(CLI::App& parent) {
         ->required();
     sub->add_option("SOLUTION", a->solution, "modsynth-solution/1 JSON file")->required();
     add_export_options(*sub, a->exports);
+    add_strict_option(*sub, a->strict);
     sub->add_flag("--write-uncertified", a->write_uncertified,
                   "write --csv and --joint-trajectory even for a motion that fails "
                   "verification again (by default they are not written, and the exit code is 2)");

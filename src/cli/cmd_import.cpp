@@ -13,9 +13,9 @@
 #include <modsynth/drawing/hershey_text.h>
 #include <modsynth/drawing/import.h>
 #include <modsynth/drawing/svg_writer.h>
-#include <modsynth/geometry/vec.h>
 #include <modsynth/io/atomic_file.h>
 #include <modsynth/io/input.h>
+#include <modsynth/io/task_checks.h>
 #include <modsynth/io/task_document.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/task/input_error.h>
@@ -26,6 +26,7 @@
 #include <modsynth/text/printable.h>
 
 #include "command.h"
+#include "drawing_task.h"
 #include "imported_task.h"
 #include "number_checks.h"
 #include "planar_task.h"
@@ -36,66 +37,11 @@ namespace modsynth::app {
 
 namespace {
 
-using geometry::Vec2;
 using task::InputError;
 
-struct ImportArgs {
-    std::string input, output, name, reply;
-    std::string text, font = drawing::kDefaultFont;
-    double height = 0.03;
-    double width = 0.0, scale = 0.0, rotate = 0.0, tolerance = 1e-4;
-    double time_limit = 60.0;
-    std::vector<double> at;
-    std::vector<std::vector<double>> bases;
-    std::string obstacle_layer;
-    std::vector<std::string> layers;
-    bool strict = false;
-    bool hatch_boundaries = false;
-    std::vector<int> dof;
-    double link_diameter = -1.0;
-    bool keep_order = false;
-    std::vector<double> plane, cylinder;
-    double tool_length = -1.0;
-    std::string tool;
-    double tool_tolerance_degrees = 5.0;
-    bool spatial() const { return !plane.empty() || !cylinder.empty(); }
+struct ImportArgs : DrawingTaskOptions {
+    std::string input, output, reply;
 };
-
-/// What the task gets from the options: its name, base regions and robot.
-task::Task base_task(const ImportArgs& a) {
-    task::Task t;
-    t.name = a.name;
-    for (const auto& b : a.bases) t.base_regions.push_back({Vec2(b[0], b[1]), Vec2(b[2], b[3])});
-    if (!a.dof.empty()) t.robot.dof = a.dof;
-    if (a.link_diameter > 0.0) t.robot.link_diameter = a.link_diameter;
-    return t;
-}
-
-/// The same for a drawing placed in space: base boxes, and the spatial
-/// robot's defaults (formats.md) unless given.
-task::SpatialTask spatial_base_task(const ImportArgs& a) {
-    task::SpatialTask t;
-    t.name = a.name;
-    for (const auto& b : a.bases)
-        t.base_regions.push_back(
-            {geometry::Vec3(b[0], b[1], b[2]), geometry::Vec3(b[3], b[4], b[5])});
-    if (!a.dof.empty()) t.robot.dof = a.dof;
-    if (a.link_diameter > 0.0) t.robot.link_diameter = a.link_diameter;
-    if (a.tool_length >= 0.0) t.robot.tool_length = a.tool_length;
-    // Holding a tool's direction takes a hand or a wrist (formats.md "Tool
-    // orientation").
-    if (!a.tool.empty() && a.dof.empty()) t.robot.dof = {4, 5};
-    return t;
-}
-
-SurfaceImport surface_of(const ImportArgs& a) {
-    SurfaceImport s;
-    s.plane = a.plane;
-    s.cylinder = a.cylinder;
-    s.tool = a.tool;
-    s.tool_tolerance = a.tool_tolerance_degrees * geometry::kPi / 180.0;
-    return s;
-}
 
 std::string file_stem(const std::string& path) {
     return std::filesystem::path(path).stem().string();
@@ -107,24 +53,6 @@ void write_error_reply(const ImportArgs& a, const std::string& message, const st
     nlohmann::json body = {{"error", message}};
     if (!part.empty()) body["part"] = part;
     io::write_file_atomically(a.reply, body.dump() + "\n");
-}
-
-/// --text: the text in a Hershey font, its capitals --height metres tall,
-/// the first line's baseline starting at the origin.
-drawing::Drawing text_drawing(const ImportArgs& a) {
-    drawing::TextLayout layout;
-    layout.font = a.font;
-    layout.height = a.height;
-    drawing::TextCurves t = drawing::text_curves(a.text, Vec2::Zero(), layout, "--text", "--font");
-    if (!t.missing.empty()) {
-        throw InputError("--text", "the font '" + a.font + "' has no glyph for '" +
-                                       text::printable(t.missing, 40) + "'");
-    }
-    if (t.curves.empty()) throw InputError("--text", "nothing to draw");
-    drawing::Drawing d;
-    d.curves = std::move(t.curves);
-    d.metres_per_unit = 1.0;
-    return d;
 }
 
 // Past the time limit by this much, the watchdog answers for the import.
@@ -149,19 +77,9 @@ int run_import(ImportArgs& a) {
     const bool from_text = !a.text.empty();
     if (from_text) a.input = "--text";
     if (a.name.empty()) a.name = from_text ? "text" : file_stem(a.input);
-    drawing::ImportOptions options;
-    options.read.obstacle_layer = a.obstacle_layer;
-    options.read.layers = a.layers;
-    options.read.strict = a.strict;
-    options.read.hatch_boundaries = a.hatch_boundaries;
-    if (a.width > 0.0) options.placement.width = a.width;
-    if (a.scale > 0.0) options.placement.scale = a.scale;
-    if (!a.at.empty()) options.placement.at = Vec2(a.at[0], a.at[1]);
-    options.placement.rotate_degrees = a.rotate;
-    options.tolerance = a.tolerance;
+    drawing::ImportOptions options = import_options(a);
     const SurfaceImport surface = surface_of(a);
     const double wrap_tolerance = prepare_surface_import(options, surface);
-    options.keep_order = a.keep_order;
     options.deadline = start + limit;
     drawing::ImportResult r;
     nlohmann::json doc, reply;
@@ -176,11 +94,9 @@ int run_import(ImportArgs& a) {
                 r = drawing::import_drawing(text, format, options);
             }
         } catch (const InputError& e) {
-            // Name the file too: "drawing.svg: path#p3 (line 12): ...".
+            // Name the file too, once: "drawing.svg: path#p3 (line 12): ...".
             write_error_reply(a, e.what(), e.part());
-            const std::string problem =
-                e.part().empty() ? e.what() : e.what() + e.part().size() + 2;
-            throw InputError(a.input + ": " + e.part(), problem);
+            throw e.in_file(a.input);
         }
         if (a.spatial()) {
             doc = surface_task_json(r, surface, spatial_base_task(a), wrap_tolerance,
@@ -239,7 +155,16 @@ int run_import(ImportArgs& a) {
                       std::to_string(count) + ")";
         std::printf("layers (entities): %s\n", layers.c_str());
     }
+    // The warnings after the summary, as a terminal shows them.
+    std::fflush(stdout);
     for (const std::string& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    // A drawing in millimetres read as metres makes a task a hundred metres
+    // across: say so, with the options that place it.
+    for (const InputError& w : io::unit_warnings(doc))
+        std::fprintf(stderr,
+                     "warning: %s: %s; give --scale (metres per drawing unit: 0.001 for a "
+                     "drawing in millimetres) or --width (its width in metres)\n",
+                     a.output.c_str(), w.what());
     return kOk;
 }
 
@@ -357,33 +282,7 @@ Command add_import(CLI::App& parent) {
     return {sub, [a] {
                 if (a->input.empty() && a->text.empty())
                     throw InputError("DRAWING", "give a drawing file or --text");
-                for (const auto& b : a->bases) {
-                    if (a->spatial()) {
-                        if (b.size() != 6 || !(b[0] <= b[3]) || !(b[1] <= b[4]) || !(b[2] <= b[5]))
-                            throw InputError("--base",
-                                             "expected a box xmin,ymin,zmin,xmax,ymax,"
-                                             "zmax with min <= max (--plane, "
-                                             "--cylinder)");
-                    } else if (b.size() != 4 || !(b[0] <= b[2]) || !(b[1] <= b[3])) {
-                        throw InputError("--base", "expected xmin,ymin,xmax,ymax with min <= max");
-                    }
-                }
-                // Bad surfaces are refused before the drawing is read.
-                surface_of(*a).check();
-                for (int n : a->dof) {
-                    if (a->spatial() && !(n >= task::kMinSpatialDof && n <= task::kMaxSpatialDof))
-                        throw InputError("--dof", text::format("%d joints: a spatial chain "
-                                                               "(--plane, --cylinder) has 3 to 6",
-                                                               n));
-                }
-                if (a->tool_length >= 0.0 && !a->spatial())
-                    throw InputError("--tool-length", "only with --plane or --cylinder");
-                if (!a->spatial() && !a->tool.empty())
-                    throw InputError("--tool", "only with --plane or --cylinder");
-                if (a->tool == "toward" && a->cylinder.empty())
-                    throw InputError("--tool",
-                                     "'toward' points at a cylinder's axis: only with "
-                                     "--cylinder ('square' on a plane)");
+                check_options(*a);
                 return run_import(*a);
             }};
 }

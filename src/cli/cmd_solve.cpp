@@ -27,12 +27,14 @@
 #include "number_checks.h"
 #include "solve_guard.h"
 #include "spatial_solve.h"
+#include "task_file.h"
 
 namespace modsynth::app {
 namespace {
 
 struct SolveArgs : SolveRequest {
     std::string task;
+    bool strict = false;
     std::string swept = "auto";
     double shorten_gap = synth::SynthesisOptions{}.shorten_gap;
 };
@@ -54,13 +56,14 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
                    double ee_speed = std::numeric_limits<double>::infinity()) {
     // A certified motion that no allowed module carries is still solved;
     // the status line says which joint is overloaded.
+    // Said after the times, so that no time reads as the overload's.
     const bool overloaded = solution.modules && solution.modules->overloaded_joint > 0;
-    const std::string status = overloaded ? text::format("solved, but joint %d is overloaded",
-                                                         solution.modules->overloaded_joint)
-                                          : std::string(synth::to_string(solution.status));
-    std::printf("%s: %s in %.3f s (front stage %.3f s, refinement %.3f s, verification %.3f s)\n",
-                text::printable(task.name, 80).c_str(), status.c_str(), seconds,
-                stats.front_seconds, stats.refine_seconds, stats.verify_seconds);
+    const std::string overload = overloaded ? text::format(", but joint %d is overloaded",
+                                                           solution.modules->overloaded_joint)
+                                            : std::string();
+    std::printf("%s: %s in %.3f s (front stage %.3f s, refinement %.3f s, verification %.3f s)%s\n",
+                text::printable(task.name, 80).c_str(), synth::to_string(solution.status), seconds,
+                stats.front_seconds, stats.refine_seconds, stats.verify_seconds, overload.c_str());
     if (solution.status != synth::Status::Solved) {
         std::printf("  %s\n", solution.explanation.message.c_str());
         if (!solution.explanation.core.empty()) {
@@ -72,9 +75,7 @@ void print_summary(const task::Task& task, const synth::Solution& solution, doub
     std::printf("  robot: %s\n", robot_summary(r).c_str());
     const auto& c = solution.certificate;
     // Without obstacles there is no clearance to report, only its absence.
-    const std::string clearance = std::isfinite(c.min_clearance)
-                                      ? text::format("clearance margin %.4f m", c.min_clearance)
-                                      : std::string("no obstacles");
+    const std::string clearance = text::clearance_text(c.min_clearance);
     std::printf(
         "  certified over the whole motion: %s, self-collision margin %.4f m, EE deviation <= "
         "%.2e m\n",
@@ -127,7 +128,7 @@ int run_solve(const SolveArgs& a) {
     // many obstacles takes minutes to check.
     io::TaskDocument doc;
     try {
-        doc = io::load_task_document(a.task, run::Deadline::in(a.time_limit - clock.seconds()));
+        doc = read_task_file(a.task, a.strict, run::Deadline::in(a.time_limit - clock.seconds()));
     } catch (const io::CheckTimeout& e) {
         return answer_unchecked(e, a.output, a.exports, a.time_limit, clock.seconds());
     }
@@ -181,6 +182,7 @@ Command add_solve(CLI::App& parent) {
     auto a = std::make_shared<SolveArgs>();
     CLI::App* sub = parent.add_subcommand("solve", "Synthesise a robot and its control for a task");
     sub->add_option("TASK", a->task, "modsynth-task/1 JSON file")->required();
+    add_strict_option(*sub, a->strict);
     sub->add_option("-o,--output", a->output, "where to write the modsynth-solution/1 JSON")
         ->required();
     sub->add_option("--time-limit", a->time_limit, "seconds for the whole run (default 60)")

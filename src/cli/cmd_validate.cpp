@@ -10,12 +10,14 @@
 
 #include "command.h"
 #include "number_checks.h"
+#include "task_file.h"
 
 namespace modsynth::app {
 
 Command add_validate(CLI::App& parent) {
     auto path = std::make_shared<std::string>();
     auto time_limit = std::make_shared<double>(60.0);
+    auto strict = std::make_shared<bool>(false);
     CLI::App* sub = parent.add_subcommand(
         "validate", "Check a task file (exit 0 valid, 2 invalid, 4 not checked in time)");
     sub->add_option("TASK", *path, "modsynth-task/1 JSON file")->required();
@@ -23,10 +25,11 @@ Command add_validate(CLI::App& parent) {
                     "seconds for the checks: a long path among many obstacles takes long to "
                     "check (default 60)")
         ->check(seconds());
-    return {sub, [path, time_limit] {
+    add_strict_option(*sub, *strict);
+    return {sub, [path, time_limit, strict] {
                 io::TaskDocument doc;
                 try {
-                    doc = io::load_task_document(*path, run::Deadline::in(*time_limit));
+                    doc = read_task_file(*path, *strict, run::Deadline::in(*time_limit));
                 } catch (const io::CheckTimeout& e) {
                     std::printf("%s: not checked within the time limit (%g s): %s\n",
                                 text::printable(*path, 200).c_str(), *time_limit, e.what());

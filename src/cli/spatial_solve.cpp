@@ -10,6 +10,7 @@
 #include <modsynth/synth/module_choice.h>
 #include <modsynth/synth/solve.h>
 #include <modsynth/task/part.h>
+#include <modsynth/task/part_list.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/printable.h>
 
@@ -18,14 +19,19 @@
 namespace modsynth::app {
 namespace {
 
+/// `v` as "%.4f" shows it, but a value that rounds to zero shown as 0, not
+/// -0: the sign of a base coordinate of -1e-9 m says nothing, and would
+/// make the same robot read differently from run to run.
+double shown(double v) { return std::abs(v) < 5e-5 ? 0.0 : v; }
+
 std::string chain_summary(const kinematics::DhChain& c) {
     std::string rows;
     for (const auto& r : c.rows)
         rows += text::format(
-            rows.empty() ? "(a %.4f, alpha %+.4f, d %.4f)" : " (a %.4f, alpha %+.4f, d %.4f)", r.a,
-            r.alpha, r.d);
-    return text::format("%d joints, base (%.4f, %.4f, %.4f), DH ", c.dof(), c.base.x(), c.base.y(),
-                        c.base.z()) +
+            rows.empty() ? "(a %.4f, alpha %+.4f, d %.4f)" : " (a %.4f, alpha %+.4f, d %.4f)",
+            shown(r.a), shown(r.alpha), shown(r.d));
+    return text::format("%d joints, base (%.4f, %.4f, %.4f), DH ", c.dof(), shown(c.base.x()),
+                        shown(c.base.y()), shown(c.base.z())) +
            rows + text::format(", chain %.4f m", c.total_length());
 }
 
@@ -37,19 +43,13 @@ void print_summary(const task::SpatialTask& task, const synth::Solution& solutio
                 stats.front_seconds, stats.refine_seconds, stats.verify_seconds);
     if (solution.status != synth::Status::Solved) {
         std::printf("  %s\n", solution.explanation.message.c_str());
-        if (!solution.explanation.core.empty()) {
-            std::printf("  core:");
-            for (const auto& c : solution.explanation.core)
-                std::printf(" %s", task::to_string(c).c_str());
-            std::printf("\n");
-        }
+        if (!solution.explanation.core.empty())
+            std::printf("  core: %s\n", task::to_short_list(solution.explanation.core).c_str());
         return;
     }
     std::printf("  robot: %s\n", chain_summary(*solution.dh_robot).c_str());
     const auto& c = solution.certificate;
-    const std::string clearance = std::isfinite(c.min_clearance)
-                                      ? text::format("clearance margin %.4f m", c.min_clearance)
-                                      : std::string("no obstacles");
+    const std::string clearance = text::clearance_text(c.min_clearance);
     std::printf(
         "  certified over the whole motion: %s, self-collision margin %.4f m, EE deviation <= "
         "%.2e m%s\n",

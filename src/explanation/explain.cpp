@@ -1,6 +1,7 @@
 #include <modsynth/explanation/explain.h>
 
 #include <algorithm>
+#include <vector>
 
 #include <modsynth/explanation/spatial_explanation.h>
 #include <modsynth/run/stopwatch.h>
@@ -23,6 +24,19 @@ namespace {
 std::string unproved_message(const task::Task&, const InfeasibilityProof& proof,
                              const synth::Solution& s) {
     return unproved_message(proof, s);
+}
+
+// What a builder acts on first: the changes the synthesis confirmed
+// (solved), then those it did not within its time, then those after which
+// the task is still infeasible; in the order found within each.
+void confirmed_first(std::vector<Relaxation>& suggestions) {
+    const auto rank = [](const Relaxation& r) {
+        return r.status == synth::Status::Solved       ? 0
+               : r.status == synth::Status::Infeasible ? 2
+                                                       : 1;
+    };
+    std::stable_sort(suggestions.begin(), suggestions.end(),
+                     [&](const Relaxation& a, const Relaxation& b) { return rank(a) < rank(b); });
 }
 
 // Prove, else solve, else suggest: one flow for both kinds of task; the
@@ -62,6 +76,7 @@ Explanation explain_flow(const TaskT& task, const ExplainOptions& options, Solve
     if (options.proved) options.proved(out);
     say(run::Stage::Explanation, "looking for the smallest changes");
     out.suggestions = suggest_relaxations(task, proof.core, options.solve_seconds, left());
+    confirmed_first(out.suggestions);
     return out;
 }
 

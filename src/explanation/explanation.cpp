@@ -12,6 +12,7 @@
 #include <modsynth/prove/obstacle_proof.h>
 #include <modsynth/prove/provers.h>
 #include <modsynth/run/deadline.h>
+#include <modsynth/run/stopwatch.h>
 #include <modsynth/smt/common_core.h>
 #include <modsynth/smt/front_stage.h>
 #include <modsynth/synth/synthesizer.h>
@@ -71,13 +72,14 @@ std::pair<Status, std::string> attempt(const task::Task& relaxed, double seconds
     }
     SynthesisOptions options;
     options.time_limit = seconds;
+    const run::Stopwatch clock;
     const Solution s = synthesize(relaxed, options);
     if (s.status == Status::Solved) {
         std::string links;
         for (double r : s.robot.link_lengths)
             links += text::format(links.empty() ? "%.3f" : " + %.3f", r);
-        return {s.status,
-                "solved: " + std::to_string(s.robot.dof()) + " joints, links " + links + " m"};
+        return {s.status, text::format("solved in %.2f s: ", clock.seconds()) +
+                              std::to_string(s.robot.dof()) + " joints, links " + links + " m"};
     }
     return unsolved_outcome(s, seconds);
 }

@@ -22,8 +22,9 @@ inline std::pair<synth::Status, std::string> unsolved_outcome(const synth::Solut
                                                               double seconds) {
     if (s.status == synth::Status::Infeasible)
         return {s.status, "still infeasible: " + s.explanation.message};
-    return {s.status, "the conflict is gone, but no robot was found within " +
-                          text::format("%.0f s", seconds)};
+    return {s.status, text::format("not confirmed in %.0f s: the conflict is gone, but the "
+                                   "synthesis found no robot in that time",
+                                   seconds)};
 }
 
 template <typename TaskT>

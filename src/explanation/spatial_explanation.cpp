@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -14,6 +15,7 @@
 #include <modsynth/prove/spatial_enclosure.h>
 #include <modsynth/prove/spatial_reach_proof.h>
 #include <modsynth/run/deadline.h>
+#include <modsynth/run/stopwatch.h>
 #include <modsynth/smt/spatial_front_stage.h>
 #include <modsynth/synth/spatial_synthesizer.h>
 #include <modsynth/task/spatial_strokes.h>
@@ -70,10 +72,11 @@ std::pair<Status, std::string> attempt(const task::SpatialTask& relaxed, double 
     }
     synth::SpatialSynthesisOptions options;
     options.time_limit = seconds;
+    const run::Stopwatch clock;
     const Solution s = synth::synthesize(relaxed, options);
     if (s.status == Status::Solved)
-        return {s.status, text::format("solved: %d joints, chain %.3f m", s.dh_robot->dof(),
-                                       s.dh_robot->total_length())};
+        return {s.status, text::format("solved in %.2f s: %d joints, chain %.3f m", clock.seconds(),
+                                       s.dh_robot->dof(), s.dh_robot->total_length())};
     return unsolved_outcome(s, seconds);
 }
 
@@ -94,8 +97,12 @@ public:
     void wider_tool(const TaskPart& part);
 
     /// For a wall's obstacles: the first whose removal opens it, and the
-    /// least move of one of them outwards that does.
+    /// least move of one of them outwards that does, those that face the
+    /// path tried first.
     void obstacle_changes();
+    /// Each obstacle's distance from the line between the path (the middle
+    /// of the core's first primitive) and the base region nearest it.
+    std::map<int, double> facing_distances(const std::vector<int>& ids) const;
 
 private:
     /// Whether a changed task is out of the conflict, for a bisection: when
@@ -306,6 +313,36 @@ void SpatialRelaxers::grown_region(const TaskPart& part) {
           g);
 }
 
+std::map<int, double> SpatialRelaxers::facing_distances(const std::vector<int>& ids) const {
+    // A point of the path in the core (the middle of its first primitive)
+    // and the base region nearest it.
+    std::optional<geometry::Vec3> point;
+    for (const TaskPart& p : core_) {
+        if (p.kind() != TaskPart::Kind::Primitive) continue;
+        for (int k = 0; k < static_cast<int>(task_.trajectory.size()) && !point; ++k)
+            if (task::primitive_part(task_, k) == p) {
+                const auto& prim = task_.trajectory[static_cast<std::size_t>(k)];
+                point = geometry::point_at(prim, geometry::length(prim) / 2);
+            }
+        if (point) break;
+    }
+    std::map<int, double> out;
+    for (int i : ids) out[i] = 0.0;
+    if (!point || task_.base_regions.empty()) return out;
+    geometry::Vec3 base = task_.base_regions.front().center();
+    for (const auto& r : task_.base_regions)
+        if ((r.center() - *point).norm() < (base - *point).norm()) base = r.center();
+    const geometry::Vec3 d = *point - base;
+    for (int i : ids) {
+        const geometry::Vec3 c =
+            geometry::bounding_sphere(task_.obstacles[static_cast<std::size_t>(i)]).center;
+        const double t =
+            d.squaredNorm() > 0.0 ? std::clamp((c - base).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+        out[i] = (c - (base + t * d)).norm();
+    }
+    return out;
+}
+
 void SpatialRelaxers::obstacle_changes() {
     std::vector<int> ids;
     for (const TaskPart& p : core_)
@@ -318,8 +355,14 @@ void SpatialRelaxers::obstacle_changes() {
     for (int i : ids)
         middle += geometry::bounding_sphere(task_.obstacles[static_cast<std::size_t>(i)]).center;
     middle /= static_cast<double>(ids.size());
-    // The smallest first: the least to take away or carry.
+    // The wall opens where it faces the path: the obstacles nearest the line
+    // from the base to the path first (taking away one behind the base
+    // leaves the arm walled off from the path by the rest), then the
+    // smallest, the least to take away or carry.
+    const auto facing = facing_distances(ids);
     std::stable_sort(ids.begin(), ids.end(), [&](int a, int b) {
+        const double fa = std::round(facing.at(a) * 1000.0), fb = std::round(facing.at(b) * 1000.0);
+        if (fa != fb) return fa < fb;
         return geometry::bounding_sphere(task_.obstacles[static_cast<std::size_t>(a)]).radius <
                geometry::bounding_sphere(task_.obstacles[static_cast<std::size_t>(b)]).radius;
     });

@@ -34,10 +34,32 @@ std::vector<int> core_obstacles(const Proof& proof) {
     return out;
 }
 
-// The smallest obstacle first: its removal is the least change.
+// How far obstacle i lies from the straight way between a base region and
+// the path point its wall (or detour) keeps out: the wall opens for an arm
+// where it faces that way.
+double off_the_way(const task::Task& task, const Proof& proof, int i) {
+    const Vec2 c = task.obstacles[i].center;
+    double near = 1e300;
+    const auto way = [&](int region, const Vec2& point) {
+        const auto& r = task.base_regions[region];
+        near = std::min(near, geometry::point_segment(c, 0.5 * (r.min + r.max), point));
+    };
+    if (proof.separation)
+        for (const auto& w : proof.separation->walls) way(w.base_region, w.point);
+    if (proof.geodesic)
+        for (const auto& d : proof.geodesic->detours) way(d.base_region, d.point);
+    return near;
+}
+
+// The obstacle that faces the way from the base to the path first (taking
+// one away elsewhere leaves the arm to reach round the rest), then the
+// smallest: its removal is the least change.
 std::vector<WallChange> removals(const task::Task& task, const Proof& proof, std::size_t most) {
     std::vector<int> order = core_obstacles(proof);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        const double fa = std::round(off_the_way(task, proof, a) * 1000.0);
+        const double fb = std::round(off_the_way(task, proof, b) * 1000.0);
+        if (fa != fb) return fa < fb;
         return task.obstacles[a].radius < task.obstacles[b].radius;
     });
     std::vector<WallChange> out;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <system_error>
@@ -280,7 +281,25 @@ Catalog load_catalog(const std::string& folder) {
     return catalog;
 }
 
+namespace {
+
+// Set once by a library at load time and read by every solve: a mutex
+// keeps a read from seeing a string half written.
+std::mutex given_folder_mutex;
+std::string given_folder;
+
+}  // namespace
+
+void set_default_catalog_folder(const std::string& folder) {
+    const std::lock_guard<std::mutex> lock(given_folder_mutex);
+    given_folder = folder;
+}
+
 std::string default_catalog_folder() {
+    {
+        const std::lock_guard<std::mutex> lock(given_folder_mutex);
+        if (!given_folder.empty()) return given_folder;
+    }
     namespace fs = std::filesystem;
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);

@@ -581,14 +581,17 @@ ParsedSolution parse_solution_text(std::string_view text) {
 }
 
 ParsedSolution load_solution(const std::string& path) {
-    // Read as it is parsed, its samples taken out as they complete: memory
-    // is the motion's, not the file's text and tree.
-    const InputFile file(path, "solution", task::kMaxSolutionBytes);
-    SampleReader reader;
-    const json doc = parse_json_file(file, [&](int depth, json::parse_event_t event, json& parsed) {
-        return reader.on_event(depth, event, parsed);
+    return read_document_file(path, [](const std::string& p) {
+        // Read as it is parsed, its samples taken out as they complete:
+        // memory is the motion's, not the file's text and tree.
+        const InputFile file(p, "solution", task::kMaxSolutionBytes);
+        SampleReader reader;
+        const json doc =
+            parse_json_file(file, [&](int depth, json::parse_event_t event, json& parsed) {
+                return reader.on_event(depth, event, parsed);
+            });
+        return parse_solution_document(doc, &reader);
     });
-    return parse_solution_document(doc, &reader);
 }
 
 void check_solution_fits(const task::Task& task, const synth::Solution& solution) {

@@ -745,8 +745,10 @@ SpatialTask parse_spatial_task_text(std::string_view text, const run::Deadline& 
 SpatialTask load_spatial_task(const std::string& path, const run::Deadline& deadline) {
     SpatialTask task;
     try {
-        task =
-            parse_spatial_task_text(read_input_file(path, "task", task::kMaxTaskBytes), deadline);
+        task = read_document_file(path, [&](const std::string& p) {
+            return parse_spatial_task_text(read_input_file(p, "task", task::kMaxTaskBytes),
+                                           deadline);
+        });
     } catch (const CheckTimeout& e) {
         if (!e.task_name().empty()) throw;
         throw CheckTimeout(std::filesystem::path(path).stem().string(), e.doing());

@@ -517,7 +517,9 @@ Task parse_task_text(std::string_view text) {
 }
 
 Task load_task(const std::string& path) {
-    Task task = parse_task_text(read_input_file(path, "task", kMaxTaskBytes));
+    Task task = read_document_file(path, [](const std::string& p) {
+        return parse_task_text(read_input_file(p, "task", kMaxTaskBytes));
+    });
     if (task.name.empty()) task.name = std::filesystem::path(path).stem().string();
     return task;
 }

@@ -11,6 +11,7 @@
 #include <modsynth/output/parts_export.h>
 #include <modsynth/output/recertify.h>
 #include <modsynth/task/part.h>
+#include <modsynth/task/part_list.h>
 #include <modsynth/task/spatial_strokes.h>
 #include <modsynth/text/format.h>
 #include <modsynth/text/markdown.h>
@@ -157,9 +158,20 @@ std::string start_pose_section(const synth::Solution& solution) {
            ") m, the start of the path.\n";
 }
 
+/// "0-5", "0-2, 5-8": runs of three or more by their ends.
 std::string index_list(const std::vector<int>& ids) {
     std::string s;
-    for (std::size_t i = 0; i < ids.size(); ++i) s += (i ? ", " : "") + std::to_string(ids[i]);
+    for (std::size_t i = 0; i < ids.size();) {
+        std::size_t end = i + 1;
+        while (end < ids.size() && ids[end] == ids[end - 1] + 1) ++end;
+        s += (s.empty() ? "" : ", ") + std::to_string(ids[i]);
+        if (end - i >= 3) {
+            s += "-" + std::to_string(ids[end - 1]);
+        } else {
+            for (std::size_t k = i + 1; k < end; ++k) s += ", " + std::to_string(ids[k]);
+        }
+        i = end;
+    }
     return s;
 }
 
@@ -176,12 +188,21 @@ std::string no_arm_sheet(const task::SpatialTask& task, const synth::Solution& s
                          : " (no arm was found, and none was proved impossible).") +
                     "\n\n## Why\n\n" +
                     (e.message.empty() ? std::string("No explanation was given.")
-                                       : text::markdown_literal(e.message)) +
+                                       : text::markdown_text(e.message)) +
                     "\n";
     if (!e.core.empty()) {
         s += "\n## The parts that conflict\n\nChanging any one of them can remove the "
              "conflict (`modsynth explain` says by how much):\n\n";
-        for (const task::TaskPart& p : e.core) s += "- `" + task::to_string(p) + "`\n";
+        // A run (a shell of 80 spheres) is one line, by its ends.
+        for (const task::PartRun& run : task::part_runs(e.core)) {
+            if (run.size() >= 3) {
+                s += "- `" + task::to_string(e.core[run.first]) + "` to `" +
+                     task::to_string(e.core[run.last]) + "` (" + std::to_string(run.size()) + ")\n";
+                continue;
+            }
+            for (std::size_t k = run.first; k <= run.last; ++k)
+                s += "- `" + task::to_string(e.core[k]) + "`\n";
+        }
     }
     if (e.enclosure) {
         s += "\n## The wall\n\n";
@@ -190,9 +211,10 @@ std::string no_arm_sheet(const task::SpatialTask& task, const synth::Solution& s
             const std::string point =
                 task::part_name(task, w.primitive) + " at (" +
                 text::format("%.3f, %.3f, %.3f", w.point.x(), w.point.y(), w.point.z()) + ") m";
-            s += "- Obstacles " + index_list(w.obstacles) + " close a shell round " +
-                 (w.base_inside ? region + "; " + point : point + "; " + region) +
-                 " lies outside it.\n";
+            s += "- Obstacles " + index_list(w.obstacles) +
+                 (w.base_inside
+                      ? " close in " + region + "; the path, " + point + ", is outside them.\n"
+                      : " close in the path, " + point + "; " + region + " is outside them.\n");
         }
     }
     return s;

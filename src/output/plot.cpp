@@ -93,8 +93,11 @@ std::string path_data(const Frame& f, const std::vector<Vec2>& points, bool clos
 }
 
 std::string primitive_colour(int j) {
-    static const char* const kColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b",
-                                           "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#d62728"};
+    // No red (obstacles, and the parts in conflict), green (a wall's
+    // enclosed cells) or grey (the arm, base regions): each colour of a
+    // view means one thing.
+    static const char* const kColours[] = {"#1f77b4", "#ff7f0e", "#e7ba52", "#9467bd", "#8c564b",
+                                           "#e377c2", "#17becf", "#bcbd22", "#006d77", "#393b79"};
     return kColours[j % 10];
 }
 

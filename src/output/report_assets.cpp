@@ -45,10 +45,11 @@ li.core-part { margin: 2px 0; }
 .proof-point { fill: #fff; stroke: #d00; stroke-width: 3; }
 .reach-limit { fill: none; stroke-width: 2 !important; stroke-dasharray: 10 6 !important; }
 .pose { fill: none; stroke: #555; stroke-opacity: 0.3; stroke-linecap: round; stroke-linejoin: round; }
-.link { stroke: #333; stroke-opacity: 0.85; stroke-linecap: round; }
-.joint { fill: #fff; stroke: #000; stroke-width: 1.5; }
-.ee { fill: #000; }
-.base-marker { fill: #333; }
+#robot .link { stroke: #333; stroke-opacity: 0.85; stroke-linecap: round; }
+#robot .joint { fill: #fff; stroke: #000; stroke-width: 1.5; }
+#robot .ee { fill: #000; }
+#robot .base-marker { fill: #333; }
+.chart polyline { fill: none; }
 #trail { fill: none; stroke: #000; stroke-opacity: 0.55; stroke-width: 1.2; }
 #scale-bar path { fill: none; stroke: #000; stroke-width: 1.5; }
 #scale-bar text { font-size: 12px; }

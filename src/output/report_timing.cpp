@@ -104,7 +104,7 @@ std::string chart(const char* id, const std::string& title, const Samples& s, co
                        plot::n2(a.y(v)) + "\" stroke=\"" + colour +
                        "\" stroke-dasharray=\"6 4\" stroke-width=\"1\"/>\n";
         }
-        out += "<polyline class=\"joint\" data-joint=\"" + std::to_string(k + 1) +
+        out += "<polyline class=\"joint-curve\" data-joint=\"" + std::to_string(k + 1) +
                "\" fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"1.2\" points=\"" +
                curve(s, pick, k, a) + "\"/>\n";
     }
@@ -176,7 +176,8 @@ std::string section(const task::Task& task, const synth::Solution& solution) {
     }
     std::string legend;
     for (std::size_t k = 0; k < dof; ++k)
-        legend += "<li><span class=\"swatch\" style=\"background:" +
+        legend += "<li data-joint=\"" + std::to_string(k + 1) +
+                  "\"><span class=\"swatch\" style=\"background:" +
                   plot::primitive_colour(static_cast<int>(k)) + "\"></span>joint " +
                   std::to_string(k + 1) + "</li>";
     std::string out = "<section id=\"timing\">\n<h2>Timing</h2>\n<p class=\"note\">";

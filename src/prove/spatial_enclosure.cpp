@@ -571,12 +571,6 @@ std::string point_text(const Vec3& p) {
     return text::format("(%.3f, %.3f, %.3f)", p.x(), p.y(), p.z());
 }
 
-std::size_t cell_total(const Enclosure& w) {
-    std::size_t n = 0;
-    for (const CellRun& r : w.cells) n += static_cast<std::size_t>(r.i1 - r.i0 + 1);
-    return n;
-}
-
 }  // namespace
 
 std::optional<Proof> prove_spatial_enclosure(const task::SpatialTask& task,
@@ -604,24 +598,21 @@ std::optional<Proof> prove_spatial_enclosure(const task::SpatialTask& task,
             primitives.push_back(w.primitive);
         const std::string region = task::to_string(task::TaskPart::base_region(r));
         const std::string point = task::part_name(task, w.primitive) + " at " + point_text(w.point);
+        // In a builder's words; the grid and its cells are the witness's.
+        const std::string wall = "obstacles " + index_ranges(w.obstacles);
         cells = cells || !w.cells.empty();
         if (w.cells.empty())
-            said += (said.empty() ? "" : "; ") + std::string("obstacles ") +
-                    index_ranges(w.obstacles) +
-                    " grown by link_diameter / 2 fill every cell round " +
-                    (w.base_inside ? region + " (grown by link_diameter / 2)"
-                                   : point + " (within tool_length and 1 mm of it)") +
-                    text::format(" (cells of %g m): no free point there for a chain to leave",
-                                 w.grid.cell);
+            said += (said.empty() ? "" : "; ") + wall + " fill the space round " +
+                    (w.base_inside ? region + " (to half an arm's thickness)"
+                                   : "the path (" + point + ", to the tool's length and 1 mm)") +
+                    ": no free point there for an arm to " +
+                    (w.base_inside ? "leave from" : "reach");
         else
-            said += (said.empty() ? "" : "; ") + std::string("obstacles ") +
-                    index_ranges(w.obstacles) + " close a shell round " +
-                    (w.base_inside ? region + ", and " + point + " lies outside it"
-                                   : point + ", and " + region + " lies outside it") +
-                    text::format(
-                        " (%zu free cells of %g m inside, every neighbour inside an obstacle "
-                        "grown by link_diameter / 2)",
-                        cell_total(w), w.grid.cell);
+            said += (said.empty() ? "" : "; ") +
+                    (w.base_inside ? wall + " close in " + region + ", and the path (" + point +
+                                         ") is outside them"
+                                   : "the path is closed in by " + wall + " (" + point +
+                                         " is inside them), away from " + region);
         witness.walls.push_back(std::move(w));
     }
     std::sort(primitives.begin(), primitives.end());
@@ -631,9 +622,14 @@ std::optional<Proof> prove_spatial_enclosure(const task::SpatialTask& task,
     if (tube) proof.core.push_back(task::TaskPart::robot(task::RobotKey::LinkDiameter));
     if (task.robot.tool_length > 0.0)
         proof.core.push_back(task::TaskPart::robot(task::RobotKey::ToolLength));
-    proof.message = said + (cells ? ": a chain is one tube from its base to the path, and would "
-                                    "have to pass through the shell."
-                                  : ".");
+    proof.message =
+        said + (cells ? ": no arm from the base box can reach round them, since an arm is one "
+                        "tube from its base to its tool" +
+                            (tube ? text::format(", %.2f mm thick, and no gap between them is that "
+                                                 "wide.",
+                                                 task.robot.link_diameter * 1000.0)
+                                  : std::string(", and they leave no gap at all."))
+                      : std::string("."));
     if (!proof.minimal && options.minimise)
         proof.message += " (core not minimised within the time limit)";
     proof.enclosure = std::move(witness);

@@ -162,6 +162,7 @@ json job_json(const JobState& s) {
         {"done", s.phase == Phase::Done},
         {"status", s.status ? json(to_string(*s.status)) : json(nullptr)},
         {"stage", s.stage},
+        {"stages", s.stages},
         {"elapsed", std::round(s.elapsed * 1000.0) / 1000.0},
         {"time_limit", s.time_limit},
         {"version", s.version},

@@ -30,6 +30,11 @@ class ShutdownSignals {
 public:
     ShutdownSignals() {
         signal(SIGPIPE, SIG_IGN);
+        // A signal ignored when it is sent is dropped, blocked or not: a
+        // server started where SIGINT is ignored (in the background of a
+        // script) would never see it. Blocked, the default is never run.
+        signal(SIGINT, SIG_DFL);
+        signal(SIGTERM, SIG_DFL);
         sigemptyset(&set_);
         sigaddset(&set_, SIGINT);
         sigaddset(&set_, SIGTERM);

@@ -2,6 +2,7 @@
 
 #include <modsynth/io/progress_json.h>
 #include <modsynth/output/exports.h>
+#include <modsynth/run/progress.h>
 #include <modsynth/text/format.h>
 
 #include <algorithm>
@@ -241,6 +242,10 @@ void SolveJobs::follow_log(Job& job, bool final) {
         for (const auto& line : job.events->new_lines(final))
             if (const auto event = io::parse_progress_json_line(line)) {
                 job.state.stage = event->message;
+                const std::string name = run::to_string(event->stage);
+                auto& stages = job.state.stages;
+                if (std::find(stages.begin(), stages.end(), name) == stages.end())
+                    stages.push_back(name);
                 ++job.state.version;
             }
     }
@@ -276,6 +281,7 @@ void SolveJobs::end_solve(Job& job) {
     job.child = std::make_unique<ChildProcess>(spec);
     job.state.phase = Phase::Explain;
     job.state.stage = "looking for the smallest changes that remove the conflict";
+    job.state.stages.push_back(run::to_string(run::Stage::Explanation));
 }
 
 void SolveJobs::end_explain(Job& job) {

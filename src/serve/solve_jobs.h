@@ -47,7 +47,11 @@ struct JobState {
     std::uint64_t version = 0;  ///< grows with every change worth telling
     double elapsed = 0.0;       ///< seconds since the start (until the end once done)
     double time_limit = 0.0;
-    std::string stage;                    ///< the latest progress event's message
+    std::string stage;  ///< the latest progress event's message
+    /// The pipeline stages (run::to_string) the run has reached, in the
+    /// order first reached; "explanation" once an infeasible task is
+    /// explained.
+    std::vector<std::string> stages;
     std::vector<std::string> log;         ///< the latest output lines
     std::optional<SolveOutcome> outcome;  ///< once the solve has ended
     /// Once done: the outcome's status, or Cancelled.

@@ -99,9 +99,9 @@ public:
         r_.stats.verify_seconds += t0.seconds();
         if (cert.ok) {
             r_.say(run::Stage::Verification,
-                   text::format("    certified: clearance margin %.4f m, self margin %.4f m, "
-                                "deviation %.2g m",
-                                cert.min_clearance, cert.min_self_clearance, cert.max_deviation));
+                   text::format("    certified: %s, self margin %.4f m, deviation %.2g m",
+                                text::clearance_text(cert.min_clearance).c_str(),
+                                cert.min_self_clearance, cert.max_deviation));
             verdict.solution = k_.solution(design, std::move(*motion), std::move(cert));
             return verdict;
         }

@@ -2,23 +2,42 @@
 
 namespace modsynth::task {
 
-std::string to_short_list(const std::vector<TaskPart>& parts) {
-    std::string out;
+namespace {
+
+/// Whether `b` follows `a` in a run: the next primitive of the same stroke,
+/// or the next obstacle (whole parts, no field).
+bool follows(const TaskPart& a, const TaskPart& b) {
+    if (!a.field().empty() || !b.field().empty() || a.kind() != b.kind()) return false;
+    if (a.kind() == TaskPart::Kind::Primitive)
+        return a.stroke() == b.stroke() && b.index() == a.index() + 1;
+    return a.kind() == TaskPart::Kind::Obstacle && b.index() == a.index() + 1;
+}
+
+}  // namespace
+
+std::vector<PartRun> part_runs(const std::vector<TaskPart>& parts) {
+    std::vector<PartRun> out;
     for (std::size_t i = 0; i < parts.size();) {
         std::size_t end = i + 1;
-        if (parts[i].kind() == TaskPart::Kind::Primitive && parts[i].field().empty())
-            while (end < parts.size() && parts[end].kind() == TaskPart::Kind::Primitive &&
-                   parts[end].field().empty() && parts[end].stroke() == parts[i].stroke() &&
-                   parts[end].index() == parts[end - 1].index() + 1)
-                ++end;
-        out += (out.empty() ? "" : " ") + to_string(parts[i]);
-        if (end - i >= 3) {
-            out += " to " + to_string(parts[end - 1]);
-        } else {
-            for (std::size_t k = i + 1; k < end; ++k) out += " " + to_string(parts[k]);
-        }
+        while (end < parts.size() && follows(parts[end - 1], parts[end])) ++end;
+        out.push_back({i, end - 1});
         i = end;
     }
+    return out;
+}
+
+std::string run_text(const std::vector<TaskPart>& parts, const PartRun& run) {
+    if (run.size() >= 3) return to_string(parts[run.first]) + " to " + to_string(parts[run.last]);
+    std::string out;
+    for (std::size_t k = run.first; k <= run.last; ++k)
+        out += (out.empty() ? "" : " ") + to_string(parts[k]);
+    return out;
+}
+
+std::string to_short_list(const std::vector<TaskPart>& parts) {
+    std::string out;
+    for (const PartRun& run : part_runs(parts))
+        out += (out.empty() ? "" : " ") + run_text(parts, run);
     return out;
 }
 

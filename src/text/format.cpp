@@ -1,5 +1,7 @@
 #include <modsynth/text/format.h>
 
+#include <cmath>
+
 #include <array>
 #include <charconv>
 #include <cstdarg>
@@ -38,6 +40,10 @@ void append_general(std::string& out, double v, int digits) {
         out.append(buf.data(), r.ptr);
     else
         out += format("%.*g", digits, v);
+}
+
+std::string clearance_text(double margin) {
+    return std::isfinite(margin) ? format("clearance margin %.4f m", margin) : "no obstacles";
 }
 
 }  // namespace modsynth::text

@@ -27,4 +27,39 @@ std::string markdown_literal(std::string_view text) {
     return out;
 }
 
+std::string markdown_text(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    const auto word = [&](std::size_t k) {
+        if (k >= text.size()) return false;
+        const char c = text[k];
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+    };
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '<') {
+            out += "&lt;";
+        } else if (c == '>') {
+            out += "&gt;";
+        } else if (c == '&') {
+            out += "&amp;";
+        } else if (u < 0x20 || u == 0x7f) {
+            out += "\xEF\xBF\xBD";
+        } else if (c == '\\' || c == '`' || c == '*' || c == '|' || c == '~' ||
+                   (c == '_' && !(word(i - 1) && word(i + 1))) ||
+                   (c == ']' && i + 1 < text.size() &&
+                    (text[i + 1] == '(' || text[i + 1] == '[')) ||
+                   (i == 0 && (c == '#' || c == '+' || c == '-' || c == '=' || c == '['))) {
+            // An underscore inside a word ("base_regions") and brackets not
+            // followed by a link's target ("obstacles[3]") are no markup.
+            out += '\\';
+            out += c;
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
 }  // namespace modsynth::text

@@ -93,7 +93,7 @@ TEST_CASE("fit: a curve of cusps everywhere ends, refused or fitted", "[drawing]
     CHECK_THAT(m, Catch::Contains("zigzag"));
 }
 
-TEST_CASE("import: a drawing past the primitives a task may have says so", "[drawing][fit]") {
+TEST_CASE("import: a drawing past the primitives a task may have says so", "[drawing][fit][slow]") {
     std::string lines;
     for (int i = 0; i < 5001; ++i)
         lines += "<line x1=\"" + std::to_string(i % 90) + "\" y1=\"" + std::to_string(i / 90) +

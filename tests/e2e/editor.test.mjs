@@ -21,7 +21,7 @@ const CHROMIUM = "/usr/bin/chromium";
 // machine's closed network refuses every call.
 const CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                         "--disable-component-update", "--disable-sync", "--no-first-run"];
-const WHOLE_RUN_MS = 150_000;
+const WHOLE_RUN_MS = 240_000;
 const SOLVE_MS = 60_000;
 const EXPLAIN_MS = 90_000;
 
@@ -145,7 +145,52 @@ async function firstUser(url) {
   await page.waitForSelector('body[data-synthesis="solved"]', { timeout: SOLVE_MS });
   await watchRobotMove(page, opened);
   await checkFigures(page);
+  await checkSteps(page);
   await page.screenshot({ path: path.join(outDir, "e2e-editor-solved.png") });
+  await page.context().close();
+}
+
+/// A finished solve shows every step done and a full bar, however little
+/// of its time limit it used.
+async function checkSteps(page) {
+  const steps = await page.$$eval("#run-steps li", (items) => items.map((e) => [e.dataset.step, e.className]));
+  check(steps.length >= 5 && steps.every(([, c]) => c === "done"), "every step is done: " + JSON.stringify(steps));
+  const share = await page.$eval("#run-meter", (e) => +e.dataset.share);
+  const bar = await page.$eval("#run-bar", (e) => e.getBoundingClientRect().width / e.parentElement.getBoundingClientRect().width);
+  check(share === 1 && bar > 0.99, `the bar is full when the solve is done (${bar.toFixed(2)})`);
+}
+
+/// The example solved, as the README shows it; then another example loaded
+/// takes the result away (its figures, downloads and report), so that no
+/// download is about a task no longer on the page.
+async function resultFollowsTheTask(url) {
+  const page = await openEditor(url);
+  await page.click("#example");
+  await page.waitForSelector('body[data-validity="valid"]', { timeout: 10_000 });
+  await page.click("#synthesize");
+  await page.waitForSelector('body[data-synthesis="solved"]', { timeout: SOLVE_MS });
+  await page.waitForSelector("#summary-links", { timeout: 10_000 });
+  const frame = await (await page.waitForSelector("#report")).contentFrame();
+  await frame.waitForSelector("#robot .link", { state: "attached", timeout: 10_000 });
+  await page.waitForTimeout(1500);  // the arm a little way along the path
+  await page.screenshot({ path: path.join(outDir, "editor-result.png") });
+  check((await page.$$("#downloads a")).length >= 4, "the result offers its downloads");
+
+  await loadFile(page, path.join(root, "tasks/infeasible/ring-around-path.task.json"));
+  await page.waitForFunction(() => document.getElementById("downloads").children.length === 0, null, { timeout: 5_000 })
+    .catch(() => {});
+  check((await page.$$("#downloads a")).length === 0, "another task takes the downloads away");
+  check((await text(page, "#result-summary")).trim() === "", "... and the figures");
+  check(await page.$eval("#tab-result", (e) => e.disabled), "... and the Result tab");
+  check(!(await page.isVisible("#run-box")), "... and the finished run");
+  check((await page.evaluate(() => window.modsynth.store.solution)) === null, "... and the solution");
+  await page.screenshot({ path: path.join(outDir, "editor-after-load.png") });
+  // An edit does the same.
+  await page.click("#example");
+  await page.click("#synthesize");
+  await page.waitForSelector('body[data-synthesis="solved"]', { timeout: SOLVE_MS });
+  await page.evaluate(() => { const m = window.modsynth.model; m.load({ ...m.doc, name: "renamed" }); });
+  check((await page.$$("#downloads a")).length === 0, "an edit takes the result away too");
   await page.context().close();
 }
 
@@ -250,6 +295,26 @@ async function proofDrawn(url) {
   check((await page.$$("#canvas .wall-cycle")).length === 1, "the polygon through the wall's centres is drawn");
   check((await page.$$("#canvas .proof-point")).length >= 1, "the path point behind the wall is marked");
   check(/wall/.test(await text(page, "#proof-note")), "the panel says what the red drawing is");
+  check((await page.$$("#proof-note")).length === 1, "one proof note");
+  // The message is said once, in the explanation (not again in the figures).
+  const message = await text(page, "#explanation-message");
+  const said = await page.evaluate((m) => [...document.querySelectorAll("#run-box *")]
+    .filter((e) => e.children.length === 0 && e.textContent.includes(m.slice(0, 40))).length, message);
+  check(said === 1, `the explanation is printed once (${said} times)`);
+  // The parts in conflict are named round the ring, no two labels overlapping.
+  const labels = await page.$$eval("#canvas .core-label", (ts) => ts.map((t) => {
+    const b = t.getBBox();
+    return { part: t.dataset.part, x: b.x, y: b.y, w: b.width, h: b.height };
+  }));
+  check(labels.length >= 12, `a label per part in conflict (${labels.length})`);
+  const overlapping = [];
+  for (let i = 0; i < labels.length; ++i) {
+    for (let j = i + 1; j < labels.length; ++j) {
+      const a = labels[i], b = labels[j];
+      if (a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h) overlapping.push(a.part + "/" + b.part);
+    }
+  }
+  check(overlapping.length === 0, "no two conflict labels overlap: " + overlapping.join(", "));
   await page.screenshot({ path: path.join(outDir, "e2e-editor-wall.png") });
 
   await loadFile(page, path.join(root, "tasks/infeasible/long-wall.task.json"));
@@ -300,16 +365,20 @@ async function editAndCancel(url) {
   check((await page.evaluate(() => document.body.dataset.synthesis)) === "running", "the solve runs on");
   // The clock shows the elapsed time and advances while the solve runs.
   const clock = async () => {
-    const m = /^([0-9.]+) s of at most/.exec(await text(page, "#run-clock"));
+    const m = /^([0-9.]+) s \(time limit [0-9.]+ s\)$/.exec(await text(page, "#run-clock"));
     return m ? parseFloat(m[1]) : null;
   };
   const first = await clock();
   check(first !== null, "live progress shows the elapsed time: " + (await text(page, "#run-clock")));
   const advanced = await page.waitForFunction((t0) => {
-    const m = /^([0-9.]+) s of at most/.exec(document.getElementById("run-clock").textContent);
+    const m = /^([0-9.]+) s/.exec(document.getElementById("run-clock").textContent);
     return m && parseFloat(m[1]) >= t0 + 0.5;
   }, first ?? 0, { timeout: 5_000 }).then(() => true, () => false);
   check(advanced, "the elapsed time advances while the solve runs");
+  // Progress is the pipeline's steps, not the time used: one under way.
+  const steps = await page.$$eval("#run-steps li", (items) => items.map((e) => e.className));
+  check(steps.filter((c) => c === "current").length === 1 && steps.length >= 5,
+        "one step is under way: " + steps.join(" "));
   const id = await page.evaluate(() => document.body.dataset.jobId);
   await page.click("#cancel");
   await page.waitForSelector('body[data-synthesis="cancelled"]', { timeout: 5_000 });
@@ -445,7 +514,8 @@ async function main() {
   try {
     const url = await startServer();
     browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_FLAGS });
-    for (const [name, run] of [["draw, synthesize, animate", firstUser], ["infeasible core", infeasibleTask],
+    for (const [name, run] of [["draw, synthesize, animate", firstUser], ["the result follows the task", resultFollowsTheTask],
+                               ["infeasible core", infeasibleTask],
                                ["the proof drawn", proofDrawn],
                                ["edit and cancel", editAndCancel], ["drawing import", drawingImport]]) {
       const started = Date.now();

@@ -26,7 +26,7 @@ const CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--use-gl=angle", "--use-a
                         "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist",
                         "--disable-background-networking", "--disable-component-update",
                         "--disable-sync", "--no-first-run"];
-const WHOLE_RUN_MS = 240_000;
+const WHOLE_RUN_MS = 360_000;
 const SOLVE_MS = 60_000;
 const EXPLAIN_MS = 90_000;
 // Any other wait: long enough for a machine busy with other work, where
@@ -314,6 +314,39 @@ async function dropOnPlane(page) {
   await page.screenshot({ path: path.join(outDir, "e2e-editor3d-drop.png") });
 }
 
+// ------------------------------------------------------ views and proofs
+
+/// A drawing on a plane tilted by 30 degrees is seen face-on when opened.
+async function tiltedFaceOn(page) {
+  await page.selectOption("#example3d", "tilted-plane-drawing");
+  await page.waitForFunction(() => window.modsynth.model.doc.name === "tilted-plane-drawing", null, { timeout: WAIT_MS });
+  await page.click("#fit");
+  const frame = await page.evaluate(() => window.modsynth.view3d.state.frame);
+  const n = [-0.5, 0, Math.sqrt(0.75)];
+  const cos = frame.direction.reduce((s, v, i) => s + v * n[i], 0);
+  check(cos > Math.cos(25 * Math.PI / 180), `the tilted drawing is seen within 25 degrees of face-on (${(Math.acos(cos) * 180 / Math.PI).toFixed(1)})`);
+  await page.screenshot({ path: path.join(outDir, "e2e-editor3d-tilted.png") });
+}
+
+/// A base in a closed box: the wall's proof drawn as its cells, said once,
+/// in the words of a wall (not of a reach proof).
+async function wallExplained(page) {
+  const walled = JSON.parse(fs.readFileSync(path.join(root, "tasks/spatial/infeasible/walled.task.json"), "utf8"));
+  await page.evaluate((d) => window.modsynth.loadDocument(d), walled);
+  await valid(page);
+  await page.click("#synthesize");
+  await page.waitForSelector("#proof-note", { timeout: SOLVE_MS });
+  const note = await text(page, "#proof-note");
+  check(/cells it closes in/.test(note) && !/out of reach|dashed/.test(note), "the note speaks of the wall: " + note);
+  check((await page.$$("#proof-note")).length === 1, "one proof note");
+  check((await page.evaluate(() => window.modsynth.proofLines())).length === 0, "no reach line is drawn for a wall");
+  await page.waitForFunction(() => window.modsynth.view3d.state.enclosureCells > 0, null, { timeout: WAIT_MS });
+  const cells = (await view(page)).enclosureCells;
+  check(cells > 100, `the wall's cells are drawn (${cells})`);
+  await page.waitForSelector('body[data-synthesis="infeasible"]', { timeout: EXPLAIN_MS });
+  await page.screenshot({ path: path.join(outDir, "e2e-editor3d-wall.png") });
+}
+
 // ------------------------------------------------------------------- main
 
 async function main() {
@@ -330,7 +363,8 @@ async function main() {
     const page = await openEditor(url);
     for (const [name, run] of [["a task in space from the example", buildFromExample], ["edit by number", editByNumber],
                                ["edit by drag", editByDrag], ["synthesize and animate", synthesize],
-                               ["out of reach, explained", outOfReach], ["a drawing on a plane", dropOnPlane]]) {
+                               ["out of reach, explained", outOfReach], ["a drawing seen face-on", tiltedFaceOn],
+                               ["a wall, explained", wallExplained], ["a drawing on a plane", dropOnPlane]]) {
       const started = Date.now();
       try {
         await run(page);

@@ -25,7 +25,8 @@ bool names(const std::vector<task::TaskPart>& core, const std::string& part) {
 
 }  // namespace
 
-TEST_CASE("explain proves a planted unreachable spatial task with its core", "[explain][spatial]") {
+TEST_CASE("explain proves a planted unreachable spatial task with its core",
+          "[explain][spatial][slow]") {
     const task::SpatialTask task = fixture("sir-0001.task.json");
     const auto expect =
         testing::read_json(testing::source_path("tests/fixtures/spatial/sir-0001.expect.json"));
@@ -84,7 +85,7 @@ TEST_CASE("explain solves a feasible spatial task instead", "[explain][spatial]"
 }
 
 TEST_CASE("explain opens a wall in space: an obstacle removed or moved, the path moved",
-          "[explain][spatial]") {
+          "[explain][spatial][slow]") {
     const task::SpatialTask task =
         io::load_spatial_task(testing::source_path("tasks/spatial/infeasible/walled.task.json"));
     const auto proof = explanation::prove_infeasible(task, 10.0);

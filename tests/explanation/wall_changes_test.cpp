@@ -1,11 +1,13 @@
 #include <modsynth/explanation/explanation.h>
 #include <modsynth/explanation/wall_changes.h>
+#include <modsynth/geometry/distance.h>
 #include <modsynth/io/task_io.h>
 #include <modsynth/prove/no_go.h>
 #include <modsynth/prove/obstacle_proof.h>
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <string>
 
 #include "../support/fixtures.h"
@@ -53,18 +55,37 @@ TEST_CASE("every change offered against a wall or a detour breaks its proof", "[
                 CHECK_FALSE(prove::prove_obstacle_infeasible(c.changed));
             }
         }
-        // Removal: the smallest obstacle of the core whose removal breaks it.
+        // Removal: the obstacle of the core nearest the straight way from the
+        // base region to the path point kept out whose removal breaks it
+        // (the wall opens where the arm would pass); among as near, the
+        // smallest.
         const auto& removal = kinds[0].at(0);
         CHECK(removal.change.rfind("remove " + task::to_string(removal.part), 0) == 0);
         const int k = index_in(removal.part);
         CHECK(removal.changed.obstacles.size() + 1 == t.obstacles.size());
+        const auto off_the_way = [&](int i) {
+            double near = 1e300;
+            const auto way = [&](int region, const geometry::Vec2& point) {
+                const auto& r = t.base_regions[region];
+                near = std::min(near, geometry::point_segment(t.obstacles[i].center,
+                                                              0.5 * (r.min + r.max), point));
+            };
+            if (proof->separation)
+                for (const auto& w : proof->separation->walls) way(w.base_region, w.point);
+            if (proof->geodesic)
+                for (const auto& d : proof->geodesic->detours) way(d.base_region, d.point);
+            return std::round(near * 1000.0);
+        };
         for (const auto& part : proof->core) {
             if (part.kind() != task::TaskPart::Kind::Obstacle) continue;
             const int i = index_in(part);
-            if (t.obstacles[i].radius >= t.obstacles[k].radius) continue;
+            const bool before =
+                off_the_way(i) < off_the_way(k) ||
+                (off_the_way(i) == off_the_way(k) && t.obstacles[i].radius < t.obstacles[k].radius);
+            if (!before) continue;
             task::Task without = t;
             without.obstacles.erase(without.obstacles.begin() + i);
-            CHECK(prove::prove_obstacle_infeasible(without));  // a smaller one would not do
+            CHECK(prove::prove_obstacle_infeasible(without));  // one nearer would not do
         }
         // Widening: the gap is at least the tube (plus the margin) afterwards,
         // and what it asks for is needed: half the move leaves the proof.

@@ -65,6 +65,22 @@ TEST_CASE("the program finds its catalog", "[hardware]") {
     CHECK(load_default_catalog().actuators.size() >= 6);
 }
 
+TEST_CASE("a library tells where its catalog lies, and can go back", "[hardware]") {
+    const std::string shipped = default_catalog_folder();
+    const auto folder = std::filesystem::temp_directory_path() / "modsynth-given-catalog";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "test.json") << actuator_file(kGood);
+    set_default_catalog_folder(folder.string());
+    CHECK(default_catalog_folder() == folder.string());
+    const Catalog given = load_default_catalog();
+    REQUIRE(given.actuators.size() == 1);
+    CHECK(given.actuator("T-1") != nullptr);
+    set_default_catalog_folder("");
+    CHECK(default_catalog_folder() == shipped);
+    CHECK(load_default_catalog().actuator("T-1") == nullptr);
+    std::filesystem::remove_all(folder);
+}
+
 TEST_CASE("catalog errors name the file and the entry", "[hardware]") {
     Catalog c;
     parse_catalog_file(actuator_file(kGood), "good.json", c);

@@ -61,8 +61,11 @@ TEST_CASE("every invalid fixture is rejected naming its part", "[task]") {
             const InputError e = input_error([&] { modsynth::io::load_task(dir + file); });
             CHECK(e.part() == want.at("part").get<std::string>());
             CHECK_THAT(e.what(), Contains(want.at("message_contains").get<std::string>()));
-            // what() is "PART: problem" so a user sees where to look.
-            CHECK_THAT(e.what(), Catch::Matchers::StartsWith(e.part() + ": "));
+            // what() is "FILE: PART: problem" so a user sees where to look.
+            CHECK(e.file() == dir + file);
+            // (The whole document is named by its file alone.)
+            const std::string where = e.part() == "(document)" ? "" : e.part() + ": ";
+            CHECK_THAT(e.what(), Catch::Matchers::StartsWith(e.file() + ": " + where));
             // Messages are short, printable UTF-8 and say things once,
             // whatever bytes or numbers the task holds.
             const std::string what = e.what();

@@ -1,10 +1,12 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <regex>
+#include <set>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -285,4 +287,71 @@ TEST_CASE("a solved or front-stage-infeasible report has no proof layer", "[outp
         has(html_report(task, testing::two_joint_solution(task), ReportFigures{}), "id=\"proof\""));
     CHECK_FALSE(has(html_report(task, testing::infeasible_solution(task), ReportFigures{}),
                     "id=\"proof\""));
+}
+
+namespace {
+
+/// Hue (degrees), saturation and value of "#rrggbb".
+std::array<double, 3> hsv(const std::string& hex) {
+    unsigned r = 0, g = 0, b = 0;
+    std::sscanf(hex.c_str(), "#%02x%02x%02x", &r, &g, &b);
+    const double R = r / 255.0, G = g / 255.0, B = b / 255.0;
+    const double hi = std::max({R, G, B}), lo = std::min({R, G, B}), d = hi - lo;
+    double h = 0.0;
+    if (d > 0.0) {
+        if (hi == R)
+            h = 60.0 * std::fmod((G - B) / d + 6.0, 6.0);
+        else if (hi == G)
+            h = 60.0 * ((B - R) / d + 2.0);
+        else
+            h = 60.0 * ((R - G) / d + 4.0);
+    }
+    return {h, hi > 0.0 ? d / hi : 0.0, hi};
+}
+
+}  // namespace
+
+TEST_CASE("the path's colours mean nothing else: no red, green or grey among them", "[output]") {
+    // Ten primitives, the whole palette, in a report with a core (red) shown.
+    auto task = testing::two_joint_task();
+    while (task.trajectory.size() < 10) {
+        const modsynth::geometry::Vec2 end = task.trajectory.back().end;
+        task.trajectory.push_back(
+            modsynth::geometry::make_line(end, end + modsynth::geometry::Vec2(0.0, 0.01)));
+    }
+    const std::string html = html_report(task, testing::infeasible_solution(task), ReportFigures{});
+    const std::regex swatch("class=\"swatch\" style=\"background:(#[0-9a-f]{6})\"");
+    std::set<std::string> colours;
+    for (auto it = std::sregex_iterator(html.begin(), html.end(), swatch);
+         it != std::sregex_iterator(); ++it)
+        colours.insert((*it)[1]);
+    CHECK(colours.size() == 10);
+    for (const std::string& c : colours) {
+        const auto [h, s, v] = hsv(c);
+        INFO(c << ": hue " << h << ", saturation " << s << ", value " << v);
+        CHECK(s > 0.3);  // not grey (the arm, base regions)
+        // Not red (obstacles, a core): a dark, dull red is brown, no red.
+        CHECK_FALSE(((h < 20.0 || h > 340.0) && s > 0.5 && v > 0.6));
+        CHECK_FALSE((h > 95.0 && h < 160.0));  // not green (a wall's cells)
+    }
+}
+
+TEST_CASE("the timing charts' curves are not styled as the robot's joints", "[output]") {
+    const auto task = testing::two_joint_task();
+    // A timed motion (rates and accelerations), which the charts draw.
+    auto solution = testing::two_joint_solution(task);
+    for (std::size_t i = 0; i < solution.samples.size(); ++i) {
+        auto& x = solution.samples[i];
+        x.qd.assign(x.q.size(), 0.1 * std::sin(0.01 * static_cast<double>(i)));
+        x.qdd.assign(x.q.size(), 0.1 * std::cos(0.01 * static_cast<double>(i)));
+    }
+    const std::string html = html_report(task, solution, ReportFigures{});
+    // Four charts of the two joints, and the tool's speed.
+    CHECK(count(html, "<polyline class=\"joint-curve\"") == 9);
+    CHECK(count(html, "<polyline class=\"joint\"") == 0);
+    // The rules for the arm's circles apply inside the robot alone.
+    CHECK_FALSE(has(html, "\n.joint {"));
+    CHECK(has(html, "#robot .joint {"));
+    CHECK(has(html, ".chart polyline { fill: none; }"));
+    CHECK(has(html, "<li data-joint=\"1\"><span class=\"swatch\""));
 }

@@ -213,9 +213,9 @@ TEST_CASE("the build sheet of an infeasible spatial task says why, and export wr
     const synth::Solution s = walled_solution(c.task);
     const std::string sheet = output::build_sheet(c.task, s);
     CHECK(has(sheet, "No arm to build: the task is infeasible"));
-    CHECK(has(sheet, "## Why\n\n" + text::markdown_literal(s.explanation.message)));
+    CHECK(has(sheet, "## Why\n\n" + text::markdown_text(s.explanation.message)));
     CHECK(has(sheet, "- `obstacles[0]`"));
-    CHECK(has(sheet, "- Obstacles 0 close a shell round base_regions[0]"));
+    CHECK(has(sheet, "- Obstacles 0 close in base_regions[0]; the path, "));
     // Unknown: said so, without claiming a proof.
     synth::Solution u;
     u.status = synth::Status(synth::Status::Kind::Unknown);

@@ -78,7 +78,12 @@ TEST_CASE("a base region inside a closed box of boxes is walled off, with all si
     CHECK(std::exp2(std::round(std::log2(w.grid.cell))) == w.grid.cell);
     for (int a = 0; a < 3; ++a) CHECK(std::fmod(w.grid.origin[a], w.grid.cell) == 0.0);
     CHECK(!w.cells.empty());
-    CHECK(proof->message.find("close a shell round base_regions[0]") != std::string::npos);
+    CHECK(proof->message.find("close in base_regions[0], and the path (") != std::string::npos);
+    CHECK(proof->message.find("no arm from the base box can reach round them") !=
+          std::string::npos);
+    // In a builder's words: the grid is the witness's, not the sentence's.
+    CHECK(proof->message.find("cells") == std::string::npos);
+    CHECK(proof->message.find("link_diameter / 2") == std::string::npos);
 }
 
 TEST_CASE("a path inside a closed shell of spheres is walled off from the base",

@@ -83,7 +83,9 @@ TEST_CASE("a solution file that contradicts the exit code, or is unreadable, is 
                "{\"format\": \"modsynth-solution/1\", \"status\": \"maybe\"}");
     const app::SolveOutcome unreadable = run.ended(app::kUnknown);
     CHECK(unreadable.status == RunStatus::Failure::Error);
-    CHECK_THAT(unreadable.message, Contains("cannot be read: status: expected"));
+    // The message names the file it is about.
+    CHECK_THAT(unreadable.message,
+               Contains("cannot be read: " + run.job.solution_path + ": status: expected"));
 }
 
 TEST_CASE("a run's name is its task's, or the file's stem when the task is invalid", "[app]") {

@@ -152,7 +152,7 @@ TEST_CASE("front stage stops at its deadline, in encoding or in a check", "[smt]
     CHECK_THAT(fs.reason_unknown(), Catch::Matchers::Contains("time limit"));
 }
 
-TEST_CASE("front stage on a long path keeps the span of its widest pair", "[smt]") {
+TEST_CASE("front stage on a long path keeps the span of its widest pair", "[smt][slow]") {
     // 200 primitives (past the all-pairs threshold) spanning 3 m: with links
     // of at most 0.7 m no base reaches both ends.
     task::Task t = many_lines(200, -1.5, 3.0);

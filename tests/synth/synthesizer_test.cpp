@@ -320,7 +320,7 @@ TEST_CASE("a circle round a post rules out 2 joints at once, and 3 joints trace 
 }
 
 TEST_CASE("2 joints proved impossible by the branch and bound are not retried",
-          "[synth][branch_and_bound]") {
+          "[synth][branch_and_bound][slow]") {
     // A base inside a ring of posts with one opening (scripts/keyhole-tasks):
     // no 2-joint arm reaches out, 3 joints do. With refinements cut to one
     // iteration nothing is certified in the first pass, and the retries

@@ -104,3 +104,19 @@ TEST_CASE("a list of parts for a person says a run of primitives by its ends", "
           "trajectory[7].normal");
     CHECK(task::to_short_list({}).empty());
 }
+
+TEST_CASE("a run of obstacles is said by its ends, as a run of primitives", "[task]") {
+    std::vector<TaskPart> core = {TaskPart::trajectory(0)};
+    for (int i = 0; i < 80; ++i) core.push_back(TaskPart::obstacle(i));
+    core.push_back(TaskPart::base_regions());
+    CHECK(task::to_short_list(core) == "trajectory[0] obstacles[0] to obstacles[79] base_regions");
+    const auto runs = task::part_runs(core);
+    REQUIRE(runs.size() == 3);
+    CHECK(runs[1].first == 1);
+    CHECK(runs[1].size() == 80);
+    CHECK(task::run_text(core, runs[1]) == "obstacles[0] to obstacles[79]");
+    // A gap ends a run; two in a row are both said.
+    CHECK(task::to_short_list({TaskPart::obstacle(0), TaskPart::obstacle(1), TaskPart::obstacle(2),
+                               TaskPart::obstacle(5), TaskPart::obstacle(6)}) ==
+          "obstacles[0] to obstacles[2] obstacles[5] obstacles[6]");
+}

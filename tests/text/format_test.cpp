@@ -7,6 +7,7 @@
 
 using modsynth::text::format;
 using modsynth::text::markdown_literal;
+using modsynth::text::markdown_text;
 
 TEST_CASE("format writes printf patterns of any length") {
     CHECK(format("%d links, %.3f m", 3, 1.5) == "3 links, 1.500 m");
@@ -41,4 +42,17 @@ TEST_CASE("markdown_literal shows markup as the characters it is") {
     CHECK(markdown_literal("a|b") == "a\\|b");
     // Bytes of UTF-8 text are kept.
     CHECK(markdown_literal("caf\xC3\xA9") == "caf\xC3\xA9");
+}
+
+TEST_CASE("markdown_text leaves a sentence readable as plain text, markup escaped") {
+    const std::string proof =
+        "Proved infeasible: obstacles 0-5 close in base_regions[0], and the path "
+        "(trajectory[0] at (0.600, 0.000, 0.200)) is outside them.";
+    CHECK(markdown_text(proof) == proof);
+    CHECK(markdown_text("a *b* `c` x|y [l](u) <i> & ~~s~~") ==
+          "a \\*b\\* \\`c\\` x\\|y [l\\](u) &lt;i&gt; &amp; \\~\\~s\\~\\~");
+    CHECK(markdown_text("_a_ snake_case") == "\\_a\\_ snake_case");
+    CHECK(markdown_text("- not a list") == "\\- not a list");
+    CHECK(markdown_text("# not a heading") == "\\# not a heading");
+    CHECK(markdown_text("a\nb").find('\n') == std::string::npos);
 }

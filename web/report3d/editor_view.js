@@ -10,13 +10,15 @@
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { ViewHelper } from "three/addons/helpers/ViewHelper.js";
-import { armObjects, capsule, dhFrames, material, niceStep, origin, place, v3, webglWorks } from "./scene.js";
-import { handles3, isPoint3, namedPrimitives, obstacleKind, samplePrimitive3, spatialBounds } from "../space_geometry.js";
+import { armObjects, capsule, dhFrames, labelledAxes, material, niceStep, origin, place, v3, webglWorks, witnessCells, witnessRuns } from "./scene.js";
+import { handles3, isPoint3, mid, namedPrimitives, obstacleKind, samplePrimitive3, spatialBounds } from "../space_geometry.js";
+import { frameDistance, viewFrame } from "./view_frame.js";
 
 const CORE = 0xd00000;
 const SELECTED = 0x2f6fb3;
 const ERROR = 0xff8c00;
 const OBSTACLE = 0xe45756;
+const OTHER_OBSTACLE = 0xb0b0b0;  // not in a core that is shown: red means "in conflict" then
 export const AXES = { x: [1, 0, 0], y: [0, 1, 0], z: [0, 0, 1] };
 const AXIS_COLOURS = { x: 0xd62728, y: 0x2ca02c, z: 0x1f77b4 };
 const DRAG_PIXELS = 5;        // a press that moves further is a drag, not a click
@@ -78,6 +80,7 @@ export class EditorView3D {
     this.activeKey = null;
     this.drag = null;
     this.motion = null;
+    this.wall = new Set();  // the obstacles of a wall whose cells are drawn
     if (!webglWorks()) {
       this.state.error = "no WebGL";
       host.textContent = "The 3-D view needs WebGL, which this browser does not offer; the part list edits the task.";
@@ -159,31 +162,33 @@ export class EditorView3D {
     this.draw();
   }
 
-  /// The camera looks at the whole work from the front right, above; the
-  /// grid lies under it.
+  /// The camera looks at the work (view_frame.js): a drawing on a plane
+  /// face-on from the base's side, anything else from the front right,
+  /// above; the grid lies under it.
   fit() {
     if (!this.renderer || !this.doc) return;
     const b = spatialBounds(this.doc) || { min: [-0.5, -0.5, 0], max: [0.5, 0.5, 0.5] };
-    const lo = v3(b.min), hi = v3(b.max);
-    const centre = lo.clone().add(hi).multiplyScalar(0.5);
-    this.size = Math.max(hi.clone().sub(lo).length(), 0.1);
+    const path = namedPrimitives(this.doc).flatMap(({ primitive }) => samplePrimitive3(primitive));
+    const regions = (Array.isArray(this.doc.base_regions) ? this.doc.base_regions : []).filter((r) => r && isPoint3(r.min) && isPoint3(r.max));
+    const frame = viewFrame(path, [b.min, b.max], regions.length ? mid(regions[0].min, regions[0].max) : null);
+    const centre = v3(frame.centre);
+    this.size = 2 * frame.radius;
     const size = this.size;
     this.camera.near = size / 500;
     this.camera.far = size * 200;
-    this.camera.position.copy(centre).add(new THREE.Vector3(0.9, -1.6, 0.9).multiplyScalar(size));
+    this.camera.position.copy(centre).addScaledVector(v3(frame.direction), frameDistance(frame.radius, this.camera.fov, this.camera.aspect, 1.35));
     this.camera.updateProjectionMatrix();
     this.controls.target.copy(centre);
     this.controls.update();
+    this.state.frame = frame;
     dispose(this.floor);
     const step = niceStep(size);
-    const cells = Math.ceil(size * 2 / step);
+    const cells = Math.ceil(size * 2.4 / step);
     const grid = new THREE.GridHelper(cells * step, cells, 0x9a9a9a, 0xdddddd);
     grid.rotation.x = Math.PI / 2;
-    grid.position.set(Math.round(centre.x / step) * step, Math.round(centre.y / step) * step, Math.min(0, lo.z));
+    grid.position.set(Math.round(centre.x / step) * step, Math.round(centre.y / step) * step, Math.min(0, b.min[2]));
     this.floor.add(grid);
-    const axes = new THREE.AxesHelper(step);
-    axes.position.set(0, 0, Math.min(0, lo.z));
-    this.floor.add(axes);
+    this.floor.add(labelledAxes(new THREE.Vector3(0, 0, Math.min(0, b.min[2])), step));
     this.framed = true;
     this.stale = true;
     this.draw();
@@ -227,7 +232,11 @@ export class EditorView3D {
     (Array.isArray(doc.obstacles) ? doc.obstacles : []).forEach((o, i) => {
       const part = `obstacles[${i}]`, kind = obstacleKind(o);
       const core = m.inCore(part), selected = part === m.selection, bad = m.hasError(part);
-      const mat = material(core ? CORE : selected ? SELECTED : bad ? ERROR : OBSTACLE, core || selected ? 0.7 : 0.45);
+      // A wall's obstacles are faint, so that the cells they close in show
+      // through in their own colour; outlined in red.
+      const inWall = this.wall.has(i);
+      const colour = core ? CORE : selected ? SELECTED : bad ? ERROR : m.coreShown ? OTHER_OBSTACLE : OBSTACLE;
+      const mat = material(colour, inWall ? 0.12 : core || selected ? 0.7 : 0.45);
       let mesh = null;
       if (kind === "sphere" && isPoint3(o.center) && o.radius > 0) {
         mesh = new THREE.Mesh(new THREE.SphereGeometry(o.radius, 32, 16), mat);
@@ -245,6 +254,11 @@ export class EditorView3D {
             this.task.add(tag(edges, part));
           }
         }
+      }
+      if (mesh && inWall && mesh.geometry) {
+        const edges = new THREE.LineSegments(new THREE.EdgesGeometry(mesh.geometry, 30), new THREE.LineBasicMaterial({ color: CORE }));
+        edges.position.copy(mesh.position);
+        this.task.add(tag(edges, part));
       }
       if (mesh) { this.task.add(tag(mesh, part)); ++count; }
     });
@@ -416,9 +430,12 @@ export class EditorView3D {
 
   // -------------------------------------------------------------- the proof
 
-  /// Dashed red lines from a base box to what it cannot reach, with their
-  /// ends marked: [{from, to}].
-  setProof(lines) {
+  /// The proof drawn over the task: for a primitive out of reach, dashed
+  /// red lines from a base box to what it cannot reach, with their ends
+  /// marked ([{from, to}]); for a wall, its enclosed cells, each a green
+  /// cube (formats.md "explanation.enclosure"), and a red ring at the point
+  /// kept out.
+  setProof(lines, enclosure = null) {
     if (!this.renderer) return;
     dispose(this.proof);
     for (const { from, to } of lines || []) {
@@ -432,6 +449,20 @@ export class EditorView3D {
         this.proof.add(dot);
       }
     }
+    const walls = enclosure && Array.isArray(enclosure.walls) ? enclosure.walls : [];
+    this.wall = new Set(walls.flatMap((w) => w.obstacles || []));
+    this.state.enclosureCells = 0;
+    for (const w of walls) {
+      const { object, cells } = witnessCells(witnessRuns(w));
+      this.proof.add(object);
+      this.state.enclosureCells += cells;
+      if (isPoint3(w.point)) {
+        const ring = new THREE.Mesh(new THREE.TorusGeometry(this.size * 0.02, this.size * 0.004, 8, 32), new THREE.MeshBasicMaterial({ color: CORE }));
+        ring.position.copy(v3(w.point));
+        this.proof.add(ring);
+      }
+    }
+    this.stale = true;
     this.draw();
   }
 

@@ -96,7 +96,8 @@ export function armObjects(robot, scene) {
   const r = robot.D / 2;
   const linkMat = material(0x3a3a44, 1);
   const toolMat = material(0x111111, 1);
-  const moduleMat = material(0xcc3326, 0.85);
+  // Slate: red is the obstacles' and a conflict's colour in these views.
+  const moduleMat = material(0x5b7088, 0.9);
   const zero = robot.dh.map(() => 0);
   const count = segments(robot, dhFrames(robot, zero)).length;
   const bodies = [], caps = [];
@@ -160,4 +161,81 @@ export function niceStep(span) {
   const raw = span / 10;
   const p = Math.pow(10, Math.floor(Math.log10(raw)));
   return raw / p >= 5 ? 5 * p : raw / p >= 2 ? 2 * p : p;
+}
+
+// ------------------------------------------------------------- a wall's proof
+
+/// The colour of a wall's enclosed cells, used for nothing else in a view.
+export const WITNESS_COLOUR = 0x1a9850;
+
+/// A wall's witness (formats.md "explanation.enclosure") as boxes:
+/// [[x0, y0, z0, x1, y1, z1]], one per run of enclosed cells.
+export function witnessRuns(wall) {
+  const g = wall.grid, h = g.cell, o = g.origin;
+  return wall.cells.map(([j, k, i0, i1]) => [o[0] + h * i0, o[1] + h * j, o[2] + h * k,
+                                             o[0] + h * (i1 + 1), o[1] + h * (j + 1), o[2] + h * (k + 1)]);
+}
+
+/// The enclosed cells that face the wall (a face neighbour is not
+/// enclosed): the cells inside them add nothing to the picture. Each as
+/// its centre; `h` is the cells' side.
+export function boundaryCells(runs) {
+  if (!runs.length) return { h: 0, centres: [] };
+  const h = runs[0][4] - runs[0][1];
+  const x0 = Math.min(...runs.map((r) => r[0])), y0 = Math.min(...runs.map((r) => r[1]));
+  const z0 = Math.min(...runs.map((r) => r[2]));
+  const key = (i, j, k) => i + "," + j + "," + k;
+  const cells = new Set(), list = [];
+  for (const r of runs) {
+    const j = Math.round((r[1] - y0) / h), k = Math.round((r[2] - z0) / h);
+    const i0 = Math.round((r[0] - x0) / h), i1 = Math.round((r[3] - x0) / h) - 1;
+    for (let i = i0; i <= i1; ++i) { cells.add(key(i, j, k)); list.push([i, j, k]); }
+  }
+  const centres = [];
+  for (const [i, j, k] of list) {
+    const open = [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]
+      .some(([a, b, c]) => !cells.has(key(i + a, j + b, k + c)));
+    if (open) centres.push([x0 + (i + 0.5) * h, y0 + (j + 0.5) * h, z0 + (k + 0.5) * h]);
+  }
+  return { h, centres };
+}
+
+/// The enclosed cells of a wall as separate cubes (each shrunk, so that
+/// one cell is told from the next), shaded green; returns the group and
+/// how many cells it draws.
+export function witnessCells(runs) {
+  const { h, centres } = boundaryCells(runs);
+  const mesh = new THREE.InstancedMesh(new THREE.BoxGeometry(h * 0.72, h * 0.72, h * 0.72),
+    new THREE.MeshStandardMaterial({ color: WITNESS_COLOUR, roughness: 0.7, metalness: 0 }), Math.max(centres.length, 1));
+  const m = new THREE.Matrix4();
+  centres.forEach((c, i) => { m.makeTranslation(c[0], c[1], c[2]); mesh.setMatrixAt(i, m); });
+  mesh.count = centres.length;
+  return { object: mesh, cells: centres.length };
+}
+
+// ------------------------------------------------------------------ the axes
+
+/// The task frame's axes at `at`, `length` long, in dark grey with their
+/// letters (red, green and blue mean other things in these views).
+export function labelledAxes(at, length) {
+  const group = new THREE.Group();
+  const mat = new THREE.LineBasicMaterial({ color: 0x555555 });
+  for (const [name, d] of [["x", [1, 0, 0]], ["y", [0, 1, 0]], ["z", [0, 0, 1]]]) {
+    const end = v3(d).multiplyScalar(length);
+    group.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(), end]), mat));
+    const canvas = document.createElement("canvas");
+    canvas.width = canvas.height = 64;
+    const g = canvas.getContext("2d");
+    g.fillStyle = "#555";
+    g.font = "bold 44px sans-serif";
+    g.textAlign = "center";
+    g.textBaseline = "middle";
+    g.fillText(name, 32, 34);
+    const sprite = new THREE.Sprite(new THREE.SpriteMaterial({ map: new THREE.CanvasTexture(canvas), depthTest: false }));
+    sprite.position.copy(end.multiplyScalar(1.12));
+    sprite.scale.setScalar(length * 0.22);
+    group.add(sprite);
+  }
+  group.position.copy(at);
+  return group;
 }

@@ -6,7 +6,8 @@
 // three.js into one script that the report carries inline.
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
-import { armObjects, capsule, dhFrames, material, niceStep, origin, v3, webglWorks } from "./scene.js";
+import { armObjects, capsule, dhFrames, labelledAxes, material, niceStep, origin, v3, webglWorks, witnessCells } from "./scene.js";
+import { frameDistance, framedPoints, viewFrame } from "./view_frame.js";
 
 const $ = (id) => document.getElementById(id);
 // What a browser test reads: whether the view drew, and how to move it.
@@ -15,8 +16,11 @@ window.modsynthView = state;
 
 // ------------------------------------------------------------------ the task
 
-function taskObjects(task, scene, size) {
+function taskObjects(task, scene, size, wall) {
   const core = 0xd00000;
+  // With a core shown, red means "in conflict": the other obstacles are grey.
+  const hasCore = task.prims.some((p) => p.core) || task.obstacles.some((o) => o.core) ||
+    task.regions.some((r) => r.core);
   for (const p of task.prims) {
     const pts = p.pts.map(v3);
     const path = new THREE.CurvePath();
@@ -34,21 +38,32 @@ function taskObjects(task, scene, size) {
     start.position.copy(v3(task.prims[0].pts[0]));
     scene.add(start);
   }
-  for (const o of task.obstacles) {
-    const mat = material(o.core ? core : 0xe45756, 0.55);
+  task.obstacles.forEach((o, i) => {
+    // A wall's obstacles are drawn faint, outlined, so that the cells they
+    // close in show through in their own colour.
+    const inWall = wall.has(i);
+    const mat = material(o.core ? core : hasCore ? 0xb0b0b0 : 0xe45756, inWall ? 0.12 : 0.55);
+    let geometry = null, at = null;
     if (o.type === "sphere") {
-      const m = new THREE.Mesh(new THREE.SphereGeometry(o.r, 32, 16), mat);
-      m.position.copy(v3(o.c));
-      scene.add(m);
+      geometry = new THREE.SphereGeometry(o.r, 32, 16);
+      at = v3(o.c);
     } else if (o.type === "capsule") {
       scene.add(capsule(v3(o.a), v3(o.b), o.r, mat));
     } else {
       const lo = v3(o.min), hi = v3(o.max);
-      const m = new THREE.Mesh(new THREE.BoxGeometry(hi.x - lo.x, hi.y - lo.y, hi.z - lo.z), mat);
-      m.position.copy(lo).add(hi).multiplyScalar(0.5);
-      scene.add(m);
+      geometry = new THREE.BoxGeometry(hi.x - lo.x, hi.y - lo.y, hi.z - lo.z);
+      at = lo.clone().add(hi).multiplyScalar(0.5);
     }
-  }
+    if (!geometry) return;
+    const m = new THREE.Mesh(geometry, mat);
+    m.position.copy(at);
+    scene.add(m);
+    if (inWall) {
+      const edges = new THREE.LineSegments(new THREE.EdgesGeometry(geometry, 30), new THREE.LineBasicMaterial({ color: core }));
+      edges.position.copy(at);
+      scene.add(edges);
+    }
+  });
   for (const r of task.regions) {
     const lo = v3(r.min), hi = v3(r.max);
     const s = hi.clone().sub(lo).max(new THREE.Vector3(1e-4, 1e-4, 1e-4));
@@ -64,48 +79,50 @@ function taskObjects(task, scene, size) {
   }
 }
 
-/// A wall's witness: the enclosed cells (runs of grid cells, as boxes) in
-/// translucent green, the wall's obstacles outlined in black, and the side
-/// kept out marked by a black ring round the path point or the base region.
-function enclosureObjects(walls, task, scene, size) {
-  const cellMat = new THREE.MeshBasicMaterial({ color: 0x1a9850, transparent: true, opacity: 0.18, depthWrite: false });
+/// A wall's witness: the enclosed cells, each a green cube of its own (the
+/// ones facing the wall; those inside them add nothing), and a red ring
+/// round the path point or the base region kept out.
+function enclosureObjects(walls, scene, size) {
   let shown = 0;
   for (const w of walls) {
-    const boxes = new THREE.InstancedMesh(new THREE.BoxGeometry(1, 1, 1), cellMat, w.runs.length);
-    const m = new THREE.Matrix4();
-    w.runs.forEach((r, i) => {
-      const lo = v3(r.slice(0, 3)), hi = v3(r.slice(3, 6));
-      m.makeScale(hi.x - lo.x, hi.y - lo.y, hi.z - lo.z);
-      m.setPosition(lo.clone().add(hi).multiplyScalar(0.5));
-      boxes.setMatrixAt(i, m);
-    });
-    boxes.userData.enclosure = w.inside;
-    scene.add(boxes);
-    shown += w.runs.length;
-    for (const i of w.obstacles) {
-      const o = task.obstacles[i];
-      let geometry, at;
-      if (o.type === "sphere") {
-        geometry = new THREE.SphereGeometry(o.r, 12, 6);
-        at = v3(o.c);
-      } else if (o.type === "box") {
-        const lo = v3(o.min), hi = v3(o.max);
-        geometry = new THREE.BoxGeometry(hi.x - lo.x, hi.y - lo.y, hi.z - lo.z);
-        at = lo.clone().add(hi).multiplyScalar(0.5);
-      } else {
-        continue;  // a capsule's core colour says enough
-      }
-      const edges = new THREE.LineSegments(new THREE.EdgesGeometry(geometry),
-        new THREE.LineBasicMaterial({ color: 0x000000, transparent: true, opacity: 0.35 }));
-      edges.position.copy(at);
-      scene.add(edges);
-    }
-    const mark = new THREE.Mesh(new THREE.TorusGeometry(size * 0.02, size * 0.003, 8, 32),
-      new THREE.MeshBasicMaterial({ color: 0x000000 }));
+    const { object, cells } = witnessCells(w.runs);
+    object.userData.enclosure = w.inside;
+    scene.add(object);
+    shown += cells;
+    const mark = new THREE.Mesh(new THREE.TorusGeometry(size * 0.02, size * 0.004, 8, 32),
+      new THREE.MeshBasicMaterial({ color: 0xd00000 }));
     mark.position.copy(v3(w.point));
     scene.add(mark);
   }
-  state.enclosureRuns = shown;
+  state.enclosureCells = shown;
+}
+
+/// What the view is framed on: the path, the base regions, the arm in
+/// every pose, a wall's cells and the obstacles not much larger than
+/// those (a table top is left to show round them).
+function framing(data) {
+  const path = data.task.prims.flatMap((p) => p.pts);
+  const work = [...path];
+  for (const r of data.task.regions) work.push(r.min, r.max);
+  for (const w of data.enclosure || []) for (const r of w.runs) work.push(r.slice(0, 3), r.slice(3, 6));
+  const obstacles = [];
+  for (const o of data.task.obstacles) {
+    const box = o.type === "sphere" ? { min: o.c.map((x) => x - o.r), max: o.c.map((x) => x + o.r) }
+      : o.type === "capsule" ? { min: o.a.map((x, i) => Math.min(x, o.b[i]) - o.r), max: o.a.map((x, i) => Math.max(x, o.b[i]) + o.r) }
+      : { min: o.min, max: o.max };
+    if (o.core) work.push(box.min, box.max); else obstacles.push(box);
+  }
+  if (data.robot && data.motion) {
+    const n = data.robot.dh.length, N = data.motion.t.length;
+    const stride = Math.max(1, Math.floor(N / 100));
+    for (let i = 0; i < N; i += stride) {
+      for (const f of dhFrames(data.robot, data.motion.q.slice(i * n, i * n + n))) work.push([f[3], f[7], f[11]]);
+    }
+  }
+  const regions = data.task.regions;
+  const base = data.robot ? data.robot.base
+    : regions.length ? regions[0].min.map((x, i) => (x + regions[0].max[i]) / 2) : null;
+  return viewFrame(path, framedPoints(work, obstacles), base);
 }
 
 // ------------------------------------------------------------------ the view
@@ -126,9 +143,9 @@ function start() {
   renderer.setClearColor(0xffffff);
   host.appendChild(renderer.domElement);
 
-  const lo = v3(data.bounds.min), hi = v3(data.bounds.max);
-  const centre = lo.clone().add(hi).multiplyScalar(0.5);
-  const size = Math.max(hi.clone().sub(lo).length(), 0.1);
+  const framed = framing(data);
+  const centre = v3(framed.centre);
+  const size = 2 * framed.radius;
 
   const scene = new THREE.Scene();
   scene.add(new THREE.HemisphereLight(0xffffff, 0x8899aa, 1.6));
@@ -138,25 +155,30 @@ function start() {
 
   // The floor grid, in the task's xy-plane at the lowest point shown (and
   // never above z = 0), with the task frame's axes at its origin.
+  const lowest = Math.min(0, data.bounds.min[2]);
   const step = niceStep(size);
-  const cells = Math.ceil(size * 1.6 / step);
+  const cells = Math.ceil(size * 2.4 / step);
   const grid = new THREE.GridHelper(cells * step, cells, 0x9a9a9a, 0xdddddd);
   grid.rotation.x = Math.PI / 2;
-  grid.position.set(Math.round(centre.x / step) * step, Math.round(centre.y / step) * step, Math.min(0, lo.z));
+  grid.position.set(Math.round(centre.x / step) * step, Math.round(centre.y / step) * step, lowest);
   scene.add(grid);
-  const axes = new THREE.AxesHelper(step);
-  axes.position.set(0, 0, Math.min(0, lo.z));
-  scene.add(axes);
+  scene.add(labelledAxes(new THREE.Vector3(0, 0, lowest), step));
 
-  taskObjects(data.task, scene, size);
-  if (data.enclosure) enclosureObjects(data.enclosure, data.task, scene, size);
+  const wall = new Set((data.enclosure || []).flatMap((w) => w.obstacles));
+  taskObjects(data.task, scene, size, wall);
+  if (data.enclosure) enclosureObjects(data.enclosure, scene, size);
 
-  const camera = new THREE.PerspectiveCamera(40, width / height, size / 500, size * 100);
+  const camera = new THREE.PerspectiveCamera(40, width / height, size / 500, size * 200);
   camera.up.set(0, 0, 1);
-  camera.position.copy(centre).add(new THREE.Vector3(0.9, -1.6, 0.9).multiplyScalar(size));
+  camera.position.copy(centre).addScaledVector(v3(framed.direction), frameDistance(framed.radius, 40, width / height));
   const controls = new OrbitControls(camera, renderer.domElement);
   controls.target.copy(centre);
   controls.update();
+  state.frame = { centre: framed.centre, radius: framed.radius, direction: framed.direction };
+  state.project = (p) => {
+    const q = v3(p).project(camera);
+    return [(q.x + 1) / 2 * width, (1 - q.y) / 2 * height, q.z];
+  };
 
   let draw = () => {
     renderer.render(scene, camera);

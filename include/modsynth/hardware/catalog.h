@@ -89,10 +89,17 @@ void parse_catalog_file(const std::string& text, const std::string& file, Catalo
 /// no actuator.
 Catalog load_catalog(const std::string& folder);
 
-/// Where the catalog shipped with the program is: share/modsynth/catalog
-/// beside the executable's bin/ when that exists (an installed program),
-/// else the source tree's catalog/ (a program run from its build folder).
+/// Where the catalog shipped with the program is: the folder given to
+/// set_default_catalog_folder when there is one (a library whose data
+/// lies beside it, such as the Python module's), else
+/// share/modsynth/catalog beside the executable's bin/ when that exists
+/// (an installed program), else the source tree's catalog/ (a program run
+/// from its build folder).
 std::string default_catalog_folder();
+
+/// Makes `folder` the default catalog's for the whole process; an empty
+/// string goes back to the executable's. Safe from any thread.
+void set_default_catalog_folder(const std::string& folder);
 
 /// load_catalog(default_catalog_folder()).
 Catalog load_default_catalog();

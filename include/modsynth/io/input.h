@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <modsynth/task/input_error.h>
 #include <modsynth/task/input_file.h>
 
 namespace modsynth::io {
@@ -32,5 +33,16 @@ using JsonCallback =
 /// column read back from the file; a file that grows past its cap while it
 /// is read is refused as too large.
 nlohmann::json parse_json_file(const InputFile& file, const JsonCallback& callback);
+
+/// read(path), whose InputErrors are said of the file ("rose.json:
+/// trajectory[1]: ..."): a message about a document names the file it is in.
+template <class Read>
+auto read_document_file(const std::string& path, Read&& read) {
+    try {
+        return read(path);
+    } catch (const task::InputError& e) {
+        throw e.in_file(path);
+    }
+}
 
 }  // namespace modsynth::io

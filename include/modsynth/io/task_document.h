@@ -5,10 +5,12 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
 #include <modsynth/run/deadline.h>
+#include <modsynth/task/input_error.h>
 #include <modsynth/task/spatial_task.h>
 #include <modsynth/task/task.h>
 
@@ -27,5 +29,14 @@ TaskDocument parse_task_document_text(std::string_view text, const run::Deadline
 /// A task file; a task without a name takes the file's name without its
 /// extension, as io::load_task does (a CheckTimeout's task_name too).
 TaskDocument load_task_document(const std::string& path, const run::Deadline& deadline = {});
+/// What looks like a mistake in a task file (io/task_checks.h), each said
+/// of the file.
+struct TaskWarnings {
+    std::vector<task::InputError> unknown_keys;
+    std::vector<task::InputError> units;
+};
+/// The same, with the warnings about the file.
+TaskDocument load_task_document(const std::string& path, TaskWarnings& warnings,
+                                const run::Deadline& deadline = {});
 
 }  // namespace modsynth::io

@@ -13,6 +13,11 @@ std::string format(const char* pattern, ...) __attribute__((format(printf, 1, 2)
 /// number per sample and joint.
 void append_fixed(std::string& out, double v, int digits);
 
+/// A certified clearance as a person reads it: "clearance margin 0.0023 m",
+/// or "no obstacles" when there was nothing to keep clear of (an infinite
+/// margin).
+std::string clearance_text(double margin);
+
 /// The text of format("%.9g", v), appended to `out`.
 void append_general(std::string& out, double v, int digits);
 

@@ -13,4 +13,11 @@ namespace modsynth::text {
 /// characters, line breaks included, as U+FFFD. Bytes >= 0x80 are kept.
 std::string markdown_literal(std::string_view text);
 
+/// modsynth's own sentences (a proof, a reason) as Markdown that reads as
+/// plain text too: only what CommonMark would take for markup is escaped
+/// (emphasis, code, links, HTML, table bars, a block marker at the start),
+/// and ":", "-", "(" and the like are left as they are. Control
+/// characters become U+FFFD as above.
+std::string markdown_text(std::string_view text);
+
 }  // namespace modsynth::text
