@@ -32,30 +32,25 @@ AlongPins along_pins(const Family& family, const task::SpatialTask& task, int do
     return any ? out : AlongPins{};
 }
 
-AlongPins pin_along(const AlongPins& pins, const task::SpatialTask& task,
-                    std::vector<std::vector<double>>& along) {
-    AlongPins set = pins;
-    if (pins.empty()) return set;
+void pin_along(const AlongPins& pins, const task::SpatialTask& task,
+               std::vector<std::vector<double>>& along, int first, int last) {
+    if (pins.empty()) return;
     const auto near = [](double v, double to) {
         return v + 2.0 * geometry::kPi * std::round((to - v) / (2.0 * geometry::kPi));
     };
-    for (std::size_t j = 0; j < along.size() && j < pins.size(); ++j) {
+    if (last < 0) last = task::stroke_count(task) - 1;
+    const int from = task::stroke_first(task, first), to = task::stroke_last(task, last);
+    for (int i = from; i <= to && i < static_cast<int>(along.size()); ++i) {
+        const auto j = static_cast<std::size_t>(i);
         auto& v = along[j];
         const std::size_t n = v.size() / 2;
-        const bool joined = j > 0 && task::stroke_of(task, static_cast<int>(j)) ==
-                                         task::stroke_of(task, static_cast<int>(j) - 1);
+        const bool joined = i > task::stroke_first(task, task::stroke_of(task, i));
         for (std::size_t h = 0; h < n; ++h) {
-            if (const auto& p = pins[j][h]) {
+            if (const auto& p = pins[j][h])
                 v[h] = joined ? near(*p, along[j - 1][n + h]) : near(*p, v[h]);
-                set[j][h] = v[h];
-            }
-            if (const auto& p = pins[j][n + h]) {
-                v[n + h] = near(*p, v[h]);
-                set[j][n + h] = v[n + h];
-            }
+            if (const auto& p = pins[j][n + h]) v[n + h] = near(*p, v[h]);
         }
     }
-    return set;
 }
 
 }  // namespace modsynth::arms

@@ -136,7 +136,7 @@ double choose_branches(const task::SpatialTask& task, const Scorer& scorer,
         both.insert(both.end(), v.begin(), v.end());
         for (int j = task::stroke_first(task, s); j <= task::stroke_last(task, s); ++j)
             d.along[static_cast<std::size_t>(j)] = both;
-        arms::pin_along(pins, task, d.along);
+        arms::pin_along(pins, task, d.along, s, s);
     };
     double worst = kInf;
     for (std::size_t s = 0; s < strokes.size(); ++s) {

@@ -282,8 +282,8 @@ public:
         p.family.along = {along.lower, along.upper};
         p.family.length_weights = s.family->length_weights(s.dof, s.variant);
         p.family.rows = s.family->design_rows(task_, s.dof, s.variant);
-        const auto pins = arms::pin_along(arms::along_pins(*s.family, task_, s.dof, s.variant),
-                                          task_, p.start.along);
+        const auto pins = arms::along_pins(*s.family, task_, s.dof, s.variant);
+        arms::pin_along(pins, task_, p.start.along);
         for (const auto& slots : pins) {
             p.family.fixed_along.emplace_back();
             for (const auto& v : slots) p.family.fixed_along.back().push_back(v.has_value());

@@ -20,10 +20,11 @@ using AlongPins = std::vector<std::vector<std::optional<double>>>;
 /// Empty when the family fixes nothing for this task.
 AlongPins along_pins(const Family& family, const task::SpatialTask& task, int dof, int variant);
 
-/// Sets the pinned values in `along` (sized as ArmDesign::along), each
+/// Sets the pinned values in `along` (sized as ArmDesign::along) for the
+/// primitives of strokes `first` to `last` (every stroke by default), each
 /// moved by whole turns next to the value before it along the stroke, so
-/// that no sweep turns the long way round; returns the pins as set.
-AlongPins pin_along(const AlongPins& pins, const task::SpatialTask& task,
-                    std::vector<std::vector<double>>& along);
+/// that no sweep turns the long way round.
+void pin_along(const AlongPins& pins, const task::SpatialTask& task,
+               std::vector<std::vector<double>>& along, int first = 0, int last = -1);
 
 }  // namespace modsynth::arms
